@@ -1,0 +1,48 @@
+#include "film.h"
+
+namespace ps {
+
+void Film::addIteration(const Image& it) {
+    for (size_t i = 0; i < sum_.size(); ++i) {
+        const DColor v(it.pixels[i]);
+        sum_[i] += v;
+        sumSq_[i] += v * v;
+    }
+    ++iterations_;
+}
+
+Image Film::mean() const {
+    Image img(width_, height_);
+    if (iterations_ == 0) return img;
+    for (size_t i = 0; i < sum_.size(); ++i) img.pixels[i] = Color(sum_[i] / double(iterations_));
+    return img;
+}
+
+Image Film::varianceOfMean() const {
+    Image img(width_, height_);
+    const double n = iterations_;
+    if (n < 2) return img;
+    for (size_t i = 0; i < sum_.size(); ++i) {
+        DColor s2 = (sumSq_[i] - sum_[i] * sum_[i] / n) / (n - 1.0);   // sample variance
+        img.pixels[i] = Color(glm::max(s2, DColor(0.0)) / n);
+    }
+    return img;
+}
+
+void SplatBuffer::splat(size_t task, const Vec2& raster, const Color& c, SampleStats& stats) {
+    const Color v = checkSample(c, stats);
+    if (isBlack(v)) return;
+    const int x = std::min(width_ - 1, static_cast<int>(raster.x));
+    const int y = std::min(height_ - 1, static_cast<int>(raster.y));
+    if (x < 0 || y < 0) return;
+    lists_[task].emplace_back(static_cast<uint32_t>(y * width_ + x), v);
+}
+
+void SplatBuffer::resolve(Image& img) {
+    for (auto& list : lists_) {
+        for (const auto& [pixel, c] : list) img.pixels[pixel] += c;
+        list.clear();
+    }
+}
+
+}  // namespace ps

@@ -1,0 +1,62 @@
+// The film: accumulates the images of successive iterations in double, with a per-pixel
+// variance estimate, and counts the samples that were NaN or Inf (they are left out of the
+// image, counted, and reported at the end of every render).
+#pragma once
+#include <cstdint>
+#include <utility>
+#include <vector>
+#include "image.h"
+
+namespace ps {
+
+struct SampleStats {
+    uint64_t nan = 0, inf = 0;   // samples rejected because some channel was NaN / +-Inf
+    uint64_t rays = 0;           // rays traced
+    SampleStats& operator+=(const SampleStats& o) { nan += o.nan; inf += o.inf; rays += o.rays; return *this; }
+    uint64_t bad() const { return nan + inf; }
+};
+
+// A sample enters the image only if it is finite; otherwise it is counted and becomes 0.
+inline Color checkSample(const Color& c, SampleStats& stats) {
+    if (isFinite(c)) return c;
+    if (hasNaN(c)) ++stats.nan; else ++stats.inf;
+    return Color(0.0f);
+}
+
+class Film {
+public:
+    Film(int width = 0, int height = 0)
+        : width_(width), height_(height), sum_(size_t(width) * height), sumSq_(size_t(width) * height) {}
+    int width() const { return width_; }
+    int height() const { return height_; }
+    int iterations() const { return iterations_; }
+
+    // Adds one iteration's image (the estimate of that iteration alone).
+    void addIteration(const Image& iteration);
+    // Mean over iterations: the rendered image.
+    Image mean() const;
+    // Per pixel and channel: the estimated variance of the mean, s^2 / n.
+    Image varianceOfMean() const;
+
+private:
+    int width_, height_, iterations_ = 0;
+    std::vector<DColor> sum_, sumSq_;
+};
+
+// Splats for one iteration of a light-path integrator. Each task (a fixed batch of light
+// paths, whatever thread runs it) appends to its own list; resolve() adds the lists in task
+// order, so the image is the same for any number of threads.
+class SplatBuffer {
+public:
+    SplatBuffer(int width, int height, size_t tasks) : width_(width), height_(height), lists_(tasks) {}
+    // Adds c at raster position (x, y) in [0,width) x [0,height). Non-finite values are counted.
+    void splat(size_t task, const Vec2& raster, const Color& c, SampleStats& stats);
+    // Adds every splat into img (tasks in order) and empties the lists.
+    void resolve(Image& img);
+
+private:
+    int width_, height_;
+    std::vector<std::vector<std::pair<uint32_t, Color>>> lists_;
+};
+
+}  // namespace ps

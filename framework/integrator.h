@@ -1,0 +1,41 @@
+// Integrators are progressive: one iteration renders one sample per pixel (or one batch of
+// light paths) into an image of its own; the film averages the iterations.
+#pragma once
+#include <memory>
+#include <string>
+#include <vector>
+#include "film.h"
+#include "rng.h"
+#include "scene.h"
+
+namespace ps {
+
+class Integrator {
+public:
+    virtual ~Integrator() = default;
+    // Scene-dependent preprocessing (a photon pass, a bootstrap); counted in render time.
+    virtual void prepare(const Scene&) {}
+    // Renders iteration `iteration` into out (zeroed, film-sized). Must be a function of
+    // (scene, iteration, seed) only, never of the thread count.
+    virtual void renderIteration(const Scene& scene, uint32_t iteration, uint64_t seed, Image& out,
+                                 SampleStats& stats) = 0;
+};
+
+// An integrator that estimates the radiance along one camera ray per pixel per iteration.
+class PixelIntegrator : public Integrator {
+public:
+    // Radiance arriving at the camera along ray.
+    virtual Color Li(const Scene& scene, const Ray& ray, Rng& rng) const = 0;
+    void renderIteration(const Scene& scene, uint32_t iteration, uint64_t seed, Image& out,
+                         SampleStats& stats) override;
+};
+
+struct IntegratorInfo {
+    std::string name, description;
+};
+// The integrators the render command knows.
+std::vector<IntegratorInfo> integratorList();
+// Throws InputError naming the unknown algorithm and the known ones.
+std::unique_ptr<Integrator> makeIntegrator(const std::string& name);
+
+}  // namespace ps

@@ -1,0 +1,81 @@
+#include "render.h"
+#include <omp.h>
+#include <chrono>
+#include <cstdio>
+#include <ostream>
+#include <sstream>
+#include "metrics.h"
+
+namespace ps {
+
+const char* const kErrorCsvHeader = "iteration,spp,seconds,mse,relmse,relmse_trim,nan,inf";
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+void drawProgress(int done, int total, double seconds, double budget) {
+    const double frac = total > 0 ? double(done) / total : (budget > 0 ? std::min(1.0, seconds / budget) : 0.0);
+    const int width = 30, filled = static_cast<int>(frac * width);
+    std::fprintf(stderr, "\r[%.*s%.*s] %3d%%  %d spp  %.1f s ", filled,
+                 "##############################", width - filled, "..............................",
+                 static_cast<int>(frac * 100.0), done, seconds);
+    std::fflush(stderr);
+}
+
+}  // namespace
+
+RenderResult render(const Scene& scene, Integrator& integrator, const RenderOptions& opt) {
+    if (opt.threads > 0) omp_set_num_threads(opt.threads);
+    RenderResult res;
+    res.film = Film(scene.camera.width(), scene.camera.height());
+    if (opt.csv && opt.reference) *opt.csv << kErrorCsvHeader << "\n";
+
+    double elapsed = 0.0, lastDraw = -1.0;
+    auto t0 = Clock::now();
+    integrator.prepare(scene);
+    elapsed += std::chrono::duration<double>(Clock::now() - t0).count();
+
+    Image iterImage(res.film.width(), res.film.height());
+    for (int it = 0;; ++it) {
+        if (opt.spp > 0 && it >= opt.spp) break;
+        if (opt.seconds > 0.0 && elapsed >= opt.seconds) break;
+        if (opt.spp <= 0 && opt.seconds <= 0.0) break;
+        t0 = Clock::now();
+        std::fill(iterImage.pixels.begin(), iterImage.pixels.end(), Color(0.0f));
+        integrator.renderIteration(scene, static_cast<uint32_t>(it), opt.seed, iterImage, res.stats);
+        res.film.addIteration(iterImage);
+        elapsed += std::chrono::duration<double>(Clock::now() - t0).count();
+        res.iterations = it + 1;
+
+        // Metrics and the progress bar are not counted as render time.
+        if (opt.csv && opt.reference) {
+            const ErrorMetrics e = computeError(res.film.mean(), *opt.reference);
+            char line[256];
+            std::snprintf(line, sizeof line, "%d,%d,%.6f,%.9g,%.9g,%.9g,%llu,%llu", it, it + 1, elapsed, e.mse,
+                          e.relMse, e.relMseTrimmed, static_cast<unsigned long long>(res.stats.nan),
+                          static_cast<unsigned long long>(res.stats.inf));
+            *opt.csv << line << "\n";
+        }
+        if (opt.progress && (elapsed - lastDraw > 0.1)) {
+            drawProgress(it + 1, opt.spp, elapsed, opt.seconds);
+            lastDraw = elapsed;
+        }
+    }
+    if (opt.progress) {
+        drawProgress(res.iterations, opt.spp > 0 ? opt.spp : res.iterations, elapsed, opt.seconds);
+        std::fprintf(stderr, "\n");
+    }
+    res.seconds = elapsed;
+    return res;
+}
+
+std::string summaryLine(const RenderResult& r) {
+    char buf[256];
+    std::snprintf(buf, sizeof buf, "%d spp in %.2f s (%.2f Mrays/s), %llu NaN, %llu Inf samples", r.iterations,
+                  r.seconds, r.seconds > 0 ? double(r.stats.rays) / r.seconds * 1e-6 : 0.0,
+                  static_cast<unsigned long long>(r.stats.nan), static_cast<unsigned long long>(r.stats.inf));
+    return buf;
+}
+
+}  // namespace ps

@@ -1,0 +1,94 @@
+// The scene: shapes, materials, lights, camera, the BVH over the shapes, default settings,
+// and the capabilities recorded at load time (what kinds of light, BSDF and camera it has).
+#pragma once
+#include <string>
+#include <vector>
+#include "bsdf.h"
+#include "bvh.h"
+#include "camera.h"
+#include "geometry.h"
+#include "light.h"
+
+namespace ps {
+
+enum class ShapeKind : uint8_t { Triangle, Sphere };
+
+struct Primitive {
+    ShapeKind shape = ShapeKind::Triangle;
+    uint32_t index = 0;    // into Scene::triangles or Scene::spheres
+    int material = -1;     // into Scene::materials
+    int light = -1;        // into Scene::lights if the primitive emits, else -1
+};
+
+// Defaults a scene file may set; the command line overrides them.
+struct RenderSettings {
+    int spp = 16;
+    int maxDepth = 8;          // maximum number of bounces; 0 = only emission seen directly
+    std::string algo = "eyelight";
+};
+
+// What a scene has, recorded at load time so integrators can leave out what it does not need.
+struct Capabilities {
+    bool areaLights = false, pointLights = false, backgroundLight = false;
+    bool diffuse = false, glossy = false, mirror = false, dielectric = false;
+    bool pinholeCamera = true;
+    bool hasLights() const { return areaLights || pointLights || backgroundLight; }
+    bool hasDeltaBSDF() const { return mirror || dielectric; }
+    bool hasNonDeltaBSDF() const { return diffuse || glossy; }
+    // Paths no unbiased technique can sample: a point light reached from a pinhole camera
+    // through specular vertices only (L S+ E). They exist iff both ends are delta and some
+    // material is specular; their contribution is 0 in every technique.
+    bool unsampleablePaths() const { return pointLights && pinholeCamera && hasDeltaBSDF(); }
+    std::string describe() const;
+};
+
+class Scene {
+public:
+    std::string path;   // the scene file, for messages
+    Camera camera;
+    RenderSettings settings;
+    std::vector<Material> materials;
+    std::vector<Triangle> triangles;
+    std::vector<Sphere> spheres;
+    std::vector<Primitive> prims;
+    std::vector<Light> lights;
+    int background = -1;           // index of the background light, -1 if none
+    Distribution1D lightSelection; // picks lights proportionally to their power
+    Capabilities caps;
+    AABB bounds;
+    Vec3 center;                   // bounding sphere of the geometry and the camera
+    float radius = 1.0f;
+    BVH bvh;
+
+    // Call after filling the vectors above: builds the BVH, area lights' tables, the light
+    // selection distribution, the bounding sphere and the capabilities.
+    void finalize();
+
+    // Closest hit in (0, ray.tMax); on a hit ray.tMax becomes the hit distance.
+    bool intersect(Ray& ray, SurfacePoint& sp) const;
+    // Any hit in (0, ray.tMax) (shadow rays).
+    bool occluded(const Ray& ray) const;
+
+    // A ray leaving surface point sp in direction dir (offset, and never re-hitting sp's
+    // triangle).
+    Ray spawnRay(const SurfacePoint& sp, const Vec3& dir) const;
+    // A shadow ray from sp to the surface point q (both ends offset): occluded() tells
+    // whether the two see each other.
+    Ray spawnRayTo(const SurfacePoint& sp, const SurfacePoint& q) const;
+    // A shadow ray from sp to a point not on a surface (a point light, the pinhole).
+    Ray spawnRayTo(const SurfacePoint& sp, const Vec3& q) const;
+
+    // Light index for u in [0,1) and its probability.
+    int selectLight(float u, float& prob) const;
+    float lightSelectionProb(int l) const { return lightSelection.pmf(static_cast<size_t>(l)); }
+    // Background radiance seen along a ray that leaves the scene.
+    Color backgroundRadiance() const { return background >= 0 ? lights[background].Le : Color(0.0f); }
+
+    // Point and normal at barycentrics (b1, b2) of a triangle, or for a sphere direction.
+    SurfacePoint surfacePoint(uint32_t prim, const Vec3& p) const;
+};
+
+// Rays traced by this thread since the last call (for rays/s in render summaries).
+uint64_t takeRayCount();
+
+}  // namespace ps

@@ -1,0 +1,442 @@
+#include "scene_loader.h"
+#include <charconv>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <tiny_obj_loader.h>
+#include "errors.h"
+
+namespace ps {
+
+namespace {
+
+// One statement of the scene file: its tokens and where it stands.
+struct Statement {
+    std::string file;
+    int line = 0;
+    std::vector<std::string> tokens;
+    size_t pos = 0;                                       // next token to read
+    std::map<std::string, std::vector<std::string>> options;   // key -> its values
+
+    [[noreturn]] void fail(const std::string& problem) const { throw InputError(file, line, problem); }
+    std::string keyword() const { return tokens[0]; }
+
+    std::string word(const std::string& what) {
+        if (pos >= tokens.size()) fail("'" + keyword() + "' needs " + what);
+        return tokens[pos++];
+    }
+    static float toFloat(const Statement& st, const std::string& tok, const std::string& what) {
+        float v = 0.0f;
+        auto [end, ec] = std::from_chars(tok.data(), tok.data() + tok.size(), v);
+        if (ec != std::errc() || end != tok.data() + tok.size())
+            st.fail("malformed number '" + tok + "' for " + what);
+        if (!std::isfinite(v)) st.fail("'" + tok + "' for " + what + " is not a finite number");
+        return v;
+    }
+    float number(const std::string& what) { return toFloat(*this, word(what), what); }
+    Vec3 vec3(const std::string& what) { float x = number(what); float y = number(what); return Vec3(x, y, number(what)); }
+
+    // Reads "key value..." pairs to the end of the line; arity gives each allowed key's count.
+    void readOptions(const std::map<std::string, int>& arity) {
+        while (pos < tokens.size()) {
+            const std::string key = tokens[pos++];
+            auto it = arity.find(key);
+            if (it == arity.end()) {
+                std::string allowed;
+                for (const auto& [k, n] : arity) allowed += (allowed.empty() ? "" : ", ") + k;
+                fail("unknown option '" + key + "' for '" + keyword() + "' (expected: " + allowed + ")");
+            }
+            if (options.count(key)) fail("option '" + key + "' given twice");
+            std::vector<std::string> values;
+            for (int i = 0; i < it->second; ++i) {
+                if (pos >= tokens.size())
+                    fail("option '" + key + "' needs " + std::to_string(it->second) + " value(s)");
+                values.push_back(tokens[pos++]);
+            }
+            options[key] = values;
+        }
+    }
+    bool has(const std::string& key) const { return options.count(key) > 0; }
+    void require(const std::string& key) const {
+        if (!has(key)) fail("'" + keyword() + "' needs the option '" + key + "'");
+    }
+    float optNumber(const std::string& key, float def) const {
+        return has(key) ? toFloat(*this, options.at(key)[0], "'" + key + "'") : def;
+    }
+    Vec3 optVec3(const std::string& key, const Vec3& def) const {
+        if (!has(key)) return def;
+        const auto& v = options.at(key);
+        const std::string what = "'" + key + "'";
+        return Vec3(toFloat(*this, v[0], what), toFloat(*this, v[1], what), toFloat(*this, v[2], what));
+    }
+    int optInt(const std::string& key, int def) const {
+        if (!has(key)) return def;
+        const std::string& tok = options.at(key)[0];
+        int v = 0;
+        auto [end, ec] = std::from_chars(tok.data(), tok.data() + tok.size(), v);
+        if (ec != std::errc() || end != tok.data() + tok.size())
+            fail("malformed integer '" + tok + "' for '" + key + "'");
+        return v;
+    }
+    std::string optWord(const std::string& key, const std::string& def) const {
+        return has(key) ? options.at(key)[0] : def;
+    }
+};
+
+std::string folderOf(const std::string& path) {
+    size_t slash = path.find_last_of('/');
+    return slash == std::string::npos ? std::string() : path.substr(0, slash + 1);
+}
+
+bool isDegenerate(const Vec3& a, const Vec3& b, const Vec3& c) {
+    const Vec3 e1 = b - a, e2 = c - a;
+    const float l = glm::length(e1) * glm::length(e2);
+    // Zero area, or so thin that its normal is meaningless (sin of the angle below 1e-6).
+    return !(l > 0.0f) || !(glm::length(glm::cross(e1, e2)) > 1e-6f * l);
+}
+
+Color checkColor(const Statement& st, const std::string& key, const Color& c, bool atMostOne) {
+    if (c.r < 0.0f || c.g < 0.0f || c.b < 0.0f) st.fail("'" + key + "' must not be negative");
+    if (atMostOne && (c.r > 1.0f || c.g > 1.0f || c.b > 1.0f))
+        st.fail("'" + key + "' must be at most 1 (a surface cannot reflect more than it receives)");
+    return c;
+}
+
+class Loader {
+public:
+    Loader(Scene& scene, const std::string& path) : scene_(scene), path_(path) {}
+
+    void run(const std::string& text) {
+        std::istringstream in(text);
+        std::string raw;
+        int lineNo = 0;
+        while (std::getline(in, raw)) {
+            ++lineNo;
+            if (size_t hash = raw.find('#'); hash != std::string::npos) raw.resize(hash);
+            Statement st;
+            st.file = path_;
+            st.line = lineNo;
+            std::istringstream ls(raw);
+            for (std::string tok; ls >> tok;) st.tokens.push_back(tok);
+            if (st.tokens.empty()) continue;
+            st.pos = 1;
+            statement(st);
+        }
+        if (!haveCamera_) throw InputError(path_, 0, "no 'camera' line: every scene needs a camera");
+    }
+
+private:
+    void statement(Statement& st) {
+        const std::string& k = st.tokens[0];
+        if (k == "camera") camera(st);
+        else if (k == "material") material(st);
+        else if (k == "sphere") sphere(st);
+        else if (k == "triangle") polygon(st, 3);
+        else if (k == "quad") polygon(st, 4);
+        else if (k == "mesh") mesh(st);
+        else if (k == "pointlight") pointLight(st);
+        else if (k == "background") background(st);
+        else if (k == "render") render(st);
+        else st.fail("unknown keyword '" + k + "' (expected one of: camera, material, sphere, triangle, quad, "
+                     "mesh, pointlight, background, render)");
+    }
+
+    void camera(Statement& st) {
+        if (haveCamera_) st.fail("a second 'camera': a scene has one camera");
+        st.readOptions({{"eye", 3}, {"target", 3}, {"up", 3}, {"fov", 1}, {"resolution", 2}});
+        for (const char* key : {"eye", "target", "fov", "resolution"}) st.require(key);
+        const Vec3 eye = st.optVec3("eye", Vec3()), target = st.optVec3("target", Vec3());
+        const Vec3 up = st.optVec3("up", Vec3(0, 1, 0));
+        const float fov = st.optNumber("fov", 0.0f);
+        const auto& res = st.options.at("resolution");
+        Statement tmp = st;
+        tmp.options = {{"w", {res[0]}}, {"h", {res[1]}}};
+        const int w = tmp.optInt("w", 0), h = tmp.optInt("h", 0);
+        if (!(fov > 0.0f && fov < 180.0f)) st.fail("'fov' must be between 0 and 180 degrees");
+        if (w < 1 || h < 1 || w > 16384 || h > 16384) st.fail("'resolution' must be between 1 and 16384 pixels");
+        if (!(glm::length(target - eye) > 0.0f)) st.fail("'eye' and 'target' are the same point");
+        const Vec3 f = glm::normalize(target - eye);
+        if (!(glm::length(glm::cross(f, up)) > 1e-6f * glm::length(up))) st.fail("'up' is parallel to the view direction");
+        scene_.camera = Camera(eye, target, up, fov, w, h);
+        haveCamera_ = true;
+    }
+
+    void material(Statement& st) {
+        const std::string name = st.word("a name");
+        const std::string type = st.word("a type (diffuse, phong, mirror, dielectric)");
+        if (materialIndex_.count(name)) st.fail("material '" + name + "' is defined twice");
+        Material m;
+        m.name = name;
+        if (type == "diffuse") {
+            st.readOptions({{"albedo", 3}});
+            st.require("albedo");
+            m.kind = BSDFKind::Diffuse;
+        } else if (type == "phong") {
+            st.readOptions({{"albedo", 3}, {"exponent", 1}});
+            st.require("albedo");
+            st.require("exponent");
+            m.kind = BSDFKind::Phong;
+            m.exponent = st.optNumber("exponent", 0.0f);
+            if (m.exponent < 0.0f) st.fail("'exponent' must not be negative");
+        } else if (type == "mirror") {
+            st.readOptions({{"albedo", 3}});
+            m.kind = BSDFKind::Mirror;
+        } else if (type == "dielectric") {
+            st.readOptions({{"ior", 1}});
+            st.require("ior");
+            m.kind = BSDFKind::Dielectric;
+            m.ior = st.optNumber("ior", 1.5f);
+            if (!(m.ior > 0.0f)) st.fail("'ior' must be positive");
+        } else {
+            st.fail("unknown material type '" + type + "' (expected: diffuse, phong, mirror, dielectric)");
+        }
+        m.albedo = checkColor(st, "albedo", st.optVec3("albedo", Color(1.0f)), true);
+        materialIndex_[name] = static_cast<int>(scene_.materials.size());
+        scene_.materials.push_back(m);
+    }
+
+    // The material of a shape, and its light if it has "emission".
+    void shapeMaterial(const Statement& st, int& material, int& light) {
+        light = -1;
+        if (st.has("emission")) {
+            const Color Le = checkColor(st, "emission", st.optVec3("emission", Color(0.0f)), false);
+            if (!isBlack(Le)) {
+                Light l;
+                l.kind = LightKind::Area;
+                l.Le = Le;
+                light = static_cast<int>(scene_.lights.size());
+                scene_.lights.push_back(l);
+            }
+        }
+        if (!st.has("material")) {
+            if (!st.has("emission")) st.fail("'" + st.keyword() + "' needs the option 'material'");
+            material = blackMaterial();
+            return;
+        }
+        material = lookupMaterial(st, st.options.at("material")[0]);
+    }
+
+    int lookupMaterial(const Statement& st, const std::string& name) {
+        auto it = materialIndex_.find(name);
+        if (it == materialIndex_.end()) {
+            std::string known;
+            for (const auto& [n, i] : materialIndex_) known += (known.empty() ? "" : ", ") + n;
+            st.fail("unknown material '" + name + "' (defined so far: " + (known.empty() ? "none" : known) + ")");
+        }
+        return it->second;
+    }
+
+    int blackMaterial() {
+        const std::string name = "(emitter)";
+        if (!materialIndex_.count(name)) {
+            Material m;
+            m.name = name;
+            m.albedo = Color(0.0f);
+            materialIndex_[name] = static_cast<int>(scene_.materials.size());
+            scene_.materials.push_back(m);
+        }
+        return materialIndex_[name];
+    }
+
+    void addTriangle(const Triangle& t, int material, int light) {
+        Primitive p;
+        p.shape = ShapeKind::Triangle;
+        p.index = static_cast<uint32_t>(scene_.triangles.size());
+        p.material = material;
+        p.light = light;
+        if (light >= 0) scene_.lights[light].prims.push_back(static_cast<uint32_t>(scene_.prims.size()));
+        scene_.triangles.push_back(t);
+        scene_.prims.push_back(p);
+    }
+
+    void sphere(Statement& st) {
+        st.readOptions({{"center", 3}, {"radius", 1}, {"material", 1}, {"emission", 3}});
+        st.require("center");
+        st.require("radius");
+        Sphere s;
+        s.center = st.optVec3("center", Vec3());
+        s.radius = st.optNumber("radius", 0.0f);
+        if (s.radius < 0.0f) st.fail("negative radius " + st.options.at("radius")[0]);
+        if (!(s.radius > 0.0f)) st.fail("'radius' must be positive");
+        int material, light;
+        shapeMaterial(st, material, light);
+        Primitive p;
+        p.shape = ShapeKind::Sphere;
+        p.index = static_cast<uint32_t>(scene_.spheres.size());
+        p.material = material;
+        p.light = light;
+        if (light >= 0) scene_.lights[light].prims.push_back(static_cast<uint32_t>(scene_.prims.size()));
+        scene_.spheres.push_back(s);
+        scene_.prims.push_back(p);
+    }
+
+    // "triangle x y z  x y z  x y z options" or "quad" with four corners (counter-clockwise
+    // seen from the side the normal points to; a quad is split into (0,1,2) and (0,2,3)).
+    void polygon(Statement& st, int corners) {
+        std::vector<Vec3> v;
+        for (int i = 0; i < corners; ++i) v.push_back(st.vec3("corner " + std::to_string(i + 1) + " (x y z)"));
+        st.readOptions({{"material", 1}, {"emission", 3}});
+        int material, light;
+        shapeMaterial(st, material, light);
+        for (int i = 1; i + 1 < corners; ++i) {
+            if (isDegenerate(v[0], v[i], v[i + 1])) st.fail("degenerate triangle (zero area)");
+            addTriangle({v[0], v[i], v[i + 1]}, material, light);
+        }
+    }
+
+    void mesh(Statement& st) {
+        const std::string file = st.word("a file name (an OBJ mesh)");
+        st.readOptions({{"material", 1}, {"emission", 3}, {"scale", 1}, {"translate", 3}});
+        const float scale = st.optNumber("scale", 1.0f);
+        if (!(scale > 0.0f)) st.fail("'scale' must be positive");
+        const Vec3 translate = st.optVec3("translate", Vec3(0.0f));
+        const std::string objPath = folderOf(path_) + file;
+        if (!std::ifstream(objPath)) st.fail("cannot open mesh file '" + objPath + "'");
+
+        tinyobj::attrib_t attrib;
+        std::vector<tinyobj::shape_t> shapes;
+        std::vector<tinyobj::material_t> mtls;
+        std::string warn, err;
+        const bool ok = tinyobj::LoadObj(&attrib, &shapes, &mtls, &warn, &err, objPath.c_str(),
+                                         folderOf(objPath).c_str(), /*triangulate=*/false);
+        if (!ok || !err.empty()) {
+            std::string msg = err.empty() ? warn : err;
+            while (!msg.empty() && (msg.back() == '\n' || msg.back() == '\r')) msg.pop_back();
+            throw InputError(objPath, 0, "cannot read OBJ: " + msg + " (mesh of " + path_ + ":" + std::to_string(st.line) + ")");
+        }
+        const std::vector<int> faceLines = objFaceLines(objPath);
+        auto objFail = [&](size_t face, const std::string& problem) {
+            const int line = face < faceLines.size() ? faceLines[face] : 0;
+            throw InputError(objPath, line, problem + " (mesh of " + path_ + ":" + std::to_string(st.line) + ")");
+        };
+
+        // The scene's material and emission, or, without 'material', the MTL's Kd and Ke.
+        int sceneMaterial = -1, sceneLight = -1;
+        if (st.has("material") || st.has("emission")) shapeMaterial(st, sceneMaterial, sceneLight);
+        std::map<int, std::pair<int, int>> fromMtl;   // MTL id -> (material, light)
+        auto mtlMaterial = [&](int id, size_t face) -> std::pair<int, int> {
+            if (sceneMaterial >= 0) return {sceneMaterial, sceneLight};
+            if (id < 0 || id >= static_cast<int>(mtls.size()))
+                objFail(face, "face has no material: give the mesh a 'material' in the scene, or the OBJ an MTL file");
+            auto it = fromMtl.find(id);
+            if (it != fromMtl.end()) return it->second;
+            const tinyobj::material_t& tm = mtls[id];
+            Material m;
+            m.name = file + ":" + tm.name;
+            m.kind = BSDFKind::Diffuse;
+            m.albedo = glm::clamp(Color(tm.diffuse[0], tm.diffuse[1], tm.diffuse[2]), 0.0f, 1.0f);
+            const int mi = static_cast<int>(scene_.materials.size());
+            scene_.materials.push_back(m);
+            int li = -1;
+            const Color Ke(tm.emission[0], tm.emission[1], tm.emission[2]);
+            if (isFinite(Ke) && maxComponent(Ke) > 0.0f) {
+                Light l;
+                l.kind = LightKind::Area;
+                l.Le = glm::max(Ke, Color(0.0f));
+                li = static_cast<int>(scene_.lights.size());
+                scene_.lights.push_back(l);
+            }
+            return fromMtl[id] = {mi, li};
+        };
+
+        const size_t nVerts = attrib.vertices.size() / 3;
+        for (float c : attrib.vertices)
+            if (!std::isfinite(c)) throw InputError(objPath, 0, "vertex coordinate is not a finite number");
+        size_t face = 0, added = 0;
+        for (const tinyobj::shape_t& shape : shapes) {
+            size_t idx = 0;
+            for (size_t f = 0; f < shape.mesh.num_face_vertices.size(); ++f, ++face) {
+                const int n = shape.mesh.num_face_vertices[f];
+                if (n < 3) objFail(face, "face with " + std::to_string(n) + " vertices (a face needs at least 3)");
+                std::vector<Vec3> v;
+                for (int k = 0; k < n; ++k) {
+                    const int vi = shape.mesh.indices[idx + k].vertex_index;
+                    if (vi < 0 || static_cast<size_t>(vi) >= nVerts)
+                        objFail(face, "vertex index " + std::to_string(vi + 1) + " out of range (the file has " +
+                                          std::to_string(nVerts) + " vertices)");
+                    v.push_back(Vec3(attrib.vertices[3 * vi], attrib.vertices[3 * vi + 1], attrib.vertices[3 * vi + 2]) *
+                                    scale + translate);
+                }
+                idx += n;
+                const int mtlId = f < shape.mesh.material_ids.size() ? shape.mesh.material_ids[f] : -1;
+                const auto [material, light] = mtlMaterial(mtlId, face);
+                for (int k = 1; k + 1 < n; ++k) {   // fan triangulation
+                    if (isDegenerate(v[0], v[k], v[k + 1])) objFail(face, "degenerate triangle (zero area)");
+                    addTriangle({v[0], v[k], v[k + 1]}, material, light);
+                    ++added;
+                }
+            }
+        }
+        if (added == 0) throw InputError(objPath, 0, "empty mesh: no faces (mesh of " + path_ + ":" + std::to_string(st.line) + ")");
+    }
+
+    // Line numbers of the OBJ's faces, in order, for messages about a face.
+    static std::vector<int> objFaceLines(const std::string& objPath) {
+        std::vector<int> lines;
+        std::ifstream in(objPath);
+        std::string s;
+        for (int n = 1; std::getline(in, s); ++n) {
+            size_t i = s.find_first_not_of(" \t");
+            if (i != std::string::npos && s[i] == 'f' && i + 1 < s.size() && (s[i + 1] == ' ' || s[i + 1] == '\t'))
+                lines.push_back(n);
+        }
+        return lines;
+    }
+
+    void pointLight(Statement& st) {
+        st.readOptions({{"position", 3}, {"intensity", 3}});
+        st.require("position");
+        st.require("intensity");
+        Light l;
+        l.kind = LightKind::Point;
+        l.position = st.optVec3("position", Vec3());
+        l.Le = checkColor(st, "intensity", st.optVec3("intensity", Color(0.0f)), false);
+        scene_.lights.push_back(l);
+    }
+
+    void background(Statement& st) {
+        if (haveBackground_) st.fail("a second 'background': a scene has at most one");
+        st.readOptions({{"radiance", 3}});
+        st.require("radiance");
+        Light l;
+        l.kind = LightKind::Background;
+        l.Le = checkColor(st, "radiance", st.optVec3("radiance", Color(0.0f)), false);
+        scene_.lights.push_back(l);
+        haveBackground_ = true;
+    }
+
+    void render(Statement& st) {
+        st.readOptions({{"spp", 1}, {"maxdepth", 1}, {"algo", 1}});
+        RenderSettings& s = scene_.settings;
+        s.spp = st.optInt("spp", s.spp);
+        s.maxDepth = st.optInt("maxdepth", s.maxDepth);
+        s.algo = st.optWord("algo", s.algo);
+        if (s.spp < 1) st.fail("'spp' must be at least 1");
+        if (s.maxDepth < 0) st.fail("'maxdepth' must not be negative");
+    }
+
+    Scene& scene_;
+    std::string path_;
+    std::map<std::string, int> materialIndex_;
+    bool haveCamera_ = false, haveBackground_ = false;
+};
+
+}  // namespace
+
+Scene parseScene(const std::string& text, const std::string& path) {
+    Scene scene;
+    scene.path = path;
+    Loader(scene, path).run(text);
+    scene.finalize();
+    return scene;
+}
+
+Scene loadScene(const std::string& path) {
+    std::ifstream in(path);
+    if (!in) throw InputError(path, 0, "cannot open scene file (does it exist?)");
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    return parseScene(ss.str(), path);
+}
+
+}  // namespace ps
