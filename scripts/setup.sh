@@ -1,0 +1,10 @@
+#!/usr/bin/env bash
+# The first README command: install what is missing, build (Release), render the default
+# scene with the reference solutions to build/cornell-box.png.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/deps.sh
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build build -j"$(nproc)"
+./build/pathspace render scenes/cornell-box.scene --out build/cornell-box.png
+echo "pathspace: open build/cornell-box.png"

@@ -1,0 +1,9 @@
+#!/usr/bin/env bash
+# The second README command: install what is missing, build (Release), run every test.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/deps.sh
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build build -j"$(nproc)"
+cd build
+ctest -j"$(nproc)" --output-on-failure --timeout 300
