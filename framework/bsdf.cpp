@@ -40,8 +40,8 @@ float pdfBSDF(const Material& m, const Vec3& n, const Vec3& wo, const Vec3& wi) 
     if (m.isDelta()) return 0.0f;
     const Vec3 ns = sideNormal(n, wo);
     if (glm::dot(ns, wo) <= 0.0f || glm::dot(ns, wi) <= 0.0f) return 0.0f;
-    if (m.kind == BSDFKind::Diffuse) return cosineHemispherePdf(glm::dot(ns, wi));
-    return phongLobePdf(glm::dot(reflect(wo, ns), wi), m.exponent);
+    if (m.kind == BSDFKind::Diffuse) return cosineHemispherePdf(Frame(ns).toLocal(wi));
+    return phongLobePdf(Frame(reflect(wo, ns)).toLocal(wi), m.exponent);
 }
 
 bool sampleBSDF(const Material& m, const Vec3& n, const Vec3& wo, const Vec2& u, float uLobe,
@@ -51,8 +51,9 @@ bool sampleBSDF(const Material& m, const Vec3& n, const Vec3& wo, const Vec2& u,
     const Vec3 ns = cosO < 0.0f ? -n : n;
     switch (m.kind) {
     case BSDFKind::Diffuse: {
-        s.wi = Frame(ns).toWorld(sampleCosineHemisphere(u));
-        s.pdf = cosineHemispherePdf(glm::dot(ns, s.wi));
+        const Vec3 local = sampleCosineHemisphere(u);
+        s.wi = Frame(ns).toWorld(local);
+        s.pdf = cosineHemispherePdf(local);
         if (s.pdf <= 0.0f) return false;
         s.weight = m.albedo;   // (albedo / pi) cos / (cos / pi)
         s.delta = false;
@@ -60,10 +61,11 @@ bool sampleBSDF(const Material& m, const Vec3& n, const Vec3& wo, const Vec2& u,
     }
     case BSDFKind::Phong: {
         const Vec3 r = reflect(wo, ns);
-        s.wi = Frame(r).toWorld(samplePhongLobe(u, m.exponent));
+        const Vec3 local = samplePhongLobe(u, m.exponent);
+        s.wi = Frame(r).toWorld(local);
         const float cosI = glm::dot(ns, s.wi);
         if (cosI <= 0.0f) return false;   // lobe direction below the surface: invalid sample
-        s.pdf = phongLobePdf(glm::dot(r, s.wi), m.exponent);
+        s.pdf = phongLobePdf(local, m.exponent);
         if (s.pdf <= 0.0f) return false;
         s.weight = phongEval(m, ns, wo, s.wi) * cosI / s.pdf;
         s.delta = false;

@@ -11,13 +11,6 @@ Camera::Camera(const Vec3& eye, const Vec3& target, const Vec3& up, float fovY, 
     tanHalfX_ = tanHalfY_ * static_cast<float>(width) / static_cast<float>(height);
 }
 
-Ray Camera::generateRay(const Vec2& raster) const {
-    // Raster -> image plane at distance 1: x in [-tanHalfX, tanHalfX], y up.
-    const float sx = (2.0f * raster.x / width_ - 1.0f) * tanHalfX_;
-    const float sy = (1.0f - 2.0f * raster.y / height_) * tanHalfY_;
-    return Ray(eye_, glm::normalize(forward_ + sx * right_ + sy * up_));
-}
-
 bool Camera::rasterPosition(const Vec3& p, Vec2& raster) const {
     const Vec3 d = p - eye_;
     const float z = glm::dot(d, forward_);

@@ -39,7 +39,7 @@ float pdfLightArea(const Scene& scene, int l) {
     return light.kind == LightKind::Area && light.area > 0.0f ? 1.0f / light.area : 0.0f;
 }
 
-float pdfBackgroundDirection() { return kUniformSpherePdf; }
+float pdfBackgroundDirection() { return uniformSpherePdf(); }
 
 LightSample sampleLight(const Scene& scene, int l, const Vec3& ref, const Vec2& u) {
     const Light& light = scene.lights[l];
@@ -67,7 +67,7 @@ LightSample sampleLight(const Scene& scene, int l, const Vec3& ref, const Vec2& 
         s.wi = sampleUniformSphere(u);
         s.dist = kInf;
         s.Le = light.Le;
-        s.pdf = kUniformSpherePdf;
+        s.pdf = uniformSpherePdf();
         break;
     }
     return s;
@@ -82,7 +82,7 @@ EmissionSample sampleEmission(const Scene& scene, int l, const Vec2& uPos, const
         const Vec3 local = sampleCosineHemisphere(uDir);
         e.dir = Frame(e.n).toWorld(local);
         e.pdfA = pdfLightArea(scene, l);
-        e.pdfW = cosineHemispherePdf(local.z);
+        e.pdfW = cosineHemispherePdf(local);
         e.Le = light.Le;
         break;
     }
@@ -91,7 +91,7 @@ EmissionSample sampleEmission(const Scene& scene, int l, const Vec2& uPos, const
         e.dir = sampleUniformSphere(uDir);
         e.n = e.dir;
         e.pdfA = 1.0f;
-        e.pdfW = kUniformSpherePdf;
+        e.pdfW = uniformSpherePdf();
         e.Le = light.Le;
         break;
     case LightKind::Background: {
@@ -103,7 +103,7 @@ EmissionSample sampleEmission(const Scene& scene, int l, const Vec2& uPos, const
         e.p = scene.center + scene.radius * (-e.dir + r * std::cos(phi) * f.s + r * std::sin(phi) * f.t);
         e.n = e.dir;
         e.pdfA = 1.0f / (kPi * scene.radius * scene.radius);
-        e.pdfW = kUniformSpherePdf;
+        e.pdfW = uniformSpherePdf();
         e.Le = light.Le;
         break;
     }

@@ -1,42 +1,11 @@
-// Sampling helpers the framework's materials and lights use. (Lesson 1 derives these warps;
-// the student's versions live in the lesson, these are the framework's own.)
+// Sampling helpers of the framework: the warps of lesson 1 (warps.h) and a discrete
+// distribution for choosing lights by power and triangles by area.
 #pragma once
 #include <vector>
 #include "math.h"
+#include "warps.h"
 
 namespace ps {
-
-// Cosine-weighted direction about +z: pdf = cos(theta) / pi (Malley's method).
-inline Vec3 sampleCosineHemisphere(const Vec2& u) {
-    float r = std::sqrt(u.x), phi = 2.0f * kPi * u.y;
-    return Vec3(r * std::cos(phi), r * std::sin(phi), std::sqrt(std::max(0.0f, 1.0f - u.x)));
-}
-inline float cosineHemispherePdf(float cosTheta) { return cosTheta > 0.0f ? cosTheta * kInvPi : 0.0f; }
-
-// Uniform direction on the unit sphere: pdf = 1 / (4 pi).
-inline Vec3 sampleUniformSphere(const Vec2& u) {
-    float z = 1.0f - 2.0f * u.x, r = std::sqrt(std::max(0.0f, 1.0f - z * z)), phi = 2.0f * kPi * u.y;
-    return Vec3(r * std::cos(phi), r * std::sin(phi), z);
-}
-constexpr float kUniformSpherePdf = 1.0f / (4.0f * kPi);
-
-// Direction about +z with pdf (n + 1) / (2 pi) cos^n(alpha) (the Phong lobe).
-inline Vec3 samplePhongLobe(const Vec2& u, float exponent) {
-    float c = std::pow(1.0f - u.x, 1.0f / (exponent + 1.0f));   // 1 - u.x in (0, 1]
-    float s = std::sqrt(std::max(0.0f, 1.0f - c * c)), phi = 2.0f * kPi * u.y;
-    return Vec3(s * std::cos(phi), s * std::sin(phi), c);
-}
-inline float phongLobePdf(float cosAlpha, float exponent) {
-    return cosAlpha > 0.0f ? (exponent + 1.0f) * (0.5f * kInvPi) * std::pow(cosAlpha, exponent) : 0.0f;
-}
-
-// Uniform point on a triangle: barycentrics (b1, b2) of p1, p2 (Heitz 2019, low distortion).
-inline Vec2 sampleUniformTriangle(const Vec2& u) {
-    float b0, b1;
-    if (u.x < u.y) { b0 = u.x / 2; b1 = u.y - b0; }
-    else { b1 = u.y / 2; b0 = u.x - b1; }
-    return Vec2(b1, 1.0f - b0 - b1);
-}
 
 // A discrete distribution over n weights (light selection by power, triangles by area).
 class Distribution1D {

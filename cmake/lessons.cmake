@@ -1,0 +1,66 @@
+# Which lessons are built from the student's files (assignments/) and which from the
+# reference (solutions/). Any mix can be built and graded:
+#   -DPATHSPACE_STUDENT=""      every lesson from solutions/ (the default when solutions/ exists)
+#   -DPATHSPACE_STUDENT=all     every lesson from assignments/ (the default in the handout)
+#   -DPATHSPACE_STUDENT="3;5"   lessons 3 and 5 from assignments/, the rest from solutions/
+# -DPATHSPACE_ASSIGNMENTS_DIR=DIR takes the student's files from DIR (a submission) instead of
+# assignments/.
+set(PATHSPACE_HAVE_SOLUTIONS OFF)
+if(IS_DIRECTORY ${PROJECT_SOURCE_DIR}/solutions)
+  set(PATHSPACE_HAVE_SOLUTIONS ON)
+  set(_student_default "")
+else()
+  set(_student_default "all")
+endif()
+set(PATHSPACE_STUDENT "${_student_default}" CACHE STRING "lessons built from assignments/: '', 'all' or a list like '3;5'")
+set(PATHSPACE_ASSIGNMENTS_DIR "${PROJECT_SOURCE_DIR}/assignments" CACHE PATH "where the student's lesson folders are")
+if(NOT PATHSPACE_HAVE_SOLUTIONS AND NOT PATHSPACE_STUDENT STREQUAL "all")
+  message(FATAL_ERROR "There is no solutions/ folder here: every lesson must come from assignments/ (PATHSPACE_STUDENT=all).")
+endif()
+
+# The lesson folders: lessons/NN-name.
+file(GLOB _lesson_paths LIST_DIRECTORIES true ${PROJECT_SOURCE_DIR}/lessons/[0-9][0-9]-*)
+set(PATHSPACE_LESSONS "")
+foreach(_p ${_lesson_paths})
+  if(IS_DIRECTORY ${_p})
+    get_filename_component(_name ${_p} NAME)
+    list(APPEND PATHSPACE_LESSONS ${_name})
+  endif()
+endforeach()
+
+# pathspace_lesson_is_student(NN OUT): TRUE if lesson NN (two digits) comes from the student.
+function(pathspace_lesson_is_student NN OUT)
+  math(EXPR _n "${NN}")
+  set(_is FALSE)
+  if(PATHSPACE_STUDENT STREQUAL "all")
+    set(_is TRUE)
+  else()
+    foreach(_s ${PATHSPACE_STUDENT})
+      math(EXPR _sn "${_s}")
+      if(_sn EQUAL _n)
+        set(_is TRUE)
+      endif()
+    endforeach()
+  endif()
+  set(${OUT} ${_is} PARENT_SCOPE)
+endfunction()
+
+# pathspace_lesson_sources(NAME OUT): the .cpp files of lesson NAME (e.g. 01-monte-carlo),
+# from the student's folder or the reference, as chosen above.
+function(pathspace_lesson_sources NAME OUT)
+  string(SUBSTRING ${NAME} 0 2 _nn)
+  pathspace_lesson_is_student(${_nn} _student)
+  if(_student)
+    set(_dir ${PATHSPACE_ASSIGNMENTS_DIR}/${NAME})
+    set(_from "student (${_dir})")
+  else()
+    set(_dir ${PROJECT_SOURCE_DIR}/solutions/${NAME})
+    set(_from "reference")
+  endif()
+  file(GLOB _src CONFIGURE_DEPENDS ${_dir}/*.cpp)
+  if(NOT _src)
+    message(FATAL_ERROR "lesson ${NAME}: no .cpp files in ${_dir}")
+  endif()
+  message(STATUS "lesson ${NAME}: ${_from}")
+  set(${OUT} ${_src} PARENT_SCOPE)
+endfunction()
