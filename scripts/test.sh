@@ -7,3 +7,7 @@ cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build build -j"$(nproc)"
 cd build
 ctest -j"$(nproc)" --output-on-failure --timeout 300
+cd ..
+# What CI must prove about the course: the handout holds no solution line and builds, and
+# every graded test fails on the untouched skeleton.
+bash scripts/check-skeleton.sh build

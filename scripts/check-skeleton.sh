@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# CI's two checks on the untouched skeleton, run by scripts/test.sh after the main tests:
+#  1. the handout (no solutions/) holds no solution line, configures and builds;
+#  2. in it, every graded test FAILS (a graded test that passes on the skeleton cannot tell a
+#     finished assignment from an empty one: it is named and the check fails).
+#   bash scripts/check-skeleton.sh BUILD_DIR
+set -euo pipefail
+build="$(cd "${1:-build}" && pwd)"
+src="$(cd "$(dirname "$0")/.." && pwd)"
+handout="$build/handout"
+rm -rf "$handout" "$build/handout-build"
+bash "$src/scripts/handout.sh" "$handout"
+"$build/skeleton" leaks "$src/solutions" "$handout"
+
+cmake -S "$handout" -B "$build/handout-build" -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build "$build/handout-build" -j"$(nproc)" >/dev/null
+cd "$build/handout-build"
+total=$(ctest -N -L graded | sed -n 's/^Total Tests: //p')
+[ "${total:-0}" -gt 0 ] || { echo "check-skeleton: no graded tests found" >&2; exit 1; }
+ctest -L graded -j"$(nproc)" --timeout 120 --output-junit skeleton.xml >/dev/null 2>&1 || true
+# A test passed if its testcase element has no <failure>.
+passed=$(awk 'BEGIN{RS="</testcase>"} /<testcase/ && !/<failure/ { if (match($0, /<testcase name="[^"]*"/)) print substr($0, RSTART+16, RLENGTH-17) }' skeleton.xml)
+if [ -n "$passed" ]; then
+  echo "check-skeleton: these graded tests PASS on the untouched skeleton (they must fail):" >&2
+  echo "$passed" | sed 's/^/  /' >&2
+  exit 1
+fi
+echo "check-skeleton: all $total graded tests fail on the untouched skeleton, as they must"

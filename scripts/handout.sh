@@ -1,0 +1,20 @@
+#!/usr/bin/env bash
+# Writes the student handout into DIR: every tracked file except solutions/ and CI files.
+# The handout builds with every lesson from assignments/ (there is no solutions/ in it).
+#   bash scripts/handout.sh DIR
+set -euo pipefail
+[ $# -eq 1 ] || { echo "usage: bash scripts/handout.sh DIR" >&2; exit 2; }
+src="$(cd "$(dirname "$0")/.." && pwd)"
+dest="$1"
+if [ -e "$dest" ] && [ -n "$(ls -A "$dest" 2>/dev/null)" ]; then
+  echo "handout: $dest exists and is not empty; give a new directory" >&2
+  exit 1
+fi
+mkdir -p "$dest"
+cd "$src"
+git ls-files -z --cached --others --exclude-standard |
+  grep -zv -E '^(solutions/|\.ci/|tests/course/|scripts/handout\.sh|scripts/check-skeleton\.sh|tools/grade\.cpp)' |
+  xargs -0 -I{} cp --parents {} "$dest"/
+# The grader needs the reference; the handout has none.
+sed -i '/^# grade: the autograder/,$d' "$dest/tools/CMakeLists.txt"
+echo "handout: wrote $(find "$dest" -type f | wc -l) files to $dest (no solutions/)"

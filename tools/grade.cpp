@@ -1,0 +1,279 @@
+// grade: scores a submission lesson by lesson, each lesson IN ISOLATION: the lesson under test
+// is built from the submission, every other lesson from the reference (solutions/).
+//
+//   grade [--submission DIR] [--lessons 0,1|all] [--out DIR] [--timeout S] [--jobs N]
+//
+// DIR holds lesson folders like assignments/ does (NN-name/*.cpp); default: assignments/.
+// For each lesson: configure and build in OUT/build-NN, run its graded tests (CTest label
+// lesson-NN) with a per-test timeout, read CTest's JUnit report. A test's points are in its
+// name ("... [3 pts]", else 1). A lesson that does not build scores 0 on every test; a test
+// that crashes or times out scores 0; the other tests are still graded.
+// Writes OUT/results.json (Gradescope format), OUT/junit.xml, and prints a score table.
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct TestResult {
+    std::string lesson, name, message, output;
+    int points = 1;
+    bool passed = false;
+};
+
+std::string readText(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+std::string quote(const std::string& s) { return "'" + s + "'"; }
+
+int run(const std::string& cmd) {
+    const int rc = std::system(cmd.c_str());
+    return rc == 0 ? 0 : 1;
+}
+
+int pointsOf(const std::string& name) {
+    static const std::regex re(R"(\[(\d+) pts?\])");
+    std::smatch m;
+    return std::regex_search(name, m, re) ? std::stoi(m[1]) : 1;
+}
+
+std::string xmlUnescape(std::string s) {
+    const std::pair<const char*, const char*> ents[] = {
+        {"&quot;", "\""}, {"&apos;", "'"}, {"&lt;", "<"}, {"&gt;", ">"}, {"&#10;", "\n"}, {"&#13;", "\r"}, {"&amp;", "&"}};
+    for (auto [from, to] : ents)
+        for (size_t p = 0; (p = s.find(from, p)) != std::string::npos; p += std::string(to).size())
+            s.replace(p, std::string(from).size(), to);
+    return s;
+}
+
+std::string xmlEscape(const std::string& s) {
+    std::string out;
+    for (char c : s) {
+        switch (c) {
+        case '&': out += "&amp;"; break;
+        case '<': out += "&lt;"; break;
+        case '>': out += "&gt;"; break;
+        case '"': out += "&quot;"; break;
+        default:
+            if (static_cast<unsigned char>(c) < 0x20 && c != '\n' && c != '\t') out += ' ';
+            else out += c;
+        }
+    }
+    return out;
+}
+
+std::string jsonEscape(const std::string& s) {
+    std::string out;
+    for (unsigned char c : s) {
+        switch (c) {
+        case '"': out += "\\\""; break;
+        case '\\': out += "\\\\"; break;
+        case '\n': out += "\\n"; break;
+        case '\t': out += "\\t"; break;
+        default:
+            if (c < 0x20) { char b[8]; std::snprintf(b, sizeof b, "\\u%04x", c); out += b; }
+            else out += static_cast<char>(c);
+        }
+    }
+    return out;
+}
+
+std::string lastLines(const std::string& text, int n) {
+    std::vector<std::string> lines;
+    std::istringstream in(text);
+    for (std::string l; std::getline(in, l);) lines.push_back(l);
+    std::string out;
+    for (size_t i = lines.size() > size_t(n) ? lines.size() - n : 0; i < lines.size(); ++i) out += lines[i] + "\n";
+    return out;
+}
+
+// The graded tests a lesson declares: TEST_CASE("name" ...) in tests/NN-name/*.cpp.
+std::vector<std::string> declaredTests(const fs::path& dir) {
+    static const std::regex re(R"re(TEST_CASE\s*\(\s*"((?:[^"\\]|\\.)*)")re");
+    std::vector<std::string> names;
+    std::vector<fs::path> files;
+    for (const auto& e : fs::directory_iterator(dir))
+        if (e.path().extension() == ".cpp") files.push_back(e.path());
+    std::sort(files.begin(), files.end());
+    for (const fs::path& f : files) {
+        const std::string text = readText(f);
+        for (std::sregex_iterator it(text.begin(), text.end(), re), end; it != end; ++it) names.push_back((*it)[1]);
+    }
+    return names;
+}
+
+// name -> (passed, failure message, output) from a CTest JUnit file.
+std::map<std::string, TestResult> readJUnit(const fs::path& file) {
+    std::map<std::string, TestResult> out;
+    const std::string xml = readText(file);
+    static const std::regex caseRe(R"re(<testcase\s+name="([^"]*)"[^>]*?status="([^"]*)"[^>]*?(/>|>([\s\S]*?)</testcase>))re");
+    static const std::regex failRe(R"re(<failure\s+message="([^"]*)")re");
+    static const std::regex outRe(R"re(<system-out>([\s\S]*?)</system-out>)re");
+    for (std::sregex_iterator it(xml.begin(), xml.end(), caseRe), end; it != end; ++it) {
+        TestResult r;
+        r.name = xmlUnescape((*it)[1]);
+        const std::string status = (*it)[2], body = (*it)[4];
+        std::smatch m;
+        r.passed = status == "run" && body.find("<failure") == std::string::npos;
+        if (std::regex_search(body, m, failRe)) r.message = xmlUnescape(m[1]);
+        if (std::regex_search(body, m, outRe)) r.output = xmlUnescape(m[1]);
+        if (!r.passed && r.message.empty()) r.message = status == "notrun" ? "not run" : "failed";
+        out[r.name] = r;
+    }
+    return out;
+}
+
+// The first lines of a failed doctest run that say what went wrong.
+std::string failureSummary(const TestResult& r) {
+    std::istringstream in(r.output);
+    std::string summary;
+    int kept = 0;
+    for (std::string l; std::getline(in, l) && kept < 12;) {
+        if (l.find("ERROR") != std::string::npos || l.find("CHECK") != std::string::npos ||
+            l.find("REQUIRE") != std::string::npos || l.find("values:") != std::string::npos ||
+            l.find("logged:") != std::string::npos || l.find("with expansion") != std::string::npos ||
+            l.find("  ") == 0) {
+            summary += l + "\n";
+            ++kept;
+        }
+    }
+    if (r.message.find("Timeout") != std::string::npos) summary = "timed out\n" + summary;
+    return summary.empty() ? r.message : summary;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    fs::path source = PATHSPACE_SOURCE_DIR;
+    fs::path submission = source / "assignments";
+    fs::path out = "grade";
+    std::string lessonsArg = "all";
+    int timeout = 120, jobs = 2;
+    for (int i = 1; i < argc; ++i) {
+        const std::string a = argv[i];
+        auto value = [&]() -> std::string {
+            if (i + 1 >= argc) { std::cerr << "grade: " << a << " needs a value\n"; std::exit(2); }
+            return argv[++i];
+        };
+        if (a == "--submission") submission = fs::absolute(value());
+        else if (a == "--lessons") lessonsArg = value();
+        else if (a == "--out") out = value();
+        else if (a == "--timeout") timeout = std::stoi(value());
+        else if (a == "--jobs") jobs = std::stoi(value());
+        else if (a == "--source") source = fs::absolute(value());
+        else if (a == "--help" || a == "-h") {
+            std::cout << "usage: grade [--submission DIR] [--lessons 0,1|all] [--out DIR] [--timeout SECONDS] [--jobs N]\n"
+                         "Scores each lesson in isolation (that lesson from DIR, the others from solutions/).\n"
+                         "DIR holds lesson folders like assignments/ (default: assignments/). Writes\n"
+                         "OUT/results.json (Gradescope) and OUT/junit.xml (default OUT: ./grade).\n";
+            return 0;
+        } else { std::cerr << "grade: unknown option " << a << " (see --help)\n"; return 2; }
+    }
+    out = fs::absolute(out);
+    fs::create_directories(out);
+    if (!fs::is_directory(source / "solutions")) {
+        std::cerr << "grade: " << (source / "solutions").string() << " not found: grading needs the reference\n";
+        return 2;
+    }
+
+    // Lessons with graded tests.
+    std::vector<std::string> lessons;
+    for (const auto& e : fs::directory_iterator(source / "tests")) {
+        const std::string n = e.path().filename().string();
+        if (e.is_directory() && n.size() > 3 && std::isdigit(n[0]) && std::isdigit(n[1]) && n[2] == '-') {
+            if (lessonsArg == "all") { lessons.push_back(n); continue; }
+            std::stringstream ss(lessonsArg);
+            for (std::string k; std::getline(ss, k, ',');)
+                if (!k.empty() && std::stoi(k) == std::stoi(n.substr(0, 2))) lessons.push_back(n);
+        }
+    }
+    std::sort(lessons.begin(), lessons.end());
+    if (lessons.empty()) { std::cerr << "grade: no lesson matches '" << lessonsArg << "'\n"; return 2; }
+
+    std::vector<TestResult> results;
+    std::string junit = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites>\n";
+    for (const std::string& lesson : lessons) {
+        const std::string nn = lesson.substr(0, 2);
+        const fs::path build = out / ("build-" + nn), log = out / ("build-" + nn + ".log");
+        std::cerr << "grade: lesson " << lesson << ": building (log: " << log.string() << ")\n";
+        const bool built =
+            run("cmake -S " + quote(source.string()) + " -B " + quote(build.string()) +
+                " -DCMAKE_BUILD_TYPE=Release -DPATHSPACE_STUDENT=" + nn + " -DPATHSPACE_ASSIGNMENTS_DIR=" +
+                quote(submission.string()) + " > " + quote(log.string()) + " 2>&1") == 0 &&
+            run("cmake --build " + quote(build.string()) + " -j" + std::to_string(jobs) + " --target lesson_" + nn +
+                "_tests >> " + quote(log.string()) + " 2>&1") == 0;
+        std::map<std::string, TestResult> ran;
+        if (built) {
+            const fs::path xml = out / ("junit-" + nn + ".xml");
+            fs::remove(xml);
+            run("ctest --test-dir " + quote(build.string()) + " -L lesson-" + nn + " --timeout " +
+                std::to_string(timeout) + " -j" + std::to_string(jobs) + " --output-junit " + quote(xml.string()) +
+                " > " + quote((out / ("ctest-" + nn + ".log")).string()) + " 2>&1");
+            ran = readJUnit(xml);
+            std::string suite = readText(xml);
+            if (size_t p = suite.find("?>"); p != std::string::npos) suite = suite.substr(p + 2);
+            junit += suite + "\n";
+        }
+        const std::string buildError = built ? "" : "the lesson did not build; the end of " + log.string() + ":\n" +
+                                                        lastLines(readText(log), 25);
+        for (const std::string& name : declaredTests(source / "tests" / lesson)) {
+            TestResult r;
+            auto it = ran.find(name);
+            if (it != ran.end()) r = it->second;
+            else r.message = built ? "not run (did the test executable crash at start-up?)" : buildError;
+            r.lesson = lesson;
+            r.name = name;
+            r.points = pointsOf(name);
+            results.push_back(r);
+        }
+        if (!built) junit += "<testsuite name=\"lesson-" + nn + "\"><testcase name=\"build\"><failure message=\"" +
+                             xmlEscape(buildError) + "\"/></testcase></testsuite>\n";
+    }
+    junit += "</testsuites>\n";
+    std::ofstream(out / "junit.xml") << junit;
+
+    // Score table and Gradescope results.
+    int score = 0, maxScore = 0;
+    std::map<std::string, std::pair<int, int>> perLesson;
+    std::ostringstream tests;
+    std::printf("\n%-16s %-70s %6s  %s\n", "lesson", "test", "points", "result");
+    for (size_t i = 0; i < results.size(); ++i) {
+        const TestResult& r = results[i];
+        const int got = r.passed ? r.points : 0;
+        score += got;
+        maxScore += r.points;
+        perLesson[r.lesson].first += got;
+        perLesson[r.lesson].second += r.points;
+        std::printf("%-16s %-70.70s %3d/%-2d  %s\n", r.lesson.c_str(), r.name.c_str(), got, r.points,
+                    r.passed ? "pass" : "FAIL");
+        const std::string why = r.passed ? "" : failureSummary(r);
+        if (!r.passed) {
+            std::istringstream in(why);
+            for (std::string l; std::getline(in, l);) std::printf("%16s     %s\n", "", l.c_str());
+        }
+        tests << (i ? ",\n" : "") << "    {\"name\": \"" << jsonEscape(r.lesson + ": " + r.name) << "\", \"score\": " << got
+              << ", \"max_score\": " << r.points << ", \"status\": \"" << (r.passed ? "passed" : "failed")
+              << "\", \"output\": \"" << jsonEscape(why) << "\"}";
+    }
+    std::printf("\n");
+    for (const auto& [lesson, s] : perLesson) std::printf("%-16s %d / %d\n", lesson.c_str(), s.first, s.second);
+    std::printf("%-16s %d / %d\n", "total", score, maxScore);
+    std::ofstream(out / "results.json") << "{\n  \"score\": " << score << ",\n  \"max_score\": " << maxScore
+                                        << ",\n  \"tests\": [\n" << tests.str() << "\n  ]\n}\n";
+    std::cerr << "grade: wrote " << (out / "results.json").string() << " and " << (out / "junit.xml").string() << "\n";
+    return 0;
+}
