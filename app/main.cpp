@@ -25,6 +25,7 @@ render options:
   --algo NAME        integrator (default: the scene's 'render algo', else eyelight)
   --spp N            iterations (samples per pixel) to render (default: the scene's)
   --time SECONDS     stop after this much render time instead (with --spp: whichever first)
+  --maxdepth D       maximum number of bounces, 0 = emission seen directly (default: the scene's)
   --seed S           random seed (default 0); the same seed gives the same image
   --threads T        worker threads (default: all cores); the image does not depend on it
   --out FILE         output image, .png, .pfm or .hdr (default: SCENE's name + .png);
@@ -81,7 +82,7 @@ int info(const std::vector<std::string>& args) {
 
 int render(const std::vector<std::string>& args) {
     std::string scenePath, algo, out, reference, csvPath, variancePath;
-    int spp = 0, threads = 0;
+    int spp = 0, threads = 0, maxDepth = -1;
     double seconds = 0.0;
     uint64_t seed = 0;
     bool progress = isatty(2);
@@ -97,6 +98,7 @@ int render(const std::vector<std::string>& args) {
             seconds = parseNumber<double>(a, value());
             if (!(seconds > 0.0) || !std::isfinite(seconds)) throw UsageError("--time must be a positive number of seconds");
         }
+        else if (a == "--maxdepth") { maxDepth = parseNumber<int>(a, value()); if (maxDepth < 0) throw UsageError("--maxdepth must not be negative"); }
         else if (a == "--seed") seed = parseNumber<uint64_t>(a, value());
         else if (a == "--threads") { threads = parseNumber<int>(a, value()); if (threads < 1) throw UsageError("--threads must be at least 1"); }
         else if (a == "--out") out = value();
@@ -111,9 +113,19 @@ int render(const std::vector<std::string>& args) {
     }
     if (scenePath.empty()) throw UsageError("'render' needs a scene file");
 
-    const ps::Scene scene = ps::loadScene(scenePath);
-    if (algo.empty()) algo = scene.settings.algo;
-    auto integrator = ps::makeIntegrator(algo);
+    ps::Scene scene = ps::loadScene(scenePath);
+    if (maxDepth >= 0) scene.settings.maxDepth = maxDepth;
+    std::unique_ptr<ps::Integrator> integrator;
+    if (algo.empty()) {
+        algo = scene.settings.algo;
+        try {
+            integrator = ps::makeIntegrator(algo);
+        } catch (const ps::InputError& e) {   // name the scene line that asked for it
+            throw ps::InputError(scenePath, scene.settings.algoLine, e.what());
+        }
+    } else {
+        integrator = ps::makeIntegrator(algo);
+    }
     if (spp == 0 && seconds == 0.0) spp = scene.settings.spp;
     if (out.empty()) out = stem(baseName(scenePath)) + ".png";
 
@@ -177,7 +189,7 @@ int main(int argc, char** argv) {
         if (cmd == "info") return info(args);
         throw UsageError("unknown command '" + cmd + "'");
     } catch (const UsageError& e) {
-        std::cerr << "pathspace: " << e.what() << "\n(run 'pathspace --help' for usage)\n";
+        std::cerr << "pathspace: " << e.what() << " (run 'pathspace --help' for usage)\n";
         return 2;
     } catch (const ps::InputError& e) {
         std::cerr << "pathspace: error: " << e.what() << "\n";

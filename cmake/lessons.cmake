@@ -64,3 +64,23 @@ function(pathspace_lesson_sources NAME OUT)
   message(STATUS "lesson ${NAME}: ${_from}")
   set(${OUT} ${_src} PARENT_SCOPE)
 endfunction()
+
+# pathspace_lessons: the code of lessons 2 and up (integrators and what they need), one object
+# library per lesson, linked into the program and every test as object files, so that the
+# integrators they register (PS_REGISTER_INTEGRATOR) are always there. Lessons 0 and 1 are
+# part of the framework itself (framework/CMakeLists.txt).
+function(pathspace_add_lesson_libraries)
+  add_library(pathspace_lessons INTERFACE)
+  foreach(L ${PATHSPACE_LESSONS})
+    string(SUBSTRING ${L} 0 2 NN)
+    if(NN STREQUAL "00" OR NN STREQUAL "01")
+      continue()
+    endif()
+    pathspace_lesson_sources(${L} _src)
+    add_library(lesson_${NN} OBJECT ${_src})
+    target_link_libraries(lesson_${NN} PUBLIC pathspace_framework)
+    target_sources(pathspace_lessons INTERFACE $<TARGET_OBJECTS:lesson_${NN}>)
+    target_link_libraries(pathspace_lessons INTERFACE lesson_${NN})
+  endforeach()
+  target_link_libraries(pathspace_lessons INTERFACE pathspace_framework)
+endfunction()

@@ -18,6 +18,12 @@ namespace {
 // Normal flipped to the side of wo (two-sided reflectors).
 Vec3 sideNormal(const Vec3& n, const Vec3& wo) { return glm::dot(n, wo) < 0.0f ? -n : n; }
 
+// Phong with exponent 0 is the Lambertian BRDF albedo / pi on the whole hemisphere (cos^0 = 1);
+// the lobe about the mirror direction would wrongly cut it off where cos(alpha) <= 0.
+bool isLambertian(const Material& m) {
+    return m.kind == BSDFKind::Diffuse || (m.kind == BSDFKind::Phong && m.exponent == 0.0f);
+}
+
 // Normalized Phong (Lafortune & Willems 1994): f = albedo (n + 2) / (2 pi) cos^n(alpha),
 // alpha the angle between wi and the mirror direction of wo. Exponent 0 is Lambertian.
 Color phongEval(const Material& m, const Vec3& ns, const Vec3& wo, const Vec3& wi) {
@@ -32,7 +38,7 @@ Color evalBSDF(const Material& m, const Vec3& n, const Vec3& wo, const Vec3& wi)
     if (m.isDelta()) return Color(0.0f);
     const Vec3 ns = sideNormal(n, wo);
     if (glm::dot(ns, wo) <= 0.0f || glm::dot(ns, wi) <= 0.0f) return Color(0.0f);
-    if (m.kind == BSDFKind::Diffuse) return m.albedo * kInvPi;
+    if (isLambertian(m)) return m.albedo * kInvPi;
     return phongEval(m, ns, wo, wi);
 }
 
@@ -40,7 +46,7 @@ float pdfBSDF(const Material& m, const Vec3& n, const Vec3& wo, const Vec3& wi) 
     if (m.isDelta()) return 0.0f;
     const Vec3 ns = sideNormal(n, wo);
     if (glm::dot(ns, wo) <= 0.0f || glm::dot(ns, wi) <= 0.0f) return 0.0f;
-    if (m.kind == BSDFKind::Diffuse) return cosineHemispherePdf(Frame(ns).toLocal(wi));
+    if (isLambertian(m)) return cosineHemispherePdf(Frame(ns).toLocal(wi));
     return phongLobePdf(Frame(reflect(wo, ns)).toLocal(wi), m.exponent);
 }
 
@@ -49,11 +55,11 @@ bool sampleBSDF(const Material& m, const Vec3& n, const Vec3& wo, const Vec2& u,
     const float cosO = glm::dot(n, wo);
     if (cosO == 0.0f) return false;   // exactly grazing: no valid direction
     const Vec3 ns = cosO < 0.0f ? -n : n;
-    switch (m.kind) {
+    switch (isLambertian(m) ? BSDFKind::Diffuse : m.kind) {
     case BSDFKind::Diffuse: {
         const Vec3 local = sampleCosineHemisphere(u);
         s.wi = Frame(ns).toWorld(local);
-        s.pdf = cosineHemispherePdf(local);
+        s.pdf = cosineHemispherePdf(Frame(ns).toLocal(s.wi));   // exactly pdfBSDF(wi)
         if (s.pdf <= 0.0f) return false;
         s.weight = m.albedo;   // (albedo / pi) cos / (cos / pi)
         s.delta = false;
@@ -65,7 +71,9 @@ bool sampleBSDF(const Material& m, const Vec3& n, const Vec3& wo, const Vec2& u,
         s.wi = Frame(r).toWorld(local);
         const float cosI = glm::dot(ns, s.wi);
         if (cosI <= 0.0f) return false;   // lobe direction below the surface: invalid sample
-        s.pdf = phongLobePdf(local, m.exponent);
+        // The pdf of wi as pdfBSDF evaluates it (not of `local`, whose cos(alpha) differs from
+        // the one phongEval recomputes by rounding, amplified by cos^n for large n).
+        s.pdf = phongLobePdf(Frame(r).toLocal(s.wi), m.exponent);
         if (s.pdf <= 0.0f) return false;
         s.weight = phongEval(m, ns, wo, s.wi) * cosI / s.pdf;
         s.delta = false;

@@ -30,7 +30,9 @@ void BVH::buildNode(uint32_t self, std::vector<AABB>& boxes, std::vector<Vec3>& 
     if (count <= 1 || depth >= kMaxDepth) { makeLeaf(); return; }
 
     // Binned SAH (Wald 2007): kBins bins along each axis of the centroid box; the cost of a
-    // split is A_left * N_left + A_right * N_right (traversal and intersection cost 1 each).
+    // split is A + A_left * N_left + A_right * N_right, of a leaf A * N (traversal and
+    // intersection cost 1 each; A is this node's area).
+    const float area = box.surfaceArea();
     float bestCost = kInf;
     int bestAxis = -1, bestSplit = -1;
     const Vec3 ext = cbox.extent();
@@ -55,11 +57,11 @@ void BVH::buildNode(uint32_t self, std::vector<AABB>& boxes, std::vector<Vec3>& 
         for (int s = 1; s < kBins; ++s) {   // split between bin s-1 and s
             acc.expand(binBox[s - 1]); cnt += binCount[s - 1];
             if (cnt == 0 || rightCount[s] == 0) continue;
-            float cost = acc.surfaceArea() * cnt + rightArea[s] * rightCount[s];
+            float cost = area + acc.surfaceArea() * cnt + rightArea[s] * rightCount[s];
             if (cost < bestCost) { bestCost = cost; bestAxis = axis; bestSplit = s; }
         }
     }
-    const float leafCost = box.surfaceArea() * count;
+    const float leafCost = area * count;
     uint32_t mid;
     if (bestAxis >= 0 && (bestCost < leafCost || count > kMaxLeafSize)) {
         const float scale = kBins / ext[bestAxis];

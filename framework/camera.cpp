@@ -11,19 +11,29 @@ Camera::Camera(const Vec3& eye, const Vec3& target, const Vec3& up, float fovY, 
     tanHalfX_ = tanHalfY_ * static_cast<float>(width) / static_cast<float>(height);
 }
 
-bool Camera::rasterPosition(const Vec3& p, Vec2& raster) const {
-    const Vec3 d = p - eye_;
-    const float z = glm::dot(d, forward_);
+namespace {
+// Raster position of the direction d (any length) from the pinhole, given the camera's basis;
+// false if d points behind the camera or outside the image.
+bool rasterOfDirection(const Vec3& d, const Vec3& forward, const Vec3& right, const Vec3& up, float tanHalfX,
+                       float tanHalfY, int width, int height, Vec2& raster) {
+    const float z = glm::dot(d, forward);
     if (!(z > 0.0f)) return false;
-    const float sx = glm::dot(d, right_) / z, sy = glm::dot(d, up_) / z;
-    raster = Vec2((sx / tanHalfX_ + 1.0f) * 0.5f * width_, (1.0f - sy / tanHalfY_) * 0.5f * height_);
-    return raster.x >= 0.0f && raster.x < width_ && raster.y >= 0.0f && raster.y < height_;
+    const float sx = glm::dot(d, right) / z, sy = glm::dot(d, up) / z;
+    raster = Vec2((sx / tanHalfX + 1.0f) * 0.5f * width, (1.0f - sy / tanHalfY) * 0.5f * height);
+    return raster.x >= 0.0f && raster.x < width && raster.y >= 0.0f && raster.y < height;
+}
+}  // namespace
+
+bool Camera::rasterPosition(const Vec3& p, Vec2& raster) const {
+    return rasterOfDirection(p - eye_, forward_, right_, up_, tanHalfX_, tanHalfY_, width_, height_, raster);
 }
 
+// W_e and the pdf test the direction itself: eye_ + dir would be rounded to the ulp of the
+// eye's coordinates (0.008 at 1e5) and misjudge directions near the image edges.
 float Camera::We(const Vec3& dir) const {
     const float cosTheta = glm::dot(dir, forward_);
     Vec2 raster;
-    if (!(cosTheta > 0.0f) || !rasterPosition(eye_ + dir, raster)) return 0.0f;
+    if (!(cosTheta > 0.0f) || !rasterOfDirection(dir, forward_, right_, up_, tanHalfX_, tanHalfY_, width_, height_, raster)) return 0.0f;
     const float c2 = cosTheta * cosTheta;
     return 1.0f / (imagePlaneArea() * c2 * c2);
 }
@@ -31,7 +41,7 @@ float Camera::We(const Vec3& dir) const {
 float Camera::pdfDirection(const Vec3& dir) const {
     const float cosTheta = glm::dot(dir, forward_);
     Vec2 raster;
-    if (!(cosTheta > 0.0f) || !rasterPosition(eye_ + dir, raster)) return 0.0f;
+    if (!(cosTheta > 0.0f) || !rasterOfDirection(dir, forward_, right_, up_, tanHalfX_, tanHalfY_, width_, height_, raster)) return 0.0f;
     return 1.0f / (imagePlaneArea() * cosTheta * cosTheta * cosTheta);
 }
 

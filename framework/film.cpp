@@ -32,9 +32,12 @@ Image Film::varianceOfMean() const {
 void SplatBuffer::splat(size_t task, const Vec2& raster, const Color& c, SampleStats& stats) {
     const Color v = checkSample(c, stats);
     if (isBlack(v)) return;
+    // Outside the image (or NaN): dropped. Truncation would move (-1, 0) onto pixel 0, and
+    // clamping alone would pile everything right of or below the image onto the last pixel;
+    // only a point exactly on the far edge (x = width, by rounding) goes to the last pixel.
+    if (!(raster.x >= 0.0f && raster.x <= width_ && raster.y >= 0.0f && raster.y <= height_)) return;
     const int x = std::min(width_ - 1, static_cast<int>(raster.x));
     const int y = std::min(height_ - 1, static_cast<int>(raster.y));
-    if (x < 0 || y < 0) return;
     lists_[task].emplace_back(static_cast<uint32_t>(y * width_ + x), v);
 }
 

@@ -1,5 +1,6 @@
 #include "integrator.h"
 #include "errors.h"
+#include <algorithm>
 #include "eyelight.h"
 
 namespace ps {
@@ -28,16 +29,34 @@ void PixelIntegrator::renderIteration(const Scene& scene, uint32_t iteration, ui
     stats.rays += rays;
 }
 
-std::vector<IntegratorInfo> integratorList() {
-    return {
-        {"eyelight", "albedo times |cos| between the surface normal and the eye ray at the first hit"},
-        {"normals", "the surface normal at the first hit, mapped to colours (n + 1) / 2"},
+namespace {
+// The framework's own integrators, then whatever the lessons register during static
+// initialisation (lesson code is linked as object files, so its registrations are kept).
+std::vector<IntegratorInfo>& registry() {
+    static std::vector<IntegratorInfo> list = {
+        {"eyelight", "reflectance times |cos| between the normal and the eye ray at the first hit",
+         [] { return std::unique_ptr<Integrator>(std::make_unique<EyeLight>()); }},
+        {"normals", "the surface normal at the first hit, mapped to colours (n + 1) / 2",
+         [] { return std::unique_ptr<Integrator>(std::make_unique<NormalView>()); }},
     };
+    return list;
+}
+}  // namespace
+
+bool registerIntegrator(const IntegratorInfo& info) {
+    registry().push_back(info);
+    return true;
+}
+
+std::vector<IntegratorInfo> integratorList() {
+    std::vector<IntegratorInfo> list = registry();
+    std::sort(list.begin(), list.end(), [](const auto& a, const auto& b) { return a.name < b.name; });
+    return list;
 }
 
 std::unique_ptr<Integrator> makeIntegrator(const std::string& name) {
-    if (name == "eyelight") return std::make_unique<EyeLight>();
-    if (name == "normals") return std::make_unique<NormalView>();
+    for (const IntegratorInfo& i : registry())
+        if (i.name == name) return i.make();
     std::string known;
     for (const auto& i : integratorList()) known += (known.empty() ? "" : ", ") + i.name;
     throw InputError("unknown algorithm '" + name + "' (known: " + known + ")");

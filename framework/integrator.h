@@ -32,10 +32,18 @@ public:
 
 struct IntegratorInfo {
     std::string name, description;
+    std::unique_ptr<Integrator> (*make)();
 };
-// The integrators the render command knows.
+// Adds an integrator to the list the render command knows; returns true. Lessons register
+// theirs with PS_REGISTER_INTEGRATOR at namespace scope in their .cpp file.
+bool registerIntegrator(const IntegratorInfo& info);
+// The integrators the render command knows, sorted by name.
 std::vector<IntegratorInfo> integratorList();
 // Throws InputError naming the unknown algorithm and the known ones.
 std::unique_ptr<Integrator> makeIntegrator(const std::string& name);
+
+#define PS_REGISTER_INTEGRATOR(Type, name, description)                                          \
+    static const bool psRegistered_##Type = ::ps::registerIntegrator(                            \
+        {name, description, []() -> std::unique_ptr<::ps::Integrator> { return std::make_unique<Type>(); }})
 
 }  // namespace ps

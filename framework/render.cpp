@@ -27,6 +27,9 @@ void drawProgress(int done, int total, double seconds, double budget) {
 
 RenderResult render(const Scene& scene, Integrator& integrator, const RenderOptions& opt) {
     if (opt.threads > 0) omp_set_num_threads(opt.threads);
+    // Rays traced before this render (by any thread) are not this render's: discard their count.
+#pragma omp parallel
+    takeRayCount();
     RenderResult res;
     res.film = Film(scene.camera.width(), scene.camera.height());
     if (opt.csv && opt.reference) *opt.csv << kErrorCsvHeader << "\n";

@@ -25,6 +25,7 @@ struct RenderSettings {
     int spp = 16;
     int maxDepth = 8;          // maximum number of bounces; 0 = only emission seen directly
     std::string algo = "eyelight";
+    int algoLine = 0;          // the scene file line that set algo (for messages), 0 if none
 };
 
 // What a scene has, recorded at load time so integrators can leave out what it does not need.

@@ -28,9 +28,18 @@ struct Statement {
     static float toFloat(const Statement& st, const std::string& tok, const std::string& what) {
         float v = 0.0f;
         auto [end, ec] = std::from_chars(tok.data(), tok.data() + tok.size(), v);
+        if (ec == std::errc::result_out_of_range)
+            st.fail("number '" + tok + "' for " + what + " is out of range (beyond float)");
         if (ec != std::errc() || end != tok.data() + tok.size())
             st.fail("malformed number '" + tok + "' for " + what);
         if (!std::isfinite(v)) st.fail("'" + tok + "' for " + what + " is not a finite number");
+        return v;
+    }
+    static int toInt(const Statement& st, const std::string& tok, const std::string& what) {
+        int v = 0;
+        auto [end, ec] = std::from_chars(tok.data(), tok.data() + tok.size(), v);
+        if (ec != std::errc() || end != tok.data() + tok.size())
+            st.fail("malformed integer '" + tok + "' for " + what);
         return v;
     }
     float number(const std::string& what) { return toFloat(*this, word(what), what); }
@@ -49,8 +58,12 @@ struct Statement {
             if (options.count(key)) fail("option '" + key + "' given twice");
             std::vector<std::string> values;
             for (int i = 0; i < it->second; ++i) {
-                if (pos >= tokens.size())
-                    fail("option '" + key + "' needs " + std::to_string(it->second) + " value(s)");
+                // Too few values: the line ends, or (for numeric options) the next option's name comes.
+                const bool nextKey = pos < tokens.size() && key != "material" && key != "algo" &&
+                                     arity.count(tokens[pos]) > 0;
+                if (pos >= tokens.size() || nextKey)
+                    fail("option '" + key + "' needs " + std::to_string(it->second) + " value(s), got " +
+                         std::to_string(i) + (nextKey ? " before '" + tokens[pos] + "'" : ""));
                 values.push_back(tokens[pos++]);
             }
             options[key] = values;
@@ -70,18 +83,19 @@ struct Statement {
         return Vec3(toFloat(*this, v[0], what), toFloat(*this, v[1], what), toFloat(*this, v[2], what));
     }
     int optInt(const std::string& key, int def) const {
-        if (!has(key)) return def;
-        const std::string& tok = options.at(key)[0];
-        int v = 0;
-        auto [end, ec] = std::from_chars(tok.data(), tok.data() + tok.size(), v);
-        if (ec != std::errc() || end != tok.data() + tok.size())
-            fail("malformed integer '" + tok + "' for '" + key + "'");
-        return v;
+        return has(key) ? toInt(*this, options.at(key)[0], "'" + key + "'") : def;
     }
     std::string optWord(const std::string& key, const std::string& def) const {
         return has(key) ? options.at(key)[0] : def;
     }
 };
+
+// tinyobjloader's multi-line messages as one line.
+std::string oneLine(std::string msg) {
+    while (!msg.empty() && (msg.back() == '\n' || msg.back() == '\r' || msg.back() == ' ')) msg.pop_back();
+    for (size_t i; (i = msg.find('\n')) != std::string::npos;) msg.replace(i, 1, "; ");
+    return msg;
+}
 
 std::string folderOf(const std::string& path) {
     size_t slash = path.find_last_of('/');
@@ -149,11 +163,12 @@ private:
         const Vec3 up = st.optVec3("up", Vec3(0, 1, 0));
         const float fov = st.optNumber("fov", 0.0f);
         const auto& res = st.options.at("resolution");
-        Statement tmp = st;
-        tmp.options = {{"w", {res[0]}}, {"h", {res[1]}}};
-        const int w = tmp.optInt("w", 0), h = tmp.optInt("h", 0);
-        if (!(fov > 0.0f && fov < 180.0f)) st.fail("'fov' must be between 0 and 180 degrees");
-        if (w < 1 || h < 1 || w > 16384 || h > 16384) st.fail("'resolution' must be between 1 and 16384 pixels");
+        const int w = Statement::toInt(st, res[0], "'resolution' (width)");
+        const int h = Statement::toInt(st, res[1], "'resolution' (height)");
+        if (!(fov > 0.0f && fov < 180.0f))
+            st.fail("'fov' must be between 0 and 180 degrees (exclusive), got " + st.options.at("fov")[0]);
+        if (w < 1 || h < 1 || w > 16384 || h > 16384)
+            st.fail("'resolution' must be between 1 and 16384 pixels in each direction, got " + res[0] + " " + res[1]);
         if (!(glm::length(target - eye) > 0.0f)) st.fail("'eye' and 'target' are the same point");
         const Vec3 f = glm::normalize(target - eye);
         if (!(glm::length(glm::cross(f, up)) > 1e-6f * glm::length(up))) st.fail("'up' is parallel to the view direction");
@@ -164,7 +179,10 @@ private:
     void material(Statement& st) {
         const std::string name = st.word("a name");
         const std::string type = st.word("a type (diffuse, phong, mirror, dielectric)");
-        if (materialIndex_.count(name)) st.fail("material '" + name + "' is defined twice");
+        if (name[0] == '(') st.fail("material name '" + name + "': names starting with '(' are the loader's own");
+        if (materialIndex_.count(name))
+            st.fail("material '" + name + "' is defined twice (first on line " + std::to_string(materialLine_[name]) + ")");
+        materialLine_[name] = st.line;
         Material m;
         m.name = name;
         if (type == "diffuse") {
@@ -256,7 +274,7 @@ private:
         Sphere s;
         s.center = st.optVec3("center", Vec3());
         s.radius = st.optNumber("radius", 0.0f);
-        if (s.radius < 0.0f) st.fail("negative radius " + st.options.at("radius")[0]);
+        if (s.radius < 0.0f) st.fail("negative radius " + st.options.at("radius")[0] + " (a sphere's radius must be positive)");
         if (!(s.radius > 0.0f)) st.fail("'radius' must be positive");
         int material, light;
         shapeMaterial(st, material, light);
@@ -279,9 +297,18 @@ private:
         int material, light;
         shapeMaterial(st, material, light);
         for (int i = 1; i + 1 < corners; ++i) {
-            if (isDegenerate(v[0], v[i], v[i + 1])) st.fail("degenerate triangle (zero area)");
-            addTriangle({v[0], v[i], v[i + 1]}, material, light);
+            if (isDegenerate(v[0], v[i], v[i + 1]))
+                st.fail(corners == 3 ? std::string("degenerate triangle: its corners coincide or lie on a line (zero area)")
+                                     : "degenerate quad: corners 1, " + std::to_string(i + 1) + ", " + std::to_string(i + 2) +
+                                           " coincide or lie on a line (zero area)");
         }
+        // The halves (1,2,3) and (1,3,4) of a quad must face the same way; they do not if the
+        // corners are not in order around the quad (a bow tie) or it is concave at corner 2 or 4.
+        if (corners == 4 && glm::dot(glm::normalize(glm::cross(v[1] - v[0], v[2] - v[0])),
+                                     glm::normalize(glm::cross(v[2] - v[0], v[3] - v[0]))) <= 0.0f)
+            st.fail("the quad's halves (corners 1-2-3 and 1-3-4) face opposite ways: its corners are not in order "
+                    "around its edge, or it is concave at corner 2 or 4 (start at the concave corner)");
+        for (int i = 1; i + 1 < corners; ++i) addTriangle({v[0], v[i], v[i + 1]}, material, light);
     }
 
     void mesh(Statement& st) {
@@ -290,8 +317,12 @@ private:
         const float scale = st.optNumber("scale", 1.0f);
         if (!(scale > 0.0f)) st.fail("'scale' must be positive");
         const Vec3 translate = st.optVec3("translate", Vec3(0.0f));
-        const std::string objPath = folderOf(path_) + file;
+        const std::string objPath = (!file.empty() && file[0] == '/') ? file : folderOf(path_) + file;
         if (!std::ifstream(objPath)) st.fail("cannot open mesh file '" + objPath + "'");
+        const std::string meshOf = " (mesh of " + path_ + ":" + std::to_string(st.line) + ")";
+        // Our own pass first: tinyobjloader reads malformed numbers as 0 and drops short faces
+        // without a word; this reports them, and gives each face its line for later messages.
+        const std::vector<int> faceLines = scanObj(objPath, meshOf);
 
         tinyobj::attrib_t attrib;
         std::vector<tinyobj::shape_t> shapes;
@@ -300,14 +331,12 @@ private:
         const bool ok = tinyobj::LoadObj(&attrib, &shapes, &mtls, &warn, &err, objPath.c_str(),
                                          folderOf(objPath).c_str(), /*triangulate=*/false);
         if (!ok || !err.empty()) {
-            std::string msg = err.empty() ? warn : err;
-            while (!msg.empty() && (msg.back() == '\n' || msg.back() == '\r')) msg.pop_back();
-            throw InputError(objPath, 0, "cannot read OBJ: " + msg + " (mesh of " + path_ + ":" + std::to_string(st.line) + ")");
+            throw InputError(objPath, 0, "cannot read OBJ: " + oneLine(err.empty() ? warn : err) + meshOf);
         }
-        const std::vector<int> faceLines = objFaceLines(objPath);
+        warn = oneLine(warn);
         auto objFail = [&](size_t face, const std::string& problem) {
             const int line = face < faceLines.size() ? faceLines[face] : 0;
-            throw InputError(objPath, line, problem + " (mesh of " + path_ + ":" + std::to_string(st.line) + ")");
+            throw InputError(objPath, line, problem + meshOf);
         };
 
         // The scene's material and emission, or, without 'material', the MTL's Kd and Ke.
@@ -317,7 +346,8 @@ private:
         auto mtlMaterial = [&](int id, size_t face) -> std::pair<int, int> {
             if (sceneMaterial >= 0) return {sceneMaterial, sceneLight};
             if (id < 0 || id >= static_cast<int>(mtls.size()))
-                objFail(face, "face has no material: give the mesh a 'material' in the scene, or the OBJ an MTL file");
+                objFail(face, "face has no material: give the mesh a 'material' in the scene, or the OBJ an MTL file" +
+                                  (warn.empty() ? std::string() : " [tinyobjloader: " + warn + "]"));
             auto it = fromMtl.find(id);
             if (it != fromMtl.end()) return it->second;
             const tinyobj::material_t& tm = mtls[id];
@@ -351,7 +381,10 @@ private:
                 std::vector<Vec3> v;
                 for (int k = 0; k < n; ++k) {
                     const int vi = shape.mesh.indices[idx + k].vertex_index;
-                    if (vi < 0 || static_cast<size_t>(vi) >= nVerts)
+                    if (vi < 0)
+                        objFail(face, "relative vertex index points before the first vertex (the file has " +
+                                          std::to_string(nVerts) + " vertices)");
+                    if (static_cast<size_t>(vi) >= nVerts)
                         objFail(face, "vertex index " + std::to_string(vi + 1) + " out of range (the file has " +
                                           std::to_string(nVerts) + " vertices)");
                     v.push_back(Vec3(attrib.vertices[3 * vi], attrib.vertices[3 * vi + 1], attrib.vertices[3 * vi + 2]) *
@@ -361,24 +394,49 @@ private:
                 const int mtlId = f < shape.mesh.material_ids.size() ? shape.mesh.material_ids[f] : -1;
                 const auto [material, light] = mtlMaterial(mtlId, face);
                 for (int k = 1; k + 1 < n; ++k) {   // fan triangulation
-                    if (isDegenerate(v[0], v[k], v[k + 1])) objFail(face, "degenerate triangle (zero area)");
+                    if (isDegenerate(v[0], v[k], v[k + 1]))
+                        objFail(face, "degenerate face: its corners coincide or lie on a line (zero area)");
                     addTriangle({v[0], v[k], v[k + 1]}, material, light);
                     ++added;
                 }
             }
         }
-        if (added == 0) throw InputError(objPath, 0, "empty mesh: no faces (mesh of " + path_ + ":" + std::to_string(st.line) + ")");
+        if (added == 0) throw InputError(objPath, 0, "empty mesh: no faces" + meshOf);
     }
 
-    // Line numbers of the OBJ's faces, in order, for messages about a face.
-    static std::vector<int> objFaceLines(const std::string& objPath) {
+    // Checks what tinyobjloader lets pass (a 'v' line's numbers, a face's vertex count and
+    // indices) and returns the line numbers of the OBJ's faces, in order, for later messages.
+    static std::vector<int> scanObj(const std::string& objPath, const std::string& meshOf) {
         std::vector<int> lines;
         std::ifstream in(objPath);
         std::string s;
         for (int n = 1; std::getline(in, s); ++n) {
-            size_t i = s.find_first_not_of(" \t");
-            if (i != std::string::npos && s[i] == 'f' && i + 1 < s.size() && (s[i + 1] == ' ' || s[i + 1] == '\t'))
+            if (size_t hash = s.find('#'); hash != std::string::npos) s.resize(hash);
+            std::istringstream ls(s);
+            std::vector<std::string> tok;
+            for (std::string t; ls >> t;) tok.push_back(t);
+            if (tok.empty()) continue;
+            auto fail = [&](const std::string& problem) { throw InputError(objPath, n, problem + meshOf); };
+            if (tok[0] == "v") {
+                if (tok.size() < 4) fail("vertex with " + std::to_string(tok.size() - 1) + " coordinates (needs x y z)");
+                for (size_t k = 1; k < 4; ++k) {
+                    float x = 0.0f;
+                    auto [end, ec] = std::from_chars(tok[k].data(), tok[k].data() + tok[k].size(), x);
+                    if (ec != std::errc() || end != tok[k].data() + tok[k].size() || !std::isfinite(x))
+                        fail("malformed or non-finite vertex coordinate '" + tok[k] + "'");
+                }
+            } else if (tok[0] == "f") {
+                if (tok.size() < 4)
+                    fail("face with " + std::to_string(tok.size() - 1) + " vertices (a face needs at least 3)");
+                for (size_t k = 1; k < tok.size(); ++k) {
+                    const std::string idx = tok[k].substr(0, tok[k].find('/'));
+                    int i = 0;
+                    auto [end, ec] = std::from_chars(idx.data(), idx.data() + idx.size(), i);
+                    if (ec != std::errc() || end != idx.data() + idx.size() || i == 0)
+                        fail("malformed vertex index '" + tok[k] + "' (OBJ indices are 1, 2, ... or -1, -2, ...)");
+                }
                 lines.push_back(n);
+            }
         }
         return lines;
     }
@@ -411,6 +469,7 @@ private:
         s.spp = st.optInt("spp", s.spp);
         s.maxDepth = st.optInt("maxdepth", s.maxDepth);
         s.algo = st.optWord("algo", s.algo);
+        if (st.has("algo")) s.algoLine = st.line;
         if (s.spp < 1) st.fail("'spp' must be at least 1");
         if (s.maxDepth < 0) st.fail("'maxdepth' must not be negative");
     }
@@ -418,6 +477,7 @@ private:
     Scene& scene_;
     std::string path_;
     std::map<std::string, int> materialIndex_;
+    std::map<std::string, int> materialLine_;   // where each material of the scene file is defined
     bool haveCamera_ = false, haveBackground_ = false;
 };
 

@@ -7,8 +7,8 @@ namespace ps {
 
 namespace {
 constexpr float kTwoPi = 2.0f * kPi;
-// Angle of (x, y) in [0, 1) turns.
-float turns(float x, float y) {
+// Angle of (x, y) in [0, 1) turns (for the inverses).
+[[maybe_unused]] float turns(float x, float y) {
     float t = std::atan2(y, x) / kTwoPi;
     return t < 0.0f ? t + 1.0f : (t >= 1.0f ? 0.0f : t);
 }
@@ -34,7 +34,8 @@ float uniformSpherePdf() {
 }
 
 Vec2 invertUniformSphere(const Vec3& w) {
-    //! TODO(01) Invert Eq. 1.8: u.x from z, u.y from the angle phi in [0, 1) turns.
+    //! TODO(01) Invert Eq. 1.8: u.x from z; u.y = phi / (2 pi) in [0, 1), which turns(w.x, w.y)
+    //!          above computes.
     //! STUB (void)w;
     //! STUB return PS_TODO("lesson 01: invertUniformSphere", Vec2(0.0f));
     //! BEGIN
@@ -63,7 +64,7 @@ float uniformHemispherePdf(const Vec3& w) {
 }
 
 Vec2 invertUniformHemisphere(const Vec3& w) {
-    //! TODO(01) Invert Eq. 1.9.
+    //! TODO(01) Invert Eq. 1.9: u.x from z, u.y = turns(w.x, w.y).
     //! STUB (void)w;
     //! STUB return PS_TODO("lesson 01: invertUniformHemisphere", Vec2(0.0f));
     //! BEGIN
@@ -177,7 +178,8 @@ float phongLobePdf(const Vec3& w, float exponent) {
 }
 
 Vec2 invertPhongLobe(const Vec3& w, float exponent) {
-    //! TODO(01) Invert Eq. 1.12.
+    //! TODO(01) Invert Eq. 1.12: u.x = 1 - cos^(n+1)(alpha) with cos(alpha) = w.z,
+    //!          u.y = turns(w.x, w.y).
     //! STUB (void)w; (void)exponent;
     //! STUB return PS_TODO("lesson 01: invertPhongLobe", Vec2(0.0f));
     //! BEGIN
@@ -186,7 +188,8 @@ Vec2 invertPhongLobe(const Vec3& w, float exponent) {
 }
 
 Vec2 sampleUniformTriangle(const Vec2& u) {
-    //! TODO(01) Map u to uniform barycentric weights by Eq. 1.13; return (b1, b2).
+    //! TODO(01) Eq. 1.13: s = sqrt(u.x) is how far across the triangle (from the first corner)
+    //!          the point lies, u.y where along that segment; return (b1, b2) = s (1 - u.y, u.y).
     //! STUB (void)u;
     //! STUB return PS_TODO("lesson 01: sampleUniformTriangle", Vec2(0.0f));
     //! BEGIN
@@ -196,7 +199,8 @@ Vec2 sampleUniformTriangle(const Vec2& u) {
 }
 
 Vec2 invertUniformTriangle(const Vec2& b) {
-    //! TODO(01) Invert Eq. 1.13.
+    //! TODO(01) Invert Eq. 1.13: s = b1 + b2 gives u.x = s^2 and u.y = b2 / s (u.y = 0 when
+    //!          s = 0).
     //! STUB (void)b;
     //! STUB return PS_TODO("lesson 01: invertUniformTriangle", Vec2(0.0f));
     //! BEGIN

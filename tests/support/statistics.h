@@ -84,4 +84,11 @@ struct ZTestResult {
 ZTestResult zTestImages(const Image& a, const Image& varA, const Image& b, const Image& varB, double alpha,
                         double requiredFraction = 0.9975, double varianceFloor = 1e-8);
 
+// Integral of f over the unit sphere (per unit solid angle) or over the rectangle [lo, hi] (per unit
+// area), by the adaptive Gauss-Legendre cubature the chi-square tests use for their expected
+// counts; NaN if f is NaN, Inf or negative anywhere it is evaluated. For "pdf integrates to 1"
+// checks; accuracy documented in statistics.cpp (peaked lobes to ~1e-9).
+double integrateSphere(const std::function<double(const Vec3&)>& f);
+double integratePlanar(const std::function<double(const Vec2&)>& f, const Vec2& lo, const Vec2& hi);
+
 }  // namespace ps::stats

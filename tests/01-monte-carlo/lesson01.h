@@ -1,0 +1,107 @@
+// Shared by lesson 1's graded tests: the warps under test as uniform records, the significance
+// level, where failing chi-square tests dump their tables, and printing helpers.
+#pragma once
+#include <filesystem>
+#include <functional>
+#include <sstream>
+#include <string>
+#include <vector>
+#include "math.h"
+#include "statistics.h"
+#include "warps.h"
+
+namespace lesson01 {
+
+using ps::Vec2;
+using ps::Vec3;
+
+// Statistical tests in this suite (chi-square and t-tests; every other check is deterministic
+// or has a tolerance far outside the noise):
+//   chi-square: uniform sphere, uniform hemisphere, concentric disk, cosine hemisphere,
+//               Phong lobe n = 0, 1, 10, uniform triangle                          -> 8
+//   t-tests:    plain (2 integrals), stratified (2), importance (2), 2D plain and
+//               stratified (2)                                                      -> 8
+// m = 16; each test runs at the Sidak level alpha' = 1 - (1 - 0.01)^(1/16) ~ 6.3e-4, so a correct
+// implementation (whatever order it draws its random numbers in) fails any of them with
+// probability at most 1 %.
+constexpr int kStatisticalTests = 16;
+inline double alpha() { return ps::stats::sidak(0.01, kStatisticalTests); }
+
+// Where a failing chi-square test writes its observed and expected tables.
+inline std::string dumpPath(const std::string& name) {
+    const std::filesystem::path dir = std::filesystem::path(PATHSPACE_BINARY_DIR) / "lesson-01";
+    std::error_code ec;
+    std::filesystem::create_directories(dir, ec);
+    return (dir / ("chi2-" + name + ".txt")).string();
+}
+
+inline std::string num(double x) {
+    std::ostringstream s;
+    s.precision(7);
+    s << x;
+    return s.str();
+}
+inline std::string str(const Vec2& v) {
+    std::ostringstream s;
+    s.precision(9);
+    s << "(" << v.x << ", " << v.y << ")";
+    return s.str();
+}
+inline std::string str(const Vec3& v) {
+    std::ostringstream s;
+    s.precision(9);
+    s << "(" << v.x << ", " << v.y << ", " << v.z << ")";
+    return s.str();
+}
+
+// A warp to directions, with its pdf per unit solid angle and its inverse.
+struct SphereWarp {
+    std::string name;
+    std::function<Vec3(const Vec2&)> sample;
+    std::function<float(const Vec3&)> pdf;
+    std::function<Vec2(const Vec3&)> invert;
+    bool hemisphere;   // the pdf is 0 below the horizon z = 0
+};
+
+inline SphereWarp phongWarp(float n) {
+    std::ostringstream name;
+    name << "Phong lobe (exponent " << n << ")";
+    return {name.str(), [n](const Vec2& u) { return ps::samplePhongLobe(u, n); },
+            [n](const Vec3& w) { return ps::phongLobePdf(w, n); },
+            [n](const Vec3& w) { return ps::invertPhongLobe(w, n); }, true};
+}
+
+// The direction warps; Phong lobes for the given exponents.
+inline std::vector<SphereWarp> sphereWarps(const std::vector<float>& phongExponents) {
+    std::vector<SphereWarp> w = {
+        {"uniform sphere", ps::sampleUniformSphere, [](const Vec3&) { return ps::uniformSpherePdf(); },
+         ps::invertUniformSphere, false},
+        {"uniform hemisphere", ps::sampleUniformHemisphere, ps::uniformHemispherePdf, ps::invertUniformHemisphere,
+         true},
+        {"cosine hemisphere", ps::sampleCosineHemisphere, ps::cosineHemispherePdf, ps::invertCosineHemisphere,
+         true},
+    };
+    for (float n : phongExponents) w.push_back(phongWarp(n));
+    return w;
+}
+
+// A warp to points in the plane, with its pdf per unit area and its inverse.
+struct PlanarWarp {
+    std::string name;
+    std::function<Vec2(const Vec2&)> sample;
+    std::function<float(const Vec2&)> pdf;
+    std::function<Vec2(const Vec2&)> invert;
+};
+
+// The triangle warp returns barycentrics (b1, b2); over that domain the uniform pdf is 2
+// (Eq. 1.13). The interface has no pdf function for it: this is the pdf it must have.
+inline float trianglePdf(const Vec2& b) { return b.x >= 0.0f && b.y >= 0.0f && b.x + b.y <= 1.0f ? 2.0f : 0.0f; }
+
+inline std::vector<PlanarWarp> planarWarps() {
+    return {
+        {"concentric disk", ps::sampleConcentricDisk, ps::concentricDiskPdf, ps::invertConcentricDisk},
+        {"uniform triangle", ps::sampleUniformTriangle, trianglePdf, ps::invertUniformTriangle},
+    };
+}
+
+}  // namespace lesson01

@@ -1,0 +1,310 @@
+// Tests of framework/bvh.h through Scene::intersect / Scene::occluded: the BVH must return
+// exactly what a brute-force loop over all primitives returns.
+#include <doctest/doctest.h>
+#include <cmath>
+#include <numeric>
+#include <string>
+#include <vector>
+#include "rng.h"
+#include "scene.h"
+
+using namespace ps;
+
+namespace {
+
+Vec3 randomUnit(Rng& rng) {
+    const float z = 1.0f - 2.0f * rng.uniform(), r = std::sqrt(std::max(0.0f, 1.0f - z * z));
+    const float phi = 2.0f * kPi * rng.uniform();
+    return Vec3(r * std::cos(phi), r * std::sin(phi), z);
+}
+Vec3 randomIn(Rng& rng, const Vec3& lo, const Vec3& hi) {
+    return lo + (hi - lo) * Vec3(rng.uniform(), rng.uniform(), rng.uniform());
+}
+
+// A scene of the given triangles and spheres, one diffuse material, no lights.
+Scene makeScene(const std::vector<Triangle>& tris, const std::vector<Sphere>& spheres) {
+    Scene s;
+    Material m;
+    m.kind = BSDFKind::Diffuse;
+    s.materials.push_back(m);
+    s.triangles = tris;
+    s.spheres = spheres;
+    for (uint32_t i = 0; i < tris.size(); ++i) s.prims.push_back({ShapeKind::Triangle, i, 0, -1});
+    for (uint32_t i = 0; i < spheres.size(); ++i) s.prims.push_back({ShapeKind::Sphere, i, 0, -1});
+    s.camera = Camera(Vec3(0, 0, -10), Vec3(0, 0, 0), Vec3(0, 1, 0), 40.0f, 8, 8);
+    s.finalize();
+    return s;
+}
+
+// The closest hit by testing every primitive with the full ray: prim index and t.
+struct BruteHit { uint32_t prim = kNoPrimitive; float t = kInf; };
+BruteHit bruteClosest(const Scene& s, const Ray& ray) {
+    const WatertightRay wr(ray);
+    BruteHit best;
+    for (uint32_t i = 0; i < s.prims.size(); ++i) {
+        if (i == ray.ignorePrim) continue;
+        const Primitive& p = s.prims[i];
+        float t, b1, b2;
+        const bool hit = p.shape == ShapeKind::Triangle ? intersectTriangle(ray, wr, s.triangles[p.index], t, b1, b2)
+                                                        : intersectSphere(ray, s.spheres[p.index], t);
+        if (hit && t < best.t) { best.t = t; best.prim = i; }
+    }
+    return best;
+}
+
+// Compares Scene::intersect and Scene::occluded with brute force for one ray; returns the
+// number of disagreements (and reports the first few).
+int compareRay(const Scene& s, const Ray& ray, int& reported) {
+    const BruteHit ref = bruteClosest(s, ray);
+    Ray r = ray;
+    SurfacePoint sp;
+    const bool hit = s.intersect(r, sp);
+    const bool occ = s.occluded(ray);
+    int bad = 0;
+    const bool refHit = ref.prim != kNoPrimitive;
+    std::string what;
+    if (hit != refHit) { ++bad; what = "closest: hit " + std::to_string(hit) + " vs brute force " + std::to_string(refHit); }
+    else if (hit) {
+        // t must match bit for bit (the same primitive test); a different primitive only when its
+        // t is the same (coincident or touching primitives).
+        if (r.tMax != ref.t) { ++bad; what = "t " + std::to_string(r.tMax) + " vs brute force " + std::to_string(ref.t); }
+        else if (sp.prim != ref.prim && bruteClosest(s, Ray(ray.o, ray.d, kInf, ref.prim)).t != ref.t) {
+            ++bad;   // a different primitive must be one with the same t (brute force without ref.prim finds it)
+            what = "a different primitive at the same t that brute force does not see there";
+        }
+    }
+    if (occ != refHit) { ++bad; what += " occluded " + std::to_string(occ) + " vs brute force " + std::to_string(refHit); }
+    if (bad && reported++ < 5)
+        FAIL_CHECK("ray o = (" << ray.o.x << ", " << ray.o.y << ", " << ray.o.z << ") d = (" << ray.d.x << ", " << ray.d.y
+                               << ", " << ray.d.z << ") tMax " << ray.tMax << ": " << what << " (BVH prim " << sp.prim
+                               << ", brute-force prim " << ref.prim << ")");
+    return bad;
+}
+
+// Rays for a scene inside box [lo, hi]: half aimed at a random point of a random primitive,
+// half random; some with a finite tMax, some ignoring a primitive.
+std::vector<Ray> makeRays(const Scene& s, int n, Rng& rng) {
+    std::vector<Ray> rays;
+    const Vec3 lo = s.bounds.lo, hi = s.bounds.hi, ext = hi - lo;
+    for (int k = 0; k < n; ++k) {
+        Ray r;
+        if (k % 2 == 0 && !s.prims.empty()) {
+            const uint32_t pi = rng.nextU32() % s.prims.size();
+            const Primitive& p = s.prims[pi];
+            Vec3 target;
+            if (p.shape == ShapeKind::Triangle) {
+                const Triangle& t = s.triangles[p.index];
+                const float b1 = rng.uniform(), b2 = (1.0f - b1) * rng.uniform();
+                target = (1.0f - b1 - b2) * t.p0 + b1 * t.p1 + b2 * t.p2;
+            } else {
+                target = s.spheres[p.index].center + s.spheres[p.index].radius * randomUnit(rng);
+            }
+            r.o = randomIn(rng, lo - 0.5f * ext, hi + 0.5f * ext);
+            const Vec3 d = target - r.o;
+            if (glm::length(d) == 0.0f) continue;
+            r.d = glm::normalize(d);
+            if (k % 6 == 0) r.ignorePrim = pi;
+        } else {
+            r.o = randomIn(rng, lo - 0.2f * ext, hi + 0.2f * ext);
+            r.d = randomUnit(rng);
+        }
+        if (k % 5 == 0) r.tMax = glm::length(ext) * rng.uniform();
+        rays.push_back(r);
+    }
+    return rays;
+}
+
+int compareAll(const Scene& s, const std::vector<Ray>& rays) {
+    int bad = 0, reported = 0;
+    for (const Ray& r : rays) bad += compareRay(s, r, reported);
+    return bad;
+}
+
+std::vector<Triangle> randomSoup(int n, float size, Rng& rng) {
+    std::vector<Triangle> tris;
+    for (int i = 0; i < n; ++i) {
+        const Vec3 c = randomIn(rng, Vec3(-10), Vec3(10));
+        tris.push_back({c + size * randomUnit(rng), c + size * randomUnit(rng), c + size * randomUnit(rng)});
+    }
+    return tris;
+}
+
+// Every node's box holds its children's boxes (inner) or its primitives' boxes (leaf), and
+// primIndex is a permutation of 0..n-1.
+void checkStructure(const Scene& s) {
+    const BVH& bvh = s.bvh;
+    std::vector<uint32_t> seen(s.prims.size(), 0);
+    auto contains = [](const AABB& outer, const AABB& inner) {
+        return glm::all(glm::lessThanEqual(outer.lo, inner.lo)) && glm::all(glm::greaterThanEqual(outer.hi, inner.hi));
+    };
+    int badBoxes = 0;
+    for (const BVHNode& n : bvh.nodes()) {
+        if (n.count == 0) {
+            badBoxes += !contains(n.box, bvh.nodes()[n.first].box) + !contains(n.box, bvh.nodes()[n.first + 1].box);
+        } else {
+            for (uint32_t i = n.first; i < n.first + n.count; ++i) {
+                const uint32_t p = bvh.primIndex()[i];
+                ++seen[p];
+                const Primitive& pr = s.prims[p];
+                badBoxes += !contains(n.box, pr.shape == ShapeKind::Triangle ? s.triangles[pr.index].bounds()
+                                                                             : s.spheres[pr.index].bounds());
+            }
+        }
+    }
+    CHECK_MESSAGE(badBoxes == 0, "expected every node box to hold its contents, got " << badBoxes << " that do not");
+    int wrongCount = 0;
+    for (uint32_t c : seen) wrongCount += c != 1;
+    CHECK_MESSAGE(wrongCount == 0, "expected each primitive in exactly one leaf, got " << wrongCount << " that are not");
+    CHECK(bvh.depth() <= BVH::kMaxDepth);
+}
+
+}  // namespace
+
+TEST_CASE("bvh: closest and any hit equal brute force on random triangle soups") {
+    Rng rng(101);
+    for (int n : {1, 2, 10, 1000, 20000}) {
+        const Scene s = makeScene(randomSoup(n, n > 100 ? 0.5f : 3.0f, rng), {});
+        INFO("soup of " << n << " triangles");
+        checkStructure(s);
+        const int bad = compareAll(s, makeRays(s, n >= 20000 ? 1500 : 4000, rng));
+        CHECK_MESSAGE(bad == 0, "expected 0 disagreements with brute force, got " << bad);
+    }
+}
+
+TEST_CASE("bvh: identical, overlapping and centroid-sharing triangles") {
+    Rng rng(202);
+    SUBCASE("500 copies of one triangle plus 500 overlapping ones") {
+        std::vector<Triangle> tris(500, Triangle{Vec3(-1, -1, 0), Vec3(1, -1, 0), Vec3(0, 1, 0)});
+        for (int i = 0; i < 500; ++i) {   // the same plane, shifted in it
+            const Vec3 o(0.1f * rng.uniform(), 0.1f * rng.uniform(), 0.0f);
+            tris.push_back({Vec3(-1, -1, 0) + o, Vec3(1, -1, 0) + o, Vec3(0, 1, 0) + o});
+        }
+        const Scene s = makeScene(tris, {});
+        checkStructure(s);
+        const int bad = compareAll(s, makeRays(s, 3000, rng));
+        CHECK_MESSAGE(bad == 0, "expected 0 disagreements with brute force, got " << bad);
+    }
+    SUBCASE("3000 triangles of different shapes whose centroids all coincide") {
+        std::vector<Triangle> tris;
+        const Vec3 c(1.5f, -2.0f, 0.25f);
+        for (int i = 0; i < 3000; ++i) {
+            const Vec3 a = randomUnit(rng) * (0.1f + 3.0f * rng.uniform()), b = randomUnit(rng) * (0.1f + 3.0f * rng.uniform());
+            tris.push_back({c + a, c + b, c - a - b});   // centroid exactly c (up to rounding)
+        }
+        const Scene s = makeScene(tris, {});
+        checkStructure(s);
+        const int bad = compareAll(s, makeRays(s, 2000, rng));
+        CHECK_MESSAGE(bad == 0, "expected 0 disagreements with brute force, got " << bad);
+    }
+    SUBCASE("exponentially spaced triangles (a deep, unbalanced tree)") {
+        std::vector<Triangle> tris;
+        for (int i = 0; i < 600; ++i) {
+            const float x = std::pow(1.12f, static_cast<float>(i)) - 1.0f, h = 0.05f * (x + 1.0f);
+            tris.push_back({Vec3(x, -h, -h), Vec3(x, h, -h), Vec3(x + h, 0, h)});
+        }
+        const Scene s = makeScene(tris, {});
+        checkStructure(s);
+        std::vector<Ray> rays;
+        for (int k = 0; k < 2000; ++k) {   // rays along the row, from random starts, both ways
+            const float x0 = std::pow(1.12f, 600.0f * rng.uniform()) - 1.0f;
+            const Vec3 d = glm::normalize(Vec3(k % 2 ? 1.0f : -1.0f, 0.001f * (rng.uniform() - 0.5f), 0.001f * (rng.uniform() - 0.5f)));
+            rays.emplace_back(Vec3(x0, 0.01f * (rng.uniform() - 0.5f), 0.0f), d);
+        }
+        const int bad = compareAll(s, rays);
+        CHECK_MESSAGE(bad == 0, "expected 0 disagreements with brute force, got " << bad);
+    }
+}
+
+TEST_CASE("bvh: axis-parallel rays, including rays in the planes of the boxes") {
+    // A grid of axis-aligned triangles with integer coordinates; rays along the axes (and along
+    // face diagonals, one zero component) starting at integer and half-integer coordinates, so
+    // many rays lie exactly in a box's bounding plane (0 * inf = NaN in the slab test).
+    std::vector<Triangle> tris;
+    for (int i = 0; i < 6; ++i)
+        for (int j = 0; j < 6; ++j) {
+            const float x = float(i), y = float(j);
+            tris.push_back({Vec3(x, y, 0), Vec3(x + 1, y, 0), Vec3(x, y + 1, 0)});       // in z = 0
+            tris.push_back({Vec3(x, 0, y), Vec3(x, 1, y), Vec3(x, 0, y + 1)});           // in x = i
+            tris.push_back({Vec3(0, x, y), Vec3(0, x, y + 1), Vec3(1, x, y)});           // in y = i
+        }
+    const Scene s = makeScene(tris, {});
+    const Vec3 dirs[] = {Vec3(1, 0, 0), Vec3(-1, 0, 0), Vec3(0, 1, 0), Vec3(0, -1, 0), Vec3(0, 0, 1), Vec3(0, 0, -1),
+                         glm::normalize(Vec3(1, 1, 0)), glm::normalize(Vec3(0, -1, 1)), glm::normalize(Vec3(1, 0, -1))};
+    std::vector<Ray> rays;
+    for (const Vec3& d : dirs)
+        for (int a = -1; a <= 14; ++a)
+            for (int b = -1; b <= 14; ++b)
+                for (float c : {-1.0f, 0.0f, 0.5f, 3.0f, 7.0f}) {
+                    const float u = 0.5f * a, v = 0.5f * b;
+                    // Start "behind" the grid along d, at (u, v) in the other two coordinates.
+                    Vec3 o = d.x != 0 ? Vec3(c - 4.0f * d.x, u, v) : d.y != 0 ? Vec3(u, c - 4.0f * d.y, v) : Vec3(u, v, c - 4.0f * d.z);
+                    rays.emplace_back(o, d);
+                }
+    int hits = 0;
+    for (const Ray& r : rays) { Ray rr = r; SurfacePoint sp; hits += s.intersect(rr, sp); }
+    CHECK(hits > 1000);   // the test is about rays that do hit
+    const int bad = compareAll(s, rays);
+    CHECK_MESSAGE(bad == 0, "expected 0 disagreements with brute force, got " << bad);
+}
+
+TEST_CASE("bvh: triangles mixed with spheres equal brute force") {
+    Rng rng(303);
+    std::vector<Triangle> tris = randomSoup(2000, 1.0f, rng);
+    std::vector<Sphere> spheres;
+    for (int i = 0; i < 300; ++i) spheres.push_back({randomIn(rng, Vec3(-10), Vec3(10)), 0.05f + 1.5f * rng.uniform()});
+    spheres.push_back({Vec3(0), 4.0f});   // a big one around many triangles: rays start inside it
+    const Scene s = makeScene(tris, spheres);
+    checkStructure(s);
+    const int bad = compareAll(s, makeRays(s, 6000, rng));
+    CHECK_MESSAGE(bad == 0, "expected 0 disagreements with brute force, got " << bad);
+}
+
+TEST_CASE("bvh: an empty scene has an empty BVH and nothing is hit") {
+    const Scene s = makeScene({}, {});
+    CHECK(s.bvh.nodes().empty());
+    CHECK(s.bvh.bounds().empty());
+    Ray r(Vec3(0), Vec3(0, 0, 1));
+    SurfacePoint sp;
+    CHECK_FALSE(s.intersect(r, sp));
+    CHECK(r.tMax == kInf);
+    CHECK_FALSE(s.occluded(r));
+    // And a BVH built directly over no boxes.
+    BVH bvh;
+    bvh.build({});
+    Ray r2(Vec3(0), Vec3(1, 0, 0));
+    CHECK_FALSE(bvh.traverse(r2, false, [](uint32_t, Ray&) { return true; }));
+}
+
+TEST_CASE("bvh: intersect reports the hit point, normal and material of the closest primitive") {
+    // Two parallel squares at z = 1 and z = 2 and a sphere at z = 5: a ray up the z axis hits
+    // z = 1 first, at p = (0.25, 0.25, 1) with the winding normal (0, 0, -1).
+    std::vector<Triangle> tris = {{Vec3(-1, -1, 1), Vec3(-1, 1, 1), Vec3(1, 1, 1)}, {Vec3(-1, -1, 1), Vec3(1, 1, 1), Vec3(1, -1, 1)},
+                                  {Vec3(-1, -1, 2), Vec3(1, -1, 2), Vec3(1, 1, 2)}, {Vec3(-1, -1, 2), Vec3(1, 1, 2), Vec3(-1, 1, 2)}};
+    const Scene s = makeScene(tris, {Sphere{Vec3(0, 0, 5), 1.0f}});
+    Ray r(Vec3(0.25f, 0.25f, -3), Vec3(0, 0, 1));
+    SurfacePoint sp;
+    REQUIRE(s.intersect(r, sp));
+    CHECK_MESSAGE(r.tMax == 4.0f, "t: expected 4, got " << r.tMax);
+    CHECK(sp.p.x == doctest::Approx(0.25f));
+    CHECK(sp.p.z == doctest::Approx(1.0f));
+    CHECK_MESSAGE(sp.n.z == doctest::Approx(-1.0f), "normal z: expected -1, got " << sp.n.z);
+    CHECK((sp.prim == 0 || sp.prim == 1));   // (0.25, 0.25) lies on their shared diagonal
+    CHECK(sp.material == 0);
+    // Ignoring that triangle, the ray passes through the shared diagonal and must still hit
+    // the first square via the other triangle (the point is on their shared edge).
+    Ray r2(Vec3(0.25f, 0.25f, -3), Vec3(0, 0, 1), kInf, sp.prim);
+    SurfacePoint sp2;
+    REQUIRE(s.intersect(r2, sp2));
+    CHECK_MESSAGE(r2.tMax == 4.0f, "t with the first triangle ignored: expected 4 (its neighbour), got " << r2.tMax);
+    // Off the diagonal: only one triangle; ignoring it reaches z = 2.
+    Ray r3(Vec3(0.5f, -0.25f, -3), Vec3(0, 0, 1));
+    REQUIRE(s.intersect(r3, sp));
+    Ray r4(Vec3(0.5f, -0.25f, -3), Vec3(0, 0, 1), kInf, sp.prim);
+    REQUIRE(s.intersect(r4, sp2));
+    CHECK_MESSAGE(r4.tMax == 5.0f, "expected the second square at t = 5, got " << r4.tMax);
+    // From between the squares and the sphere: the sphere's near side at z = 4, t = 1.5.
+    Ray r5(Vec3(0, 0, 2.5f), Vec3(0, 0, 1));
+    REQUIRE(s.intersect(r5, sp));
+    CHECK_MESSAGE(r5.tMax == doctest::Approx(1.5f), "sphere: expected t = 1.5, got " << r5.tMax);
+    CHECK(sp.n.z == doctest::Approx(-1.0f));
+}
