@@ -305,7 +305,7 @@ TEST_CASE("warps: samples lie in their domain and cover it [1 pt]") {
         f.check();
         const float zLo = w.hemisphere ? 0.01f : -0.99f;
         CHECK_MESSAGE((lo.x < -0.99f && hi.x > 0.99f && lo.y < -0.99f && hi.y > 0.99f && lo.z < zLo && hi.z > 0.99f),
-                      w.name << ": the samples do not cover the " << (w.hemisphere ? "hemisphere" : "sphere")
+                      w.name << ": the samples do not cover the " << std::string(w.hemisphere ? "hemisphere" : "sphere")
                              << ": they span " << str(lo) << " to " << str(hi) << ", expected about (-1, -1, "
                              << (w.hemisphere ? 0 : -1) << ") to (1, 1, 1)");
     }
