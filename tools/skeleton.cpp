@@ -12,7 +12,7 @@
 // usage:
 //   skeleton generate SOLUTIONS ASSIGNMENTS   write every assignment file from its solution
 //   skeleton check    SOLUTIONS ASSIGNMENTS   exit 1 if any assignment file is out of sync
-//   skeleton leaks    SOLUTIONS TREE          exit 1 if a solution line occurs in TREE
+//   skeleton leaks    SOLUTIONS TREE          exit 1 if solution code occurs in TREE
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -66,7 +66,8 @@ std::string marker(const std::string& line, std::string& indent, std::string& re
 }
 
 // The assignment text of one solution file, and (out) the lines of its solution regions.
-std::string makeAssignment(const fs::path& file, std::vector<std::string>* regionLines) {
+std::string makeAssignment(const fs::path& file, std::vector<std::string>* regionLines,
+                           std::vector<std::vector<std::string>>* regions = nullptr) {
     std::ostringstream out;
     bool inRegion = false;
     int regionStart = 0, lineNo = 0;
@@ -79,12 +80,14 @@ std::string makeAssignment(const fs::path& file, std::vector<std::string>* regio
             if (inRegion) throw Failure(where + "//! BEGIN inside the region opened at line " + std::to_string(regionStart));
             inRegion = true;
             regionStart = lineNo;
+            if (regions) regions->emplace_back();
         } else if (m == "END") {
             if (!inRegion) throw Failure(where + "//! END without //! BEGIN");
             inRegion = false;
         } else if (inRegion) {
             if (!m.empty()) throw Failure(where + "//! marker inside a solution region");
             if (regionLines) regionLines->push_back(line);
+            if (regions) regions->back().push_back(line);
         } else if (m == "STUB") {
             out << indent << rest << "\n";
         } else if (m == "TEXT") {
@@ -152,32 +155,56 @@ std::string normalise(const std::string& s) {
     return out;
 }
 
+// The code lines of a text: whitespace-collapsed, without blank lines and comment lines.
+std::vector<std::pair<std::string, int>> codeLines(const std::vector<std::string>& lines) {
+    std::vector<std::pair<std::string, int>> out;
+    for (size_t i = 0; i < lines.size(); ++i) {
+        const std::string n = normalise(lines[i]);
+        if (!n.empty() && n.compare(0, 2, "//") != 0 && n != "{" && n != "}" && n != "};") out.emplace_back(n, int(i) + 1);
+    }
+    return out;
+}
+
+// A leak is a solution region's code showing up in the handout: any 3 consecutive code lines
+// of a region, or a whole region of 1-2 lines if it is long enough to be distinctive. (Single
+// short lines like "for (int i = 0; i < n; ++i) {" occur everywhere and prove nothing.)
 int leaks(const fs::path& sol, const fs::path& tree) {
-    // The distinctive lines of every solution region (short ones like "}" or "return r;"
-    // occur anywhere and prove nothing).
-    std::map<std::string, std::string> secret;   // normalised line -> where it comes from
+    constexpr size_t kWindow = 3, kMinShortRegion = 40;
+    std::map<std::string, std::string> secret;   // lines joined by '\n' -> where they come from
+    std::set<size_t> sizes;
     for (const fs::path& rel : filesBelow(sol)) {
-        std::vector<std::string> region;
-        makeAssignment(sol / rel, &region);
-        for (const std::string& l : region) {
-            const std::string n = normalise(l);
-            if (n.size() >= 20 && n.compare(0, 2, "//") != 0) secret.emplace(n, (sol / rel).string());
+        std::vector<std::vector<std::string>> regions;
+        std::vector<std::string> all;
+        makeAssignment(sol / rel, &all, &regions);
+        for (const auto& region : regions) {
+            std::vector<std::string> code;
+            for (const auto& [line, no] : codeLines(region)) code.push_back(line);
+            auto add = [&](size_t from, size_t n) {
+                std::string key;
+                for (size_t k = 0; k < n; ++k) key += code[from + k] + "\n";
+                if (n < kWindow && key.size() < kMinShortRegion) return;
+                secret.emplace(key, (sol / rel).string());
+                sizes.insert(n);
+            };
+            if (code.size() >= kWindow) for (size_t i = 0; i + kWindow <= code.size(); ++i) add(i, kWindow);
+            else if (!code.empty()) add(0, code.size());
         }
     }
     int found = 0;
     for (const fs::path& rel : filesBelow(tree)) {
-        int lineNo = 0;
-        for (const std::string& l : readLines(tree / rel)) {
-            ++lineNo;
-            auto it = secret.find(normalise(l));
-            if (it != secret.end()) {
-                std::cerr << "skeleton: " << (tree / rel).string() << ":" << lineNo << " holds a solution line of "
-                          << it->second << ": " << normalise(l) << "\n";
+        const auto code = codeLines(readLines(tree / rel));
+        for (size_t n : sizes)
+            for (size_t i = 0; i + n <= code.size(); ++i) {
+                std::string key;
+                for (size_t k = 0; k < n; ++k) key += code[i + k].first + "\n";
+                auto it = secret.find(key);
+                if (it == secret.end()) continue;
+                std::cerr << "skeleton: " << (tree / rel).string() << ":" << code[i].second << " holds " << n
+                          << " line(s) of a solution region of " << it->second << ":\n" << key;
                 ++found;
             }
-        }
     }
-    std::cout << "skeleton: " << secret.size() << " solution lines checked against " << tree.string() << ": "
+    std::cout << "skeleton: " << secret.size() << " pieces of solution code checked against " << tree.string() << ": "
               << (found ? std::to_string(found) + " found" : std::string("none found")) << "\n";
     return found ? 1 : 0;
 }

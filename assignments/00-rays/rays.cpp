@@ -11,6 +11,7 @@ Ray Camera::generateRay(const Vec2& raster) const {
     // TODO(00) Map the raster position to the image plane at distance 1 (Eq. 0.1) and
     //          return the ray from the pinhole eye_ through it, direction normalised (Eq. 0.2).
     //          Members: eye_, forward_, right_, up_, tanHalfX_, tanHalfY_, width_, height_.
+    (void)raster;
     return PS_TODO("lesson 00: Camera::generateRay", Ray(eye_, forward_));
 }
 

@@ -11,6 +11,7 @@ Ray Camera::generateRay(const Vec2& raster) const {
     //! TODO(00) Map the raster position to the image plane at distance 1 (Eq. 0.1) and
     //!          return the ray from the pinhole eye_ through it, direction normalised (Eq. 0.2).
     //!          Members: eye_, forward_, right_, up_, tanHalfX_, tanHalfY_, width_, height_.
+    //! STUB (void)raster;
     //! STUB return PS_TODO("lesson 00: Camera::generateRay", Ray(eye_, forward_));
     //! BEGIN
     const float sx = (2.0f * raster.x / width_ - 1.0f) * tanHalfX_;
