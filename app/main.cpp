@@ -1,11 +1,14 @@
 // pathspace: the command-line front end.  `pathspace --help` lists the commands.
 #include <unistd.h>
+#include <algorithm>
 #include <charconv>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
 #include <string>
 #include <vector>
+#include <sys/stat.h>
+#include "converge.h"
 #include "errors.h"
 #include "image.h"
 #include "integrator.h"
@@ -18,6 +21,8 @@ const char* kUsage = R"(pathspace - a light transport course renderer
 
 usage:
   pathspace render SCENE [options]   render a scene file (see scenes/README.md)
+  pathspace converge SCENE --algos A,B,... --time SECONDS [options]
+                                     error against run time of several algorithms
   pathspace info SCENE               print what the scene contains and needs
   pathspace --help                   this text
 
@@ -34,6 +39,19 @@ render options:
   --reference REF    a reference image (.pfm or .hdr): log error against run time
   --csv FILE         where that log goes (default: the output's name + .csv)
   --progress / --no-progress   progress bar on stderr (default: when stderr is a terminal)
+
+converge options:
+  --algos A,B,...    the algorithms to compare (required)
+  --time SECONDS     time budget of each algorithm (and seed) (required)
+  --reference REF    the reference image (.pfm); without it one is rendered first with
+                     --ref-algo (default: the first algorithm) for --ref-time seconds
+                     (default: 10 x --time) and written to DIR/reference.pfm
+  --seeds K          independent runs per algorithm, averaged in the plot and table (default 1)
+  --out DIR          where the report goes (default: converge-SCENE); it holds
+                     convergence.csv, convergence.svg (log-log relMSE against seconds with a
+                     slope -1 guide), efficiency.md, equal-time.png (the algorithms' images at
+                     the end of the budget, left to right in --algos order, then the reference)
+  --threads T, --maxdepth D, --progress/--no-progress   as for render
 
 exit status: 0 on success, 1 on bad input (the message names file, line and problem),
 2 on a bad command line.
@@ -172,6 +190,108 @@ int render(const std::vector<std::string>& args) {
     return 0;
 }
 
+std::vector<std::string> splitList(const std::string& s) {
+    std::vector<std::string> out;
+    std::string cur;
+    for (char c : s + ",") {
+        if (c == ',') { if (!cur.empty()) out.push_back(cur); cur.clear(); }
+        else cur += c;
+    }
+    return out;
+}
+
+int converge(const std::vector<std::string>& args) {
+    std::string scenePath, reference, refAlgo, outDir;
+    ps::ConvergeOptions opt;
+    opt.progress = isatty(2);
+    double refSeconds = 0.0;
+    int maxDepth = -1;
+    for (size_t i = 0; i < args.size(); ++i) {
+        const std::string& a = args[i];
+        auto value = [&]() -> std::string {
+            if (i + 1 >= args.size()) throw UsageError("option " + a + " needs a value");
+            return args[++i];
+        };
+        auto positive = [&](double v) {
+            if (!(v > 0.0) || !std::isfinite(v)) throw UsageError(a + " must be a positive number");
+            return v;
+        };
+        if (a == "--algos") opt.algos = splitList(value());
+        else if (a == "--time") opt.seconds = positive(parseNumber<double>(a, value()));
+        else if (a == "--reference") reference = value();
+        else if (a == "--ref-algo") refAlgo = value();
+        else if (a == "--ref-time") refSeconds = positive(parseNumber<double>(a, value()));
+        else if (a == "--seeds") opt.seeds = static_cast<int>(positive(parseNumber<int>(a, value())));
+        else if (a == "--threads") opt.threads = static_cast<int>(positive(parseNumber<int>(a, value())));
+        else if (a == "--maxdepth") { maxDepth = parseNumber<int>(a, value()); if (maxDepth < 0) throw UsageError("--maxdepth must not be negative"); }
+        else if (a == "--out") outDir = value();
+        else if (a == "--progress") opt.progress = true;
+        else if (a == "--no-progress") opt.progress = false;
+        else if (!a.empty() && a[0] == '-') throw UsageError("unknown option '" + a + "'");
+        else if (scenePath.empty()) scenePath = a;
+        else throw UsageError("more than one scene given ('" + scenePath + "' and '" + a + "')");
+    }
+    if (scenePath.empty()) throw UsageError("'converge' needs a scene file");
+    if (opt.algos.empty()) throw UsageError("'converge' needs --algos A,B,...");
+    if (args.end() == std::find(args.begin(), args.end(), "--time")) throw UsageError("'converge' needs --time SECONDS");
+    for (const std::string& a : opt.algos) ps::makeIntegrator(a);   // unknown names fail now, not later
+    ps::Scene scene = ps::loadScene(scenePath);
+    if (maxDepth >= 0) scene.settings.maxDepth = maxDepth;
+    const std::string name = stem(baseName(scenePath));
+    if (outDir.empty()) outDir = "converge-" + name;
+    ::mkdir(outDir.c_str(), 0755);
+    struct stat st;
+    if (::stat(outDir.c_str(), &st) != 0 || !S_ISDIR(st.st_mode)) throw ps::InputError(outDir, 0, "cannot create the output folder");
+
+    ps::Image ref, refVariance;
+    if (!reference.empty()) {
+        ref = ps::readImage(reference);
+        if (ref.width != scene.camera.width() || ref.height != scene.camera.height())
+            throw ps::InputError(reference, 0, "reference size differs from the scene's resolution");
+    } else {
+        if (refAlgo.empty()) refAlgo = opt.algos[0];
+        auto integrator = ps::makeIntegrator(refAlgo);
+        ps::RenderOptions ro;
+        ro.seconds = refSeconds > 0.0 ? refSeconds : 10.0 * opt.seconds;
+        ro.seed = 1000003;   // independent of the compared runs (seeds 0 .. K-1)
+        ro.threads = opt.threads;
+        ro.progress = opt.progress;
+        std::cerr << "pathspace: rendering the reference with " << refAlgo << " for " << ro.seconds << " s\n";
+        const ps::RenderResult r = ps::render(scene, *integrator, ro);
+        ref = r.film.mean();
+        refVariance = r.film.varianceOfMean();
+        ps::writePFM(outDir + "/reference.pfm", ref);
+        ps::writePFM(outDir + "/reference-variance.pfm", refVariance);
+        std::cout << "pathspace: reference: " << ps::summaryLine(r) << "\n";
+    }
+
+    const ps::ConvergenceReport report = ps::runConvergence(scene, ref, opt);
+    std::ofstream(outDir + "/convergence.csv") << ps::convergenceCsv(name, report);
+    std::ofstream(outDir + "/convergence.svg")
+        << ps::convergencePlotSvg(name + ": relMSE against render time (" + std::to_string(opt.seeds) + " seed(s))", report);
+    const std::string table = ps::efficiencyTable(report);
+    std::ofstream(outDir + "/efficiency.md") << "Efficiency on " << name << " at " << opt.seconds
+                                             << " s per algorithm (relMSE with eps = 0.01):\n\n" << table;
+    std::vector<ps::Image> images = report.finalImages;
+    images.push_back(ref);
+    const ps::Image strip = ps::sideBySide(images);
+    ps::writePNG(outDir + "/equal-time.png", strip);
+    ps::writePFM(outDir + "/equal-time.pfm", strip);
+    std::cout << table;
+    // A reference must be much better than what it judges (../shared/notes/testing.md).
+    if (!refVariance.pixels.empty()) {
+        double var = 0.0, smallest = 1e300;
+        for (const auto& c : refVariance.pixels) var += (double(c.r) + c.g + c.b) / 3.0;
+        var /= double(refVariance.pixels.size());
+        for (const auto& p : report.points) smallest = std::min(smallest, p.error.mse);
+        if (smallest > 0.0 && var > 0.03 * smallest)
+            std::cerr << "pathspace: warning: the reference's own variance (" << var << ") is more than 3 % of the "
+                      << "smallest MSE reported (" << smallest << "): give it more time (--ref-time)\n";
+    }
+    std::cout << "pathspace: wrote " << outDir << "/{convergence.csv,convergence.svg,efficiency.md,equal-time.png}\n";
+    return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -187,6 +307,7 @@ int main(int argc, char** argv) {
             if (a == "--help" || a == "-h") { std::cout << kUsage; listAlgorithms(); return 0; }
         if (cmd == "render") return render(args);
         if (cmd == "info") return info(args);
+        if (cmd == "converge") return converge(args);
         throw UsageError("unknown command '" + cmd + "'");
     } catch (const UsageError& e) {
         std::cerr << "pathspace: " << e.what() << " (run 'pathspace --help' for usage)\n";

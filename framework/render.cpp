@@ -35,6 +35,7 @@ RenderResult render(const Scene& scene, Integrator& integrator, const RenderOpti
     if (opt.csv && opt.reference) *opt.csv << kErrorCsvHeader << "\n";
 
     double elapsed = 0.0, lastDraw = -1.0;
+    int lastCheckpoint = 0;
     auto t0 = Clock::now();
     integrator.prepare(scene);
     elapsed += std::chrono::duration<double>(Clock::now() - t0).count();
@@ -60,11 +61,16 @@ RenderResult render(const Scene& scene, Integrator& integrator, const RenderOpti
                           static_cast<unsigned long long>(res.stats.inf));
             *opt.csv << line << "\n";
         }
+        if (opt.checkpoint && ((it + 1) & it) == 0) {   // it + 1 is a power of two
+            opt.checkpoint(it + 1, elapsed, res.film, res.stats);
+            lastCheckpoint = it + 1;
+        }
         if (opt.progress && (elapsed - lastDraw > 0.1)) {
             drawProgress(it + 1, opt.spp, elapsed, opt.seconds);
             lastDraw = elapsed;
         }
     }
+    if (opt.checkpoint && res.iterations > lastCheckpoint) opt.checkpoint(res.iterations, elapsed, res.film, res.stats);
     if (opt.progress) {
         drawProgress(res.iterations, opt.spp > 0 ? opt.spp : res.iterations, elapsed, opt.seconds);
         std::fprintf(stderr, "\n");

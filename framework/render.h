@@ -1,6 +1,7 @@
 // The progressive render loop: iterations until a sample count or a time budget, optional
 // error-against-run-time log against a reference image, progress bar, summary.
 #pragma once
+#include <functional>
 #include <iosfwd>
 #include <string>
 #include "film.h"
@@ -16,6 +17,9 @@ struct RenderOptions {
     bool progress = false;        // draw a progress bar on stderr
     const Image* reference = nullptr;   // with a reference, one CSV row per iteration
     std::ostream* csv = nullptr;
+    // Called after iterations 1, 2, 4, 8, ... and after the last one, with the number of
+    // iterations so far, the render time so far and the film (not counted as render time).
+    std::function<void(int spp, double seconds, const Film& film, const SampleStats& stats)> checkpoint;
 };
 
 struct RenderResult {
