@@ -10,11 +10,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <cstring>
 #include <exception>
 #include <fstream>
 #include <string>
-#include <thread>
 #include <vector>
 #include "rng.h"
 #include "sampling.h"
@@ -41,8 +39,8 @@ struct Options {
     std::string scenesDir = PATHSPACE_SOURCE_DIR "/scenes";
 };
 
-// How much work one scene gets. A measurement is the best of `runs` runs; each run traces
-// the ray pool `passes` times (rays per run = pool size * passes).
+// How much work one scene gets. A figure is the best of `runs` runs; a run traces the primary
+// pool primaryRepeat times and the incoherent and shadow pools once each.
 struct Workload {
     int primaryPasses = 1;      // jittered passes over all pixels in the primary pool
     size_t poolSize = 1 << 20;  // incoherent and shadow pools
@@ -397,7 +395,8 @@ int main(int argc, char** argv) {
     for (const Summary& s : summaries) {
         const char* kinds[3] = {"primary", "incoherent", "shadow"};
         char what[3][96];
-        std::snprintf(what[0], sizeof what[0], "%d jittered passes over %d x %d pixels", s.passes, s.width, s.height);
+        std::snprintf(what[0], sizeof what[0], "%d jittered pass%s over %d x %d pixels", s.passes,
+                      s.passes == 1 ? "" : "es", s.width, s.height);
         std::snprintf(what[1], sizeof what[1], "cosine-weighted bounces from %zu visible points", s.visible);
         std::snprintf(what[2], sizeof what[2], "between random pairs of those points");
         for (int k = 0; k < 3; ++k)
