@@ -7,10 +7,13 @@
 #include <string>
 #include <vector>
 #include "camera.h"
+#include "format.h"
 #include "geometry.h"
 #include "rng.h"
 
 namespace lesson00 {
+
+using ps::fmt::str;  // Vec2, Vec3, dvec3 (tests/support/format.h)
 
 using ps::Ray;
 using ps::Triangle;
@@ -18,24 +21,6 @@ using ps::Vec2;
 using ps::Vec3;
 using DVec3 = glm::dvec3;
 
-inline std::string str(const Vec2& v) {
-    std::ostringstream s;
-    s.precision(9);
-    s << "(" << v.x << ", " << v.y << ")";
-    return s.str();
-}
-inline std::string str(const Vec3& v) {
-    std::ostringstream s;
-    s.precision(9);
-    s << "(" << v.x << ", " << v.y << ", " << v.z << ")";
-    return s.str();
-}
-inline std::string str(const DVec3& v) {
-    std::ostringstream s;
-    s.precision(12);
-    s << "(" << v.x << ", " << v.y << ", " << v.z << ")";
-    return s.str();
-}
 inline std::string str(const Ray& r) {
     std::ostringstream s;
     s.precision(9);

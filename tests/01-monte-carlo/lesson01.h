@@ -6,11 +6,15 @@
 #include <sstream>
 #include <string>
 #include <vector>
+#include "format.h"
 #include "math.h"
 #include "statistics.h"
 #include "warps.h"
 
 namespace lesson01 {
+
+using ps::fmt::num;  // tests/support/format.h
+using ps::fmt::str;
 
 using ps::Vec2;
 using ps::Vec3;
@@ -35,24 +39,6 @@ inline std::string dumpPath(const std::string& name) {
     return (dir / ("chi2-" + name + ".txt")).string();
 }
 
-inline std::string num(double x) {
-    std::ostringstream s;
-    s.precision(7);
-    s << x;
-    return s.str();
-}
-inline std::string str(const Vec2& v) {
-    std::ostringstream s;
-    s.precision(9);
-    s << "(" << v.x << ", " << v.y << ")";
-    return s.str();
-}
-inline std::string str(const Vec3& v) {
-    std::ostringstream s;
-    s.precision(9);
-    s << "(" << v.x << ", " << v.y << ", " << v.z << ")";
-    return s.str();
-}
 
 // A warp to directions, with its pdf per unit solid angle and its inverse.
 struct SphereWarp {
