@@ -1,0 +1,38 @@
+// Lesson 3 — the path tracers the render command knows (plumbing: read it, nothing to write
+// here). Each runs one of the estimators of this lesson with the scene's maximum depth
+// (scene.settings.maxDepth, `--maxdepth` on the command line; 0 = emission seen directly):
+//
+//   pt-bsdf   the random walk, BSDF sampling only (random_walk.cpp, Eq. 3.3, 3.4)
+//   pt-nee    with next-event estimation (next_event.cpp, Eq. 3.6)
+//   pt        next-event estimation and BSDF hits combined by MIS (path_mis.cpp, Eq. 3.7)
+#include "03-path-tracing/pathtracer.h"
+
+namespace ps {
+
+namespace {
+
+struct PathBSDF : PixelIntegrator {
+    Color Li(const Scene& scene, const Ray& ray, Rng& rng) const override {
+        return LiRandomWalk(scene, ray, rng, scene.settings.maxDepth);
+    }
+};
+
+struct PathNEE : PixelIntegrator {
+    Color Li(const Scene& scene, const Ray& ray, Rng& rng) const override {
+        return LiNextEvent(scene, ray, rng, scene.settings.maxDepth);
+    }
+};
+
+struct PathMIS : PixelIntegrator {
+    Color Li(const Scene& scene, const Ray& ray, Rng& rng) const override {
+        return LiMIS(scene, ray, rng, scene.settings.maxDepth);
+    }
+};
+
+}  // namespace
+
+PS_REGISTER_INTEGRATOR(PathBSDF, "pt-bsdf", "path tracing, BSDF sampling only: the random walk (lesson 3)");
+PS_REGISTER_INTEGRATOR(PathNEE, "pt-nee", "path tracing with next-event estimation (lesson 3)");
+PS_REGISTER_INTEGRATOR(PathMIS, "pt", "path tracing, next-event estimation and BSDF hits combined by MIS (lesson 3)");
+
+}  // namespace ps

@@ -1,0 +1,191 @@
+// Lesson 2, graded: light sampling and BSDF sampling (lessons/02-direct-mis/direct.h; Eq.
+// 2.3-2.5), and every estimator against Lambert's closed form for the irradiance from polygonal
+// lights (Eq. 2.13): t-tests at level alpha() (lesson02.h) with a power check.
+#include <cmath>
+#include "lesson02.h"
+
+using namespace lesson02;
+
+namespace {
+
+// A diffuse floor (y = 0, albedo 0.6 0.5 0.4) under two polygonal lights of different power:
+// a tilted parallelogram and a triangle, both facing down. Seen from the floor points used
+// below, both lie wholly above the horizon, face the point and do not hide each other.
+const char* kPolygonScene = R"(
+camera eye 0 6 6  target 0 0 0  fov 40  resolution 1 1
+material floor diffuse albedo 0.6 0.5 0.4
+quad -5 0 -5  -5 0 5  5 0 5  5 0 -5  material floor
+quad -1 2 -0.5  1 2.5 -0.5  1.2 2.5 0.8  -0.8 2 0.8  emission 4 2 1
+triangle 1.5 1.5 1  2.5 1.8 0.5  2 1.2 2  emission 1 2 6
+)";
+const Color kAlbedo(0.6f, 0.5f, 0.4f);
+
+struct Polygon {
+    std::vector<glm::dvec3> v;
+    glm::dvec3 Le;
+};
+const std::vector<Polygon> kLights = {
+    {{{-1, 2, -0.5}, {1, 2.5, -0.5}, {1.2, 2.5, 0.8}, {-0.8, 2, 0.8}}, {4, 2, 1}},
+    {{{1.5, 1.5, 1}, {2.5, 1.8, 0.5}, {2, 1.2, 2}}, {1, 2, 6}},
+};
+
+// Lambert's formula (Eq. 2.13): the irradiance at x (normal n) from a polygon of radiance 1
+// wholly above x's horizon, facing x: E = 1/2 |sum_k Theta_k (Gamma_k . n)|, Theta_k the angle
+// edge k subtends at x, Gamma_k the unit normal of the plane through x and that edge.
+double polygonIrradiance(const std::vector<glm::dvec3>& v, const glm::dvec3& x, const glm::dvec3& n) {
+    double s = 0.0;
+    for (size_t k = 0; k < v.size(); ++k) {
+        const glm::dvec3 a = glm::normalize(v[k] - x), b = glm::normalize(v[(k + 1) % v.size()] - x);
+        const double theta = std::acos(glm::clamp(glm::dot(a, b), -1.0, 1.0));
+        s += theta * glm::dot(glm::normalize(glm::cross(a, b)), n);
+    }
+    return 0.5 * std::abs(s);
+}
+
+// Radiance leaving the floor point x upwards, summed over R, G and B: (albedo / pi) E.
+double expectedRadianceSum(const glm::dvec3& x) {
+    glm::dvec3 L(0.0);
+    for (const Polygon& p : kLights) L += p.Le * polygonIrradiance(p.v, x, {0, 1, 0});
+    return glm::dot(glm::dvec3(kAlbedo) / 3.14159265358979323846, L);
+}
+
+// The ray that sees the floor point x (from 0.5 above it, below both lights).
+ps::Ray rayTo(const Vec3& x) {
+    const Vec3 o = x + Vec3(0.1f, 0.5f, -0.15f);
+    return ps::Ray(o, glm::normalize(x - o));
+}
+
+// n samples of an integrator's Li along the ray to x, summed over R, G, B: mean and variance,
+// and the count of non-finite samples.
+struct Samples {
+    ps::stats::Welford w;
+    int bad = 0;
+};
+Samples sampleLi(const ps::Scene& scene, const std::string& algo, const Vec3& x, int n, uint64_t seed) {
+    const std::unique_ptr<ps::Integrator> integrator = ps::makeIntegrator(algo);
+    const auto* pixel = dynamic_cast<const ps::PixelIntegrator*>(integrator.get());
+    REQUIRE(pixel != nullptr);
+    Samples s;
+    const ps::Ray ray = rayTo(x);
+    for (int i = 0; i < n; ++i) {
+        ps::Rng rng = ps::taskRng(seed, 0, uint32_t(i));
+        const Color c = pixel->Li(scene, ray, rng);
+        if (!ps::isFinite(c)) { ++s.bad; continue; }
+        s.w.add(sum(c));
+    }
+    return s;
+}
+
+// The t-test of one estimator at the two floor points: standard error at most 0.5 % of the
+// expected value (power check).
+void checkLambert(const std::string& algo, int n, uint64_t seed) {
+    const ps::Scene scene = ps::parseScene(kPolygonScene, "polygon-lights (test_direct.cpp)");
+    for (const Vec3& x : {Vec3(0.2f, 0.0f, 0.1f), Vec3(1.5f, 0.0f, 2.5f)}) {
+        const double expected = expectedRadianceSum(glm::dvec3(x));
+        const Samples s = sampleLi(scene, algo, x, n, seed++);
+        CHECK_MESSAGE(s.bad == 0, algo << " at floor point " << str(x) << ": expected 0 NaN or Inf samples, got " << s.bad);
+        const ps::stats::TTestResult t = ps::stats::tTest(s.w, expected, alpha(), 0.005);
+        CHECK_MESSAGE(t.passed, algo << ", radiance (R + G + B) leaving the floor point " << str(x)
+                                     << " under two polygonal lights, " << n << " samples: expected (albedo / pi) E = "
+                                     << expected << " by Lambert's formula, got " << t.mean << " +- " << t.stdError
+                                     << "\n  " << t.report);
+    }
+}
+
+}  // namespace
+
+TEST_CASE("direct: area pdfs become solid-angle pdfs (Eq. 2.3) [1 pt]") {
+    struct Case {
+        float pdfA, dist, cosAtLight, expected;
+    };
+    for (const Case& c : {Case{2.0f, 3.0f, 0.5f, 36.0f}, Case{0.25f, 10.0f, 1.0f, 25.0f}, Case{1e-4f, 1e3f, 0.1f, 1000.0f},
+                          Case{1.0f, 1.0f, 0.0f, 0.0f}, Case{1.0f, 2.0f, -0.5f, 0.0f}}) {
+        const float got = ps::pdfAToSolidAngle(c.pdfA, c.dist, c.cosAtLight);
+        CHECK_MESSAGE(std::abs(got - c.expected) <= 1e-5f * c.expected,
+                      "pdfAToSolidAngle(pdfA " << c.pdfA << ", dist " << c.dist << ", cos " << c.cosAtLight
+                                               << "): expected " << c.expected << ", got " << got);
+    }
+    // pdfLightDirection: selection probability (by power) times the converted pdf.
+    const ps::Scene scene = ps::parseScene(kPolygonScene, "polygon-lights (test_direct.cpp)");
+    const Vec3 ref(0.2f, 0.0f, 0.1f);
+    for (int l = 0; l < 2; ++l) {
+        const Vec3 p = l == 0 ? Vec3(0.1f, 2.25f, 0.15f) : Vec3(2.0f, 1.5f, 1.1666667f);   // inside each light
+        const Vec3 n = ps::Triangle{Vec3(kLights[l].v[0]), Vec3(kLights[l].v[1]), Vec3(kLights[l].v[2])}.normal();
+        const double d = glm::length(glm::dvec3(ref - p)), cosL = glm::dot(glm::dvec3(n), glm::dvec3(ref - p)) / d;
+        const double expected = scene.lightSelectionProb(l) / scene.lights[l].area * d * d / cosL;
+        const float got = ps::pdfLightDirection(scene, l, ref, p, n);
+        CHECK_MESSAGE(std::abs(got - expected) <= 1e-4 * expected,
+                      "pdfLightDirection(light " << l << ", from " << str(ref) << " to " << str(p) << "): expected "
+                                                 << "P(light) / area * d^2 / cos = " << scene.lightSelectionProb(l) << " / "
+                                                 << scene.lights[l].area << " * " << d * d << " / " << cosL << " = "
+                                                 << expected << ", got " << got);
+    }
+}
+
+TEST_CASE("direct: light and BSDF samples carry f Le cos / pdf and the pdfs of both techniques [2 pts]") {
+    // From the floor point under the two polygonal lights, 2000 light samples and 2000 BSDF
+    // samples. Every sample that reaches a light is checked against the test's own computation
+    // for its direction wi: trace wi to the light point y, then
+    //   pdfLight = P(light) / area * d^2 / cos_y,  pdfBSDF = cos_x / pi,
+    //   value    = (albedo / pi) Le cos_x / pdf of the technique that took it.
+    const ps::Scene scene = ps::parseScene(kPolygonScene, "polygon-lights (test_direct.cpp)");
+    const ps::Ray camera = rayTo(Vec3(0.2f, 0.0f, 0.1f));
+    ps::Ray r = camera;
+    ps::SurfacePoint sp;
+    REQUIRE(scene.intersect(r, sp));
+    const Vec3 wo = -camera.d;
+    ps::Rng rng(25);
+    int failures = 0, checked[2] = {0, 0};
+    for (int technique = 0; technique < 2; ++technique)
+        for (int i = 0; i < 2000; ++i) {
+            const ps::DirectSample d = technique == 0 ? ps::sampleDirectLight(scene, sp, wo, rng.uniform(), rng.uniform2())
+                                                      : ps::sampleDirectBSDF(scene, sp, wo, rng.uniform2(), rng.uniform());
+            ps::Ray toLight = scene.spawnRay(sp, d.wi);
+            ps::SurfacePoint y;
+            const bool hitsLight = glm::length(d.wi) > 0.5f && scene.intersect(toLight, y) && y.light >= 0;
+            if (!hitsLight) {
+                if (technique == 0 && sum(d.value) != 0.0 && ++failures <= 3)
+                    FAIL_CHECK("light sample from " << str(sp.p) << ": direction " << str(d.wi)
+                                                    << " does not lead to a light, but the value is " << str(d.value));
+                continue;
+            }
+            ++checked[technique];
+            const double dist = glm::length(glm::dvec3(y.p - sp.p));
+            const double cosY = -glm::dot(glm::dvec3(y.n), glm::dvec3(d.wi)), cosX = std::abs(d.wi.y);
+            const double pdfLight = scene.lightSelectionProb(y.light) / scene.lights[y.light].area * dist * dist / cosY;
+            const double pdfBSDF = cosX / 3.14159265358979323846;
+            const glm::dvec3 value = glm::dvec3(kAlbedo) / 3.14159265358979323846 * glm::dvec3(scene.lights[y.light].Le) *
+                                     cosX / (technique == 0 ? pdfLight : pdfBSDF);
+            auto close = [](double a, double b) { return std::abs(a - b) <= 2e-3 * std::abs(b) + 1e-12; };
+            const bool ok = close(d.pdfLight, pdfLight) && close(d.pdfBSDF, pdfBSDF) && close(d.value.r, value.r) &&
+                            close(d.value.g, value.g) && close(d.value.b, value.b) && !d.delta;
+            if (!ok && ++failures <= 3)
+                FAIL_CHECK((technique == 0 ? "light" : "BSDF")
+                           << " sample from " << str(sp.p) << " towards " << str(d.wi) << " (light " << y.light << " at "
+                           << str(y.p) << "):\n  expected pdfLight " << pdfLight << ", pdfBSDF " << pdfBSDF << ", value ("
+                           << value.r << ", " << value.g << ", " << value.b << "), delta 0\n  got      pdfLight "
+                           << d.pdfLight << ", pdfBSDF " << d.pdfBSDF << ", value " << str(d.value) << ", delta " << d.delta);
+        }
+    CHECK_MESSAGE((checked[0] > 1000 && checked[1] > 50),
+                  "expected most light samples (got " << checked[0] << " of 2000) and some BSDF samples (got " << checked[1]
+                                                      << " of 2000) to reach a light");
+    CHECK_MESSAGE(failures == 0, "expected every sample that reaches a light to be right, got " << failures << " wrong");
+}
+
+TEST_CASE("direct: light sampling gives Lambert's irradiance from polygonal lights (t-test) [2 pts]") {
+    checkLambert("direct-light", 50000, 100);
+}
+
+TEST_CASE("direct: BSDF sampling gives Lambert's irradiance from polygonal lights (t-test) [1 pt]") {
+    checkLambert("direct-bsdf", 1000000, 110);
+}
+
+TEST_CASE("direct: multi-sample MIS gives Lambert's irradiance with each heuristic (t-test) [2 pts]") {
+    checkLambert("direct-balance", 50000, 120);
+    checkLambert("direct-power", 50000, 130);
+    checkLambert("direct-max", 50000, 140);
+}
+
+TEST_CASE("direct: one-sample MIS gives Lambert's irradiance from polygonal lights (t-test) [1 pt]") {
+    checkLambert("direct-onesample", 120000, 150);
+}

@@ -1,0 +1,151 @@
+// Shared by lesson 3's graded tests: the analytic scenes (closed furnace, point light in a
+// sphere), many samples of one estimator's Li, renders through the registered integrators,
+// the significance level and printing helpers.
+#pragma once
+#include <doctest/doctest.h>
+#include <cmath>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+#include "03-path-tracing/pathtracer.h"
+#include "image.h"
+#include "render.h"
+#include "scene_loader.h"
+#include "statistics.h"
+
+namespace lesson03 {
+
+using ps::Color;
+using ps::Vec2;
+using ps::Vec3;
+
+// Statistical tests in this suite (every other check is exact):
+//   t-tests: closed furnace, 3 albedos x 3 estimators                              ->  9
+//            closed furnace with albedo 1, pt-nee and pt                            ->  2
+//            point light in a sphere, 3 radii x 2 estimators                        ->  6
+//   z-tests: the Cornell box, 3 estimators against the stored reference             ->  3
+// m = 20; each runs at the Sidak level alpha' = 1 - (1 - 0.01)^(1/20) ~ 5.0e-4, so a correct
+// implementation fails any of them by bad luck with probability at most 1 %.
+constexpr int kStatisticalTests = 20;
+inline double alpha() { return ps::stats::sidak(0.01, kStatisticalTests); }
+
+// The three estimators: algorithm name and function.
+struct Estimator {
+    std::string name;
+    ps::Color (*Li)(const ps::Scene&, const ps::Ray&, ps::Rng&, int);
+};
+inline const std::vector<Estimator>& estimators() {
+    static const std::vector<Estimator> e = {
+        {"pt-bsdf (LiRandomWalk)", ps::LiRandomWalk}, {"pt-nee (LiNextEvent)", ps::LiNextEvent}, {"pt (LiMIS)", ps::LiMIS}};
+    return e;
+}
+
+inline std::string sourcePath(const std::string& rel) { return std::string(PATHSPACE_SOURCE_DIR) + "/" + rel; }
+
+inline std::string num(double x) {
+    std::ostringstream s;
+    s.precision(10);
+    s << x;
+    return s.str();
+}
+inline std::string str(const Vec3& v) {
+    std::ostringstream s;
+    s.precision(9);
+    s << "(" << v.x << ", " << v.y << ", " << v.z << ")";
+    return s.str();
+}
+inline double sum(const Color& c) { return double(c.r) + double(c.g) + double(c.b); }
+
+inline std::string readText(const std::string& path) {
+    std::ifstream in(path);
+    if (!in) FAIL("cannot open " << path);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+// A closed furnace with diffuse albedo a and emission Le (grey): the camera at the centre of a
+// closed enclosure whose walls emit Le inwards and reflect with albedo a. The cube is
+// scenes/furnace.scene; the sphere tests/03-path-tracing/data/furnace-sphere.scene (an
+// icosphere: in the cube next-event estimation has infinite variance, see that file).
+enum class Enclosure { Cube, Sphere };
+inline ps::Scene furnace(Enclosure shape, float albedo, float Le) {
+    const std::string path = sourcePath(shape == Enclosure::Cube ? "scenes/furnace.scene"
+                                                                  : "tests/03-path-tracing/data/furnace-sphere.scene");
+    std::string s = std::regex_replace(readText(path), std::regex("albedo 0\\.5 0\\.5 0\\.5"),
+                                       "albedo " + num(albedo) + " " + num(albedo) + " " + num(albedo));
+    s = std::regex_replace(s, std::regex("emission 1 1 1"), "emission " + num(Le) + " " + num(Le) + " " + num(Le));
+    return ps::parseScene(s, path);
+}
+
+// Eq. 3.8: the closed furnace truncated at D bounces, L = Le (1 - a^(D+1)) / (1 - a).
+inline double furnaceRadiance(double a, double Le, int D) {
+    return a == 1.0 ? Le * (D + 1) : Le * (1.0 - std::pow(a, D + 1)) / (1.0 - a);
+}
+
+// scenes/point-in-sphere.scene scaled by R: a point light of intensity I = R^2 at the centre of
+// a diffuse sphere of radius R and albedo a, the camera at (0, 0, -R/2).
+inline ps::Scene pointInSphere(float R, float albedo) {
+    std::ostringstream s;
+    s << "camera eye 0 0 " << num(-0.5 * R) << "  target 0 0 " << num(R) << "  fov 90  resolution 1 1\n"
+      << "material wall diffuse albedo " << num(albedo) << " " << num(albedo) << " " << num(albedo) << "\n"
+      << "sphere center 0 0 0  radius " << num(R) << "  material wall\n"
+      << "pointlight position 0 0 0  intensity " << num(double(R) * R) << " " << num(double(R) * R) << " "
+      << num(double(R) * R) << "\n";
+    return ps::parseScene(s.str(), "point-in-sphere, R = " + num(R) + " (lesson03.h)");
+}
+
+// Eq. 3.9: L = a I / (pi R^2) (1 - a^D) / (1 - a); with I = R^2 it does not depend on R.
+inline double pointInSphereRadiance(double a, double I, double R, int D) {
+    return a * I / (3.14159265358979323846 * R * R) * (1.0 - std::pow(a, D)) / (1.0 - a);
+}
+
+// n samples of Li (summed over R, G, B) along rays from the camera position in uniformly
+// distributed directions, sample i with its own generator taskRng(seed, 0, i).
+struct Samples {
+    ps::stats::Welford w;
+    int bad = 0;
+    double min = 1e300, max = -1e300;
+};
+inline Samples sampleLi(const ps::Scene& scene, const Estimator& e, int maxDepth, int n, uint64_t seed) {
+    Samples s;
+    for (int i = 0; i < n; ++i) {
+        ps::Rng rng = ps::taskRng(seed, 0, uint32_t(i));
+        const Vec3 d = ps::sampleUniformSphere(rng.uniform2());
+        const Color c = e.Li(scene, ps::Ray(scene.camera.position(), d), rng, maxDepth);
+        if (!ps::isFinite(c)) { ++s.bad; continue; }
+        const double v = sum(c);
+        s.w.add(v);
+        s.min = std::min(s.min, v);
+        s.max = std::max(s.max, v);
+    }
+    return s;
+}
+
+struct Render {
+    ps::Image mean, variance;
+    ps::SampleStats stats;
+    std::string algo;
+};
+inline Render render(const ps::Scene& scene, const std::string& algo, int spp, uint64_t seed) {
+    std::unique_ptr<ps::Integrator> integrator = ps::makeIntegrator(algo);
+    ps::RenderOptions opt;
+    opt.spp = spp;
+    opt.seed = seed;
+    opt.threads = 2;
+    const ps::RenderResult r = ps::render(scene, *integrator, opt);
+    return {r.film.mean(), r.film.varianceOfMean(), r.stats, algo};
+}
+
+// A scene file of the repository at width x height pixels (its 'resolution' replaced), so that
+// the tests and the documented reference command (`sed` on the same file) see the same scene.
+inline ps::Scene loadSceneAt(const std::string& rel, int width, int height) {
+    const std::string path = sourcePath(rel);
+    return ps::parseScene(std::regex_replace(readText(path), std::regex(R"(resolution\s+\d+\s+\d+)"),
+                                             "resolution " + std::to_string(width) + " " + std::to_string(height)),
+                          path);
+}
+
+}  // namespace lesson03
