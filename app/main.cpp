@@ -38,6 +38,8 @@ render options:
   --variance FILE    also write the per-pixel variance of the mean as a .pfm
   --reference REF    a reference image (.pfm or .hdr): log error against run time
   --csv FILE         where that log goes (default: the output's name + .csv)
+  --no-prune         do not leave out work the scene cannot use (integrators print what
+                     they leave out; pruning is exact, this switch is there to check it)
   --progress / --no-progress   progress bar on stderr (default: when stderr is a terminal)
 
 converge options:
@@ -51,7 +53,7 @@ converge options:
                      convergence.csv, convergence.svg (log-log relMSE against seconds with a
                      slope -1 guide), efficiency.md, equal-time.png (the algorithms' images at
                      the end of the budget, left to right in --algos order, then the reference)
-  --threads T, --maxdepth D, --progress/--no-progress   as for render
+  --threads T, --maxdepth D, --no-prune, --progress/--no-progress   as for render
 
 exit status: 0 on success, 1 on bad input (the message names file, line and problem),
 2 on a bad command line.
@@ -81,6 +83,12 @@ T parseNumber(const std::string& opt, const std::string& s) {
     return v;
 }
 
+// One line per piece of work the integrator leaves out on this scene (Integrator::leftOut).
+void printLeftOut(const std::string& algo, const ps::Integrator& integrator, const ps::Scene& scene) {
+    for (const std::string& line : integrator.leftOut(scene))
+        std::cerr << "pathspace: " << algo << " leaves out " << line << "\n";
+}
+
 void listAlgorithms() {
     std::cerr << "algorithms:\n";
     for (const auto& i : ps::integratorList()) std::cerr << "  " << i.name << "  " << i.description << "\n";
@@ -103,7 +111,7 @@ int render(const std::vector<std::string>& args) {
     int spp = 0, threads = 0, maxDepth = -1;
     double seconds = 0.0;
     uint64_t seed = 0;
-    bool progress = isatty(2);
+    bool progress = isatty(2), prune = true;
     for (size_t i = 0; i < args.size(); ++i) {
         const std::string& a = args[i];
         auto value = [&]() -> std::string {
@@ -125,6 +133,7 @@ int render(const std::vector<std::string>& args) {
         else if (a == "--variance") variancePath = value();
         else if (a == "--progress") progress = true;
         else if (a == "--no-progress") progress = false;
+        else if (a == "--no-prune") prune = false;
         else if (!a.empty() && a[0] == '-') throw UsageError("unknown option '" + a + "'");
         else if (scenePath.empty()) scenePath = a;
         else throw UsageError("more than one scene given ('" + scenePath + "' and '" + a + "')");
@@ -133,6 +142,7 @@ int render(const std::vector<std::string>& args) {
 
     ps::Scene scene = ps::loadScene(scenePath);
     if (maxDepth >= 0) scene.settings.maxDepth = maxDepth;
+    scene.settings.prune = prune;
     std::unique_ptr<ps::Integrator> integrator;
     if (algo.empty()) {
         algo = scene.settings.algo;
@@ -169,6 +179,7 @@ int render(const std::vector<std::string>& args) {
         opt.csv = &csv;
     }
     std::cerr << "pathspace: " << scenePath << " (" << scene.caps.describe() << "), algo " << algo << "\n";
+    printLeftOut(algo, *integrator, scene);
 
     const ps::RenderResult res = ps::render(scene, *integrator, opt);
     const ps::Image img = res.film.mean();
@@ -206,6 +217,7 @@ int converge(const std::vector<std::string>& args) {
     opt.progress = isatty(2);
     double refSeconds = 0.0;
     int maxDepth = -1;
+    bool prune = true;
     for (size_t i = 0; i < args.size(); ++i) {
         const std::string& a = args[i];
         auto value = [&]() -> std::string {
@@ -227,6 +239,7 @@ int converge(const std::vector<std::string>& args) {
         else if (a == "--out") outDir = value();
         else if (a == "--progress") opt.progress = true;
         else if (a == "--no-progress") opt.progress = false;
+        else if (a == "--no-prune") prune = false;
         else if (!a.empty() && a[0] == '-') throw UsageError("unknown option '" + a + "'");
         else if (scenePath.empty()) scenePath = a;
         else throw UsageError("more than one scene given ('" + scenePath + "' and '" + a + "')");
@@ -237,6 +250,8 @@ int converge(const std::vector<std::string>& args) {
     for (const std::string& a : opt.algos) ps::makeIntegrator(a);   // unknown names fail now, not later
     ps::Scene scene = ps::loadScene(scenePath);
     if (maxDepth >= 0) scene.settings.maxDepth = maxDepth;
+    scene.settings.prune = prune;
+    for (const std::string& a : opt.algos) printLeftOut(a, *ps::makeIntegrator(a), scene);
     const std::string name = stem(baseName(scenePath));
     if (outDir.empty()) outDir = "converge-" + name;
     ::mkdir(outDir.c_str(), 0755);

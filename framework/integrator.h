@@ -15,6 +15,12 @@ public:
     virtual ~Integrator() = default;
     // Scene-dependent preprocessing (a photon pass, a bootstrap); counted in render time.
     virtual void prepare(const Scene&) {}
+    // What this integrator leaves out on this scene because the scene's capabilities show it
+    // cannot contribute, one line each with the reason, e.g. "s = 0 techniques: no light can be
+    // hit (point lights only)". Empty when nothing is left out or scene.settings.prune is false.
+    // Pruning must be exact: the image's expectation is the same either way. The render and
+    // converge commands print these lines.
+    virtual std::vector<std::string> leftOut(const Scene&) const { return {}; }
     // Renders iteration `iteration` into out (zeroed, film-sized). Must be a function of
     // (scene, iteration, seed) only, never of the thread count.
     virtual void renderIteration(const Scene& scene, uint32_t iteration, uint64_t seed, Image& out,

@@ -26,6 +26,9 @@ struct RenderSettings {
     int maxDepth = 8;          // maximum number of bounces; 0 = only emission seen directly
     std::string algo = "eyelight";
     int algoLine = 0;          // the scene file line that set algo (for messages), 0 if none
+    // Integrators leave out work the capabilities show cannot contribute (Integrator::leftOut);
+    // false (`--no-prune`) makes them do all of it, to check that pruning changes nothing.
+    bool prune = true;
 };
 
 // What a scene has, recorded at load time so integrators can leave out what it does not need.
