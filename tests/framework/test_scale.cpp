@@ -19,63 +19,17 @@
 #include "eyelight.h"
 #include "render.h"
 #include "scene_loader.h"
+#include "scene_text.h"
 
 using namespace ps;
+using ps::scenetext::readText;
+using ps::scenetext::transformScene;
 
 namespace {
 
 constexpr int kRes = 64;
 constexpr int kSpp = 4;
 constexpr uint64_t kSeed = 20240607;
-
-std::string readText(const std::string& path) {
-    std::ifstream in(path);
-    REQUIRE_MESSAGE(in.good(), "cannot read " << path);
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
-
-std::string num(double v) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.9g", v);
-    return buf;
-}
-
-// The scene text with every point p replaced by s * p + t (camera eye and target, corners of
-// triangles and quads, sphere centres and radii, point light positions) and the resolution set
-// to kRes x kRes. Directions (the camera's up) and everything else stay.
-std::string transformScene(const std::string& text, double s, double t) {
-    std::istringstream in(text);
-    std::ostringstream out;
-    std::string line;
-    auto point = [&](std::vector<std::string>& tok, size_t i) {
-        for (size_t k = i; k < i + 3; ++k) tok[k] = num(s * std::stod(tok[k]) + t);
-    };
-    while (std::getline(in, line)) {
-        const std::string code = line.substr(0, line.find('#'));
-        std::istringstream ls(code);
-        std::vector<std::string> tok;
-        for (std::string w; ls >> w;) tok.push_back(w);
-        if (tok.empty()) { out << line << "\n"; continue; }
-        const std::string& k = tok[0];
-        size_t first = 1;
-        if (k == "triangle" || k == "quad") {
-            const size_t corners = k == "triangle" ? 3 : 4;
-            for (size_t c = 0; c < corners; ++c) point(tok, 1 + 3 * c);
-            first = 1 + 3 * corners;
-        }
-        for (size_t i = first; i < tok.size(); ++i) {
-            if (k == "camera" && (tok[i] == "eye" || tok[i] == "target")) point(tok, i + 1);
-            if (k == "camera" && tok[i] == "resolution") tok[i + 1] = tok[i + 2] = std::to_string(kRes);
-            if ((k == "sphere" && tok[i] == "center") || (k == "pointlight" && tok[i] == "position")) point(tok, i + 1);
-            if (k == "sphere" && tok[i] == "radius") tok[i + 1] = num(s * std::stod(tok[i + 1]));
-        }
-        for (size_t i = 0; i < tok.size(); ++i) out << (i ? " " : "") << tok[i];
-        out << "\n";
-    }
-    return out.str();
-}
 
 // The secondary-ray probe described at the top.
 class SecondaryRayProbe : public PixelIntegrator {
@@ -188,8 +142,8 @@ void checkCase(const Case& cs, const Image& img, const Image& ref, float minFrac
 
 TEST_CASE("scale: the transformation keeps the scene and moves what it should") {
     const std::string text = readText(std::string(PATHSPACE_SOURCE_DIR) + "/scenes/cornell-box.scene");
-    const Scene a = parseScene(transformScene(text, 1.0, 0.0), "a.scene");
-    const Scene b = parseScene(transformScene(text, 1e4, 1e5), "b.scene");
+    const Scene a = parseScene(transformScene(text, 1.0, 0.0, kRes), "a.scene");
+    const Scene b = parseScene(transformScene(text, 1e4, 1e5, kRes), "b.scene");
     REQUIRE(a.triangles.size() == b.triangles.size());
     CHECK(a.camera.width() == kRes);
     CHECK(a.camera.height() == kRes);
@@ -201,9 +155,9 @@ TEST_CASE("scale: the transformation keeps the scene and moves what it should") 
 TEST_CASE("scale: eyelight renders of the Cornell box at scales 1e-4, 1e4 and translated by 1e5 agree") {
     const std::string text = readText(std::string(PATHSPACE_SOURCE_DIR) + "/scenes/cornell-box.scene");
     EyeLight eyelight;
-    const Image ref = renderText(transformScene(text, 1.0, 0.0), eyelight);
+    const Image ref = renderText(transformScene(text, 1.0, 0.0, kRes), eyelight);
     for (const Case& cs : kCases) {
-        const Image img = renderText(transformScene(text, cs.scale, cs.translate), eyelight);
+        const Image img = renderText(transformScene(text, cs.scale, cs.translate, kRes), eyelight);
         checkCase(cs, img, ref, 0.99f);
     }
 }
@@ -211,7 +165,7 @@ TEST_CASE("scale: eyelight renders of the Cornell box at scales 1e-4, 1e4 and tr
 TEST_CASE("scale: shadow and bounce rays (no acne, no leaks) at scales 1e-4, 1e4 and translated by 1e5") {
     const std::string text = readText(std::string(PATHSPACE_SOURCE_DIR) + "/scenes/cornell-box.scene");
     SecondaryRayProbe probe;
-    const Image ref = renderText(transformScene(text, 1.0, 0.0), probe);
+    const Image ref = renderText(transformScene(text, 1.0, 0.0, kRes), probe);
     // The probe itself must see something: lit and shadowed pixels, bounce hits everywhere.
     int lit = 0, shadowed = 0;
     for (const Color& c : ref.pixels) {
@@ -221,7 +175,7 @@ TEST_CASE("scale: shadow and bounce rays (no acne, no leaks) at scales 1e-4, 1e4
     CHECK(lit > kRes * kRes / 4);
     CHECK(shadowed > kRes * kRes / 50);
     for (const Case& cs : kCases) {
-        const Image img = renderText(transformScene(text, cs.scale, cs.translate), probe);
+        const Image img = renderText(transformScene(text, cs.scale, cs.translate, kRes), probe);
         checkCase(cs, img, ref, 0.99f);
     }
 }
