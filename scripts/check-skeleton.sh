@@ -17,12 +17,11 @@ cmake --build "$build/handout-build" -j"$(nproc)" >/dev/null
 cd "$build/handout-build"
 total=$(ctest -N -L '^lesson-' | sed -n 's/^Total Tests: //p')
 [ "${total:-0}" -gt 0 ] || { echo "check-skeleton: no graded tests found" >&2; exit 1; }
-ctest -L '^lesson-' -j"$(nproc)" --timeout 120 --output-junit skeleton.xml >/dev/null 2>&1 || true
-# A test passed if its testcase element has no <failure>.
-passed=$(awk 'BEGIN{RS="</testcase>"} /<testcase/ && !/<failure/ { if (match($0, /<testcase name="[^"]*"/)) print substr($0, RSTART+16, RLENGTH-17) }' skeleton.xml)
-if [ -n "$passed" ]; then
-  echo "check-skeleton: these graded tests PASS on the untouched skeleton (they must fail):" >&2
-  echo "$passed" | sed 's/^/  /' >&2
+ctest -L '^lesson-' -j"$(nproc)" --timeout 120 --output-junit "$PWD/skeleton.xml" >/dev/null 2>&1 || true
+# Scored by the autograder (the build's own, with the reference's test list): every graded test
+# must fail; one that passes is named and fails CI.
+"$build/grade" --source "$src" --junit "$PWD/skeleton.xml" --expect zero --out "$build/grade-skeleton" > "$build/grade-skeleton.txt" || {
+  echo "check-skeleton: a graded test that passes on the untouched skeleton cannot tell a finished assignment from an empty one" >&2
   exit 1
-fi
+}
 echo "check-skeleton: all $total graded tests fail on the untouched skeleton, as they must"

@@ -6,7 +6,9 @@ bash scripts/deps.sh
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build build -j"$(nproc)"
 cd build
-ctest -j"$(nproc)" --output-on-failure --timeout 300
+ctest -j"$(nproc)" --output-on-failure --timeout 300 --output-junit "$PWD/ctest.xml"
+# The autograder's scoring, on this run: the reference must get full marks.
+./grade --junit "$PWD/ctest.xml" --expect full --out grade-reference > grade-reference.txt
 cd ..
 # What CI must prove about the course: the handout holds no solution line and builds, and
 # every graded test fails on the untouched skeleton.

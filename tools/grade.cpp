@@ -2,6 +2,11 @@
 // is built from the submission, every other lesson from the reference (solutions/).
 //
 //   grade [--submission DIR] [--lessons 0,1|all] [--out DIR] [--timeout S] [--jobs N]
+//   grade --junit FILE [--lessons ...] [--out DIR] [--expect zero|full]
+//
+// With --junit nothing is built: the graded tests are scored from a CTest JUnit report that
+// already exists (`ctest --output-junit FILE`). CI uses it to prove that the reference scores
+// full marks and the untouched skeleton scores 0 (--expect: exit 1, naming the tests, if not).
 //
 // DIR holds lesson folders like assignments/ does (NN-name/*.cpp); default: assignments/.
 // For each lesson: configure and build in OUT/build-NN, run its graded tests (CTest label
@@ -116,21 +121,45 @@ std::vector<std::string> declaredTests(const fs::path& dir) {
     return names;
 }
 
-// name -> (passed, failure message, output) from a CTest JUnit file.
+// The value of attribute `name` in the start tag `tag` ("" if absent).
+std::string attribute(const std::string& tag, const std::string& name) {
+    const std::string key = " " + name + "=\"";
+    const size_t a = tag.find(key);
+    if (a == std::string::npos) return "";
+    const size_t b = a + key.size(), e = tag.find('"', b);
+    return e == std::string::npos ? "" : tag.substr(b, e - b);
+}
+
+// name -> (passed, failure message, output) from a CTest JUnit file. Parsed with find(), not
+// std::regex: libstdc++'s regex recurses per character and overflows the stack on the
+// megabytes of output a failing skeleton produces.
 std::map<std::string, TestResult> readJUnit(const fs::path& file) {
     std::map<std::string, TestResult> out;
     const std::string xml = readText(file);
-    static const std::regex caseRe(R"re(<testcase\s+name="([^"]*)"[^>]*?status="([^"]*)"[^>]*?(/>|>([\s\S]*?)</testcase>))re");
-    static const std::regex failRe(R"re(<failure\s+message="([^"]*)")re");
-    static const std::regex outRe(R"re(<system-out>([\s\S]*?)</system-out>)re");
-    for (std::sregex_iterator it(xml.begin(), xml.end(), caseRe), end; it != end; ++it) {
+    for (size_t pos = 0; (pos = xml.find("<testcase", pos)) != std::string::npos;) {
+        const size_t tagEnd = xml.find('>', pos);
+        if (tagEnd == std::string::npos) break;
+        const std::string tag = xml.substr(pos, tagEnd - pos);
+        std::string body;
+        size_t next = tagEnd + 1;
+        if (xml[tagEnd - 1] != '/') {   // <testcase ...> body </testcase>
+            const size_t close = xml.find("</testcase>", tagEnd);
+            body = xml.substr(tagEnd + 1, (close == std::string::npos ? xml.size() : close) - tagEnd - 1);
+            next = close == std::string::npos ? xml.size() : close;
+        }
+        pos = next;
         TestResult r;
-        r.name = xmlUnescape((*it)[1]);
-        const std::string status = (*it)[2], body = (*it)[4];
-        std::smatch m;
-        r.passed = status == "run" && body.find("<failure") == std::string::npos;
-        if (std::regex_search(body, m, failRe)) r.message = xmlUnescape(m[1]);
-        if (std::regex_search(body, m, outRe)) r.output = xmlUnescape(m[1]);
+        r.name = xmlUnescape(attribute(tag, "name"));
+        const std::string status = attribute(tag, "status");
+        const size_t failure = body.find("<failure");
+        r.passed = status == "run" && failure == std::string::npos;
+        if (failure != std::string::npos)
+            r.message = xmlUnescape(attribute(body.substr(failure, body.find('>', failure) - failure), "message"));
+        const size_t so = body.find("<system-out>");
+        if (so != std::string::npos) {
+            const size_t b = so + std::string("<system-out>").size(), e = body.find("</system-out>", b);
+            r.output = xmlUnescape(body.substr(b, (e == std::string::npos ? body.size() : e) - b));
+        }
         if (!r.passed && r.message.empty()) r.message = status == "notrun" ? "not run" : "failed";
         out[r.name] = r;
     }
@@ -161,7 +190,8 @@ int main(int argc, char** argv) {
     fs::path source = PATHSPACE_SOURCE_DIR;
     fs::path submission = source / "assignments";
     fs::path out = "grade";
-    std::string lessonsArg = "all";
+    std::string lessonsArg = "all", expect;
+    fs::path junitIn;
     int timeout = 120, jobs = 2;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
@@ -175,11 +205,19 @@ int main(int argc, char** argv) {
         else if (a == "--timeout") timeout = std::stoi(value());
         else if (a == "--jobs") jobs = std::stoi(value());
         else if (a == "--source") source = fs::absolute(value());
+        else if (a == "--junit") junitIn = fs::absolute(value());
+        else if (a == "--expect") {
+            expect = value();
+            if (expect != "zero" && expect != "full") { std::cerr << "grade: --expect takes zero or full\n"; return 2; }
+        }
         else if (a == "--help" || a == "-h") {
             std::cout << "usage: grade [--submission DIR] [--lessons 0,1|all] [--out DIR] [--timeout SECONDS] [--jobs N]\n"
+                         "       grade --junit FILE [--lessons 0,1|all] [--out DIR] [--expect zero|full]\n"
                          "Scores each lesson in isolation (that lesson from DIR, the others from solutions/).\n"
                          "DIR holds lesson folders like assignments/ (default: assignments/). Writes\n"
-                         "OUT/results.json (Gradescope) and OUT/junit.xml (default OUT: ./grade).\n";
+                         "OUT/results.json (Gradescope) and OUT/junit.xml (default OUT: ./grade).\n"
+                         "--junit FILE scores the graded tests from an existing CTest JUnit report instead of\n"
+                         "building; --expect zero|full then exits 1 unless every graded test failed / passed.\n";
             return 0;
         } else { std::cerr << "grade: unknown option " << a << " (see --help)\n"; return 2; }
     }
@@ -206,8 +244,25 @@ int main(int argc, char** argv) {
 
     std::vector<TestResult> results;
     std::string junit = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites>\n";
+    if (!junitIn.empty() && !fs::is_regular_file(junitIn)) {
+        std::cerr << "grade: " << junitIn.string() << ": no such JUnit report\n";
+        return 2;
+    }
+    const std::map<std::string, TestResult> reported = junitIn.empty() ? std::map<std::string, TestResult>() : readJUnit(junitIn);
     for (const std::string& lesson : lessons) {
         const std::string nn = lesson.substr(0, 2);
+        if (!junitIn.empty()) {   // score from the report, nothing to build
+            for (const std::string& name : declaredTests(source / "tests" / lesson)) {
+                auto it = reported.find(name);
+                TestResult r = it != reported.end() ? it->second : TestResult();
+                if (it == reported.end()) r.message = "not in " + junitIn.string();
+                r.lesson = lesson;
+                r.name = name;
+                r.points = pointsOf(name);
+                results.push_back(r);
+            }
+            continue;
+        }
         const fs::path build = out / ("build-" + nn), log = out / ("build-" + nn + ".log");
         std::cerr << "grade: lesson " << lesson << ": building (log: " << log.string() << ")\n";
         const bool built =
@@ -244,7 +299,7 @@ int main(int argc, char** argv) {
                              xmlEscape(buildError) + "\"/></testcase></testsuite>\n";
     }
     junit += "</testsuites>\n";
-    std::ofstream(out / "junit.xml") << junit;
+    if (junitIn.empty()) std::ofstream(out / "junit.xml") << junit;
 
     // Score table and Gradescope results.
     int score = 0, maxScore = 0;
@@ -274,6 +329,19 @@ int main(int argc, char** argv) {
     std::printf("%-16s %d / %d\n", "total", score, maxScore);
     std::ofstream(out / "results.json") << "{\n  \"score\": " << score << ",\n  \"max_score\": " << maxScore
                                         << ",\n  \"tests\": [\n" << tests.str() << "\n  ]\n}\n";
-    std::cerr << "grade: wrote " << (out / "results.json").string() << " and " << (out / "junit.xml").string() << "\n";
+    std::cerr << "grade: wrote " << (out / "results.json").string()
+              << (junitIn.empty() ? " and " + (out / "junit.xml").string() : "") << "\n";
+    if (!expect.empty()) {
+        std::string wrong;
+        for (const TestResult& r : results)
+            if (r.passed != (expect == "full")) wrong += "  " + r.lesson + ": " + r.name + "\n";
+        if (!wrong.empty()) {
+            std::cerr << "grade: expected every graded test to " << (expect == "full" ? "pass" : "fail")
+                      << "; these did not:\n" << wrong;
+            return 1;
+        }
+        std::cerr << "grade: all " << results.size() << " graded tests " << (expect == "full" ? "passed" : "failed")
+                  << ", as expected\n";
+    }
     return 0;
 }
