@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <sstream>
 #include <string>
 #include <vector>
 #include <sys/stat.h>
@@ -21,7 +22,7 @@ const char* kUsage = R"(pathspace - a light transport course renderer
 
 usage:
   pathspace render SCENE [options]   render a scene file (see scenes/README.md)
-  pathspace converge SCENE --algos A,B,... --time SECONDS [options]
+  pathspace converge SCENE --algos A,B,... (--time SECONDS | --spp N) [options]
                                      error against run time of several algorithms
   pathspace info SCENE               print what the scene contains and needs
   pathspace --help                   this text
@@ -44,10 +45,16 @@ render options:
 
 converge options:
   --algos A,B,...    the algorithms to compare (required)
-  --time SECONDS     time budget of each algorithm (and seed) (required)
+  --time SECONDS     time budget of each algorithm (and seed)
+  --spp N            samples per pixel of each algorithm (and seed): equal samples instead
+                     of equal time (with --time too: whichever comes first); one is required
   --reference REF    the reference image (.pfm); without it one is rendered first with
                      --ref-algo (default: the first algorithm) for --ref-time seconds
-                     (default: 10 x --time) and written to DIR/reference.pfm
+                     (default: 10 x --time; required without --time) and written to
+                     DIR/reference.pfm
+  --regions M1,M2,...  also the relMSE of each region of the image: region Mk holds the pixels
+                     whose centre ray first hits a surface of material Mk (a 'material' name
+                     of the scene file); printed and written to DIR/regions.md
   --seeds K          independent runs per algorithm, averaged in the plot and table (default 1)
   --out DIR          where the report goes (default: converge-SCENE); it holds
                      convergence.csv, convergence.svg (log-log relMSE against seconds with a
@@ -213,7 +220,9 @@ std::vector<std::string> splitList(const std::string& s) {
 
 int converge(const std::vector<std::string>& args) {
     std::string scenePath, reference, refAlgo, outDir;
+    std::vector<std::string> regionNames;
     ps::ConvergeOptions opt;
+    opt.seconds = 0.0;
     opt.progress = isatty(2);
     double refSeconds = 0.0;
     int maxDepth = -1;
@@ -230,6 +239,8 @@ int converge(const std::vector<std::string>& args) {
         };
         if (a == "--algos") opt.algos = splitList(value());
         else if (a == "--time") opt.seconds = positive(parseNumber<double>(a, value()));
+        else if (a == "--spp") opt.spp = static_cast<int>(positive(parseNumber<int>(a, value())));
+        else if (a == "--regions") regionNames = splitList(value());
         else if (a == "--reference") reference = value();
         else if (a == "--ref-algo") refAlgo = value();
         else if (a == "--ref-time") refSeconds = positive(parseNumber<double>(a, value()));
@@ -246,10 +257,19 @@ int converge(const std::vector<std::string>& args) {
     }
     if (scenePath.empty()) throw UsageError("'converge' needs a scene file");
     if (opt.algos.empty()) throw UsageError("'converge' needs --algos A,B,...");
-    if (args.end() == std::find(args.begin(), args.end(), "--time")) throw UsageError("'converge' needs --time SECONDS");
+    if (opt.seconds == 0.0 && opt.spp == 0) throw UsageError("'converge' needs --time SECONDS or --spp N");
+    if (opt.seconds == 0.0 && reference.empty() && refSeconds == 0.0)
+        throw UsageError("'converge' without --time needs --reference REF or --ref-time SECONDS");
     for (const std::string& a : opt.algos) ps::makeIntegrator(a);   // unknown names fail now, not later
     ps::Scene scene = ps::loadScene(scenePath);
     if (maxDepth >= 0) scene.settings.maxDepth = maxDepth;
+    if (!regionNames.empty()) {
+        try {
+            opt.regions = ps::materialRegions(scene, regionNames);
+        } catch (const ps::InputError& e) {
+            throw ps::InputError(scenePath, 0, e.what());
+        }
+    }
     scene.settings.prune = prune;
     for (const std::string& a : opt.algos) printLeftOut(a, *ps::makeIntegrator(a), scene);
     const std::string name = stem(baseName(scenePath));
@@ -285,14 +305,24 @@ int converge(const std::vector<std::string>& args) {
     std::ofstream(outDir + "/convergence.svg")
         << ps::convergencePlotSvg(name + ": relMSE against render time (" + std::to_string(opt.seeds) + " seed(s))", report);
     const std::string table = ps::efficiencyTable(report);
-    std::ofstream(outDir + "/efficiency.md") << "Efficiency on " << name << " at " << opt.seconds
-                                             << " s per algorithm (relMSE with eps = 0.01):\n\n" << table;
+    std::ostringstream budget;
+    if (opt.seconds > 0.0) budget << opt.seconds << " s";
+    if (opt.spp > 0) budget << (opt.seconds > 0.0 ? " or " : "") << opt.spp << " spp";
+    std::ofstream(outDir + "/efficiency.md") << "Efficiency on " << name << " at " << budget.str()
+                                             << " per algorithm (relMSE with eps = 0.01):\n\n" << table;
     std::vector<ps::Image> images = report.finalImages;
     images.push_back(ref);
     const ps::Image strip = ps::sideBySide(images);
     ps::writePNG(outDir + "/equal-time.png", strip);
     ps::writePFM(outDir + "/equal-time.pfm", strip);
     std::cout << table;
+    if (!regionNames.empty()) {
+        const std::string regions = ps::regionTable(report, opt.regions);
+        std::ofstream(outDir + "/regions.md") << "relMSE (eps = 0.01) of each region of " << name
+                                              << " (the pixels that see each material) at the end of the run:\n\n"
+                                              << regions;
+        std::cout << "\n" << regions;
+    }
     // A reference must be much better than what it judges (../shared/notes/testing.md).
     if (!refVariance.pixels.empty()) {
         double var = 0.0, smallest = 1e300;
@@ -303,7 +333,8 @@ int converge(const std::vector<std::string>& args) {
             std::cerr << "pathspace: warning: the reference's own variance (" << var << ") is more than 3 % of the "
                       << "smallest MSE reported (" << smallest << "): give it more time (--ref-time)\n";
     }
-    std::cout << "pathspace: wrote " << outDir << "/{convergence.csv,convergence.svg,efficiency.md,equal-time.png}\n";
+    std::cout << "pathspace: wrote " << outDir << "/{convergence.csv,convergence.svg,efficiency.md,equal-time.png"
+              << (regionNames.empty() ? "" : ",regions.md") << "}\n";
     return 0;
 }
 

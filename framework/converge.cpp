@@ -4,8 +4,50 @@
 #include <cstdio>
 #include <map>
 #include <sstream>
+#include "errors.h"
 
 namespace ps {
+
+Regions materialRegions(const Scene& scene, const std::vector<std::string>& materials) {
+    Regions r;
+    r.names = materials;
+    std::vector<int> regionOfMaterial(scene.materials.size(), -1);
+    for (size_t k = 0; k < materials.size(); ++k) {
+        size_t m = 0;
+        while (m < scene.materials.size() && scene.materials[m].name != materials[k]) ++m;
+        if (m == scene.materials.size()) {
+            std::string known;
+            for (const Material& mat : scene.materials)   // "(emitter)" and the like are not in the file
+                if (mat.name.rfind('(', 0) != 0) known += (known.empty() ? "" : ", ") + mat.name;
+            throw InputError("no material '" + materials[k] + "' for --regions (the scene has: " + known + ")");
+        }
+        regionOfMaterial[m] = static_cast<int>(k);
+    }
+    const int w = scene.camera.width(), h = scene.camera.height();
+    r.ofPixel.assign(size_t(w) * h, -1);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            Ray ray = scene.camera.generateRay(Vec2(x + 0.5f, y + 0.5f));
+            SurfacePoint sp;
+            if (scene.intersect(ray, sp) && sp.material >= 0) r.ofPixel[size_t(y) * w + x] = regionOfMaterial[sp.material];
+        }
+    return r;
+}
+
+std::vector<double> regionRelMse(const Image& img, const Image& ref, const Regions& regions) {
+    std::vector<double> sum(regions.names.size(), 0.0), count(regions.names.size(), 0.0);
+    for (size_t i = 0; i < img.pixels.size() && i < regions.ofPixel.size(); ++i) {
+        const int k = regions.ofPixel[i];
+        if (k < 0) continue;
+        for (int c = 0; c < 3; ++c) {
+            const double x = img.pixels[i][c], r = ref.pixels[i][c];
+            sum[k] += (x - r) * (x - r) / (r * r + kRelMseEpsilon);
+            count[k] += 1.0;
+        }
+    }
+    for (size_t k = 0; k < sum.size(); ++k) sum[k] = count[k] > 0.0 ? sum[k] / count[k] : 0.0;
+    return sum;
+}
 
 ConvergenceReport runConvergence(const Scene& scene, const Image& reference, const ConvergeOptions& opt) {
     ConvergenceReport report;
@@ -14,6 +56,7 @@ ConvergenceReport runConvergence(const Scene& scene, const Image& reference, con
             auto integrator = makeIntegrator(algo);
             RenderOptions ro;
             ro.seconds = opt.seconds;
+            ro.spp = opt.spp;
             ro.seed = static_cast<uint64_t>(seed);
             ro.threads = opt.threads;
             ro.progress = opt.progress;
@@ -23,7 +66,9 @@ ConvergenceReport runConvergence(const Scene& scene, const Image& reference, con
                 p.seed = static_cast<uint64_t>(seed);
                 p.spp = spp;
                 p.seconds = seconds;
-                p.error = computeError(film.mean(), reference);
+                const Image mean = film.mean();
+                p.error = computeError(mean, reference);
+                if (!opt.regions.names.empty()) p.regionRelMse = regionRelMse(mean, reference, opt.regions);
                 p.nan = stats.nan;
                 p.inf = stats.inf;
                 report.points.push_back(p);
@@ -86,6 +131,8 @@ std::vector<Curve> meanCurves(const ConvergenceReport& report) {
             L.error.mse += p->error.mse / seeds;
             L.error.relMse += p->error.relMse / seeds;
             L.error.relMseTrimmed += p->error.relMseTrimmed / seeds;
+            L.regionRelMse.resize(p->regionRelMse.size(), 0.0);
+            for (size_t k = 0; k < p->regionRelMse.size(); ++k) L.regionRelMse[k] += p->regionRelMse[k] / seeds;
             L.nan += p->nan;
             L.inf += p->inf;
         }
@@ -184,6 +231,26 @@ std::string efficiencyTable(const ConvergenceReport& report) {
                       p.seconds, p.error.relMse, p.error.relMseTrimmed, efficiency(p),
                       static_cast<unsigned long long>(p.nan), static_cast<unsigned long long>(p.inf));
         os << line;
+    }
+    return os.str();
+}
+
+std::string regionTable(const ConvergenceReport& report, const Regions& regions) {
+    std::ostringstream os;
+    os << "| algorithm | spp |";
+    for (const std::string& n : regions.names) os << " " << n << " |";
+    os << " whole image |\n|---|---:|";
+    for (size_t k = 0; k <= regions.names.size(); ++k) os << "---:|";
+    os << "\n";
+    char cell[64];
+    for (const Curve& c : meanCurves(report)) {
+        os << "| " << c.algo << " | " << c.last.spp << " |";
+        for (size_t k = 0; k < regions.names.size(); ++k) {
+            std::snprintf(cell, sizeof cell, " %.4g |", k < c.last.regionRelMse.size() ? c.last.regionRelMse[k] : 0.0);
+            os << cell;
+        }
+        std::snprintf(cell, sizeof cell, " %.4g |\n", c.last.error.relMse);
+        os << cell;
     }
     return os.str();
 }

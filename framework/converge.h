@@ -2,7 +2,8 @@
 // each algorithm renders for the same time budget, checkpoints at 1, 2, 4, ... iterations
 // record wall time and the error against a reference, and the report is a CSV, a log-log SVG
 // plot of relMSE against seconds with a slope -1 guide, a Markdown efficiency table, and the
-// equal-time images side by side.
+// equal-time images side by side. Optionally (--regions) the error of each region of the
+// image: the pixels that see a given material.
 #pragma once
 #include <string>
 #include <vector>
@@ -11,9 +12,23 @@
 
 namespace ps {
 
+// Pixels grouped into named regions, for the error of each region (`converge --regions`):
+// region k holds the pixels whose centre ray first hits a surface of material names[k].
+struct Regions {
+    std::vector<std::string> names;
+    std::vector<int> ofPixel;   // per pixel, row by row: its region, -1 for none
+};
+
+// Throws InputError for a material the scene does not have (the message lists those it has).
+Regions materialRegions(const Scene& scene, const std::vector<std::string>& materials);
+// relMSE (eps = 0.01) over the pixels of each region (0 for a region without pixels).
+std::vector<double> regionRelMse(const Image& img, const Image& ref, const Regions& regions);
+
 struct ConvergeOptions {
     std::vector<std::string> algos;
-    double seconds = 1.0;   // time budget of each algorithm and seed
+    double seconds = 1.0;   // time budget of each algorithm and seed (0: none)
+    int spp = 0;            // samples per pixel of each run (0: none); with both, whichever first
+    Regions regions;        // empty: no per-region errors
     int seeds = 1;          // independent runs per algorithm (seeds 0 .. seeds-1), averaged
     int threads = 0;
     bool progress = false;
@@ -25,6 +40,7 @@ struct ConvergencePoint {
     int spp = 0;
     double seconds = 0.0;
     ErrorMetrics error;
+    std::vector<double> regionRelMse;   // per region of ConvergeOptions::regions
     uint64_t nan = 0, inf = 0;
 };
 
@@ -42,6 +58,9 @@ std::string convergenceCsv(const std::string& sceneName, const ConvergenceReport
 std::string convergencePlotSvg(const std::string& title, const ConvergenceReport& report);
 // Efficiency 1 / (relMSE x seconds) at the end of the budget, best first.
 std::string efficiencyTable(const ConvergenceReport& report);
+// relMSE of each region at the end of the run, the mean over seeds: one row per algorithm, one
+// column per region, then the whole image.
+std::string regionTable(const ConvergenceReport& report, const Regions& regions);
 // Images next to each other, left to right, in the given order.
 Image sideBySide(const std::vector<Image>& images);
 
