@@ -15,7 +15,7 @@ Color LiRandomWalk(const Scene& scene, const Ray& cameraRay, Rng& rng, int maxDe
     //          4. sampleBSDF(scene.materials[sp.material], sp.n, -ray.d, rng.uniform2(),
     //             rng.uniform(), Transport::Radiance, s); stop if it fails. beta *= s.weight
     //             (f |cos| / pdf); stop if beta is black.
-    //          5. Russian roulette (Eq. 3.4): q = survivalProbability(beta, bounces + 1); stop
+    //          5. Russian roulette (Eq. 3.5): q = survivalProbability(beta, bounces + 1); stop
     //             if rng.uniform() >= q, else beta /= q. (Draw the number only when q < 1.)
     //          6. ray = scene.spawnRay(sp, s.wi).
     (void)scene; (void)cameraRay; (void)rng; (void)maxDepth;

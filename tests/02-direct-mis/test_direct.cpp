@@ -189,3 +189,60 @@ TEST_CASE("direct: multi-sample MIS gives Lambert's irradiance with each heurist
 TEST_CASE("direct: one-sample MIS gives Lambert's irradiance from polygonal lights (t-test) [1 pt]") {
     checkLambert("direct-onesample", 120000, 150);
 }
+
+TEST_CASE("direct: multi-sample and one-sample MIS weight each sample by the heuristic they are given (Eq. 2.6, 2.11) [1 pt]") {
+    // The two combined estimators, called with the same random numbers as your own light and
+    // BSDF samples, must return exactly what Eq. 2.6 and 2.11 make of those samples with YOUR
+    // misWeight and the heuristic passed in (the unbiasedness tests above cannot tell the
+    // heuristics apart: all three are unbiased). Surface points: the plates of
+    // data/plates-moderate.scene, where both techniques often reach the same light.
+    const ps::Scene scene = ps::loadScene(sourcePath("tests/02-direct-mis/data/plates-moderate.scene"));
+    const float c = ps::kOneSampleLightProbability;
+    ps::Rng rng(26);
+    const ps::Heuristic heuristics[] = {ps::Heuristic::Balance, ps::Heuristic::Power, ps::Heuristic::Maximum};
+    const char* names[] = {"balance", "power", "maximum"};
+    int failures = 0, both = 0;
+    for (int y = 1; y < 32; y += 3)
+        for (int x = 1; x < 32; x += 3) {
+            ps::Ray ray = scene.camera.generateRay(Vec2(x + 0.5f, y + 0.5f));
+            const Vec3 wo = -ray.d;
+            ps::SurfacePoint sp;
+            if (!scene.intersect(ray, sp) || sp.light >= 0) continue;
+            for (int i = 0; i < 40; ++i) {
+                ps::DirectRandom u;
+                u.uLight = rng.uniform();
+                u.uPoint = rng.uniform2();
+                u.uBSDF = rng.uniform2();
+                u.uLobe = rng.uniform();
+                u.uChoice = rng.uniform();
+                const ps::DirectSample a = ps::sampleDirectLight(scene, sp, wo, u.uLight, u.uPoint);
+                const ps::DirectSample b = ps::sampleDirectBSDF(scene, sp, wo, u.uBSDF, u.uLobe);
+                if (sum(a.value) > 0.0 && sum(b.value) > 0.0) ++both;
+                for (int h = 0; h < 3; ++h) {
+                    const ps::Heuristic H = heuristics[h];
+                    const Color multi = ps::misWeight(H, 1.0f, a.pdfLight, 1.0f, a.pdfBSDF) * a.value +
+                                        ps::misWeight(H, 1.0f, b.pdfBSDF, 1.0f, b.pdfLight) * b.value;
+                    const Color one = u.uChoice < c ? a.value * (ps::misWeight(H, c, a.pdfLight, 1.0f - c, a.pdfBSDF) / c)
+                                                    : b.value * (ps::misWeight(H, 1.0f - c, b.pdfBSDF, c, b.pdfLight) / (1.0f - c));
+                    const Color gotMulti = ps::directMultiSample(scene, sp, wo, H, u);
+                    const Color gotOne = ps::directOneSample(scene, sp, wo, H, u);
+                    auto close = [](const Color& p, const Color& q) {
+                        for (int k = 0; k < 3; ++k)
+                            if (!(std::abs(p[k] - q[k]) <= 1e-4f * std::max(std::abs(q[k]), 1e-3f))) return false;
+                        return true;
+                    };
+                    if (!close(gotMulti, multi) && ++failures <= 3)
+                        FAIL_CHECK("directMultiSample(" << names[h] << ") at " << str(sp.p) << ": expected w_light "
+                                   << "* light sample + w_bsdf * BSDF sample = " << str(multi) << " (light sample "
+                                   << str(a.value) << ", pdfs " << a.pdfLight << " / " << a.pdfBSDF << "; BSDF sample "
+                                   << str(b.value) << ", pdfs " << b.pdfBSDF << " / " << b.pdfLight << "), got " << str(gotMulti));
+                    if (!close(gotOne, one) && ++failures <= 3)
+                        FAIL_CHECK("directOneSample(" << names[h] << ") at " << str(sp.p) << " with uChoice " << u.uChoice
+                                   << ": expected " << (u.uChoice < c ? "w_light * light sample / c" : "w_bsdf * BSDF sample / (1 - c)")
+                                   << " = " << str(one) << " (weights with n = c, 1 - c), got " << str(gotOne));
+                }
+            }
+        }
+    CHECK_MESSAGE(both >= 100, "expected at least 100 cases where both the light and the BSDF sample reach a light, got " << both);
+    CHECK_MESSAGE(failures == 0, "expected every combined estimate to be the weighted sum of its samples, got " << failures << " wrong");
+}

@@ -129,12 +129,14 @@ struct Render {
     ps::SampleStats stats;
     std::string algo;
 };
+// Renders spp iterations of the named integrator with a fixed seed, on one thread (tiny test
+// images: see lesson02.h). The image does not depend on the thread count.
 inline Render render(const ps::Scene& scene, const std::string& algo, int spp, uint64_t seed) {
     std::unique_ptr<ps::Integrator> integrator = ps::makeIntegrator(algo);
     ps::RenderOptions opt;
     opt.spp = spp;
     opt.seed = seed;
-    opt.threads = 2;
+    opt.threads = 1;
     const ps::RenderResult r = ps::render(scene, *integrator, opt);
     return {r.film.mean(), r.film.varianceOfMean(), r.stats, algo};
 }

@@ -46,3 +46,23 @@ TEST_CASE("path tracing: maxdepth 0 is the emission seen directly, 1 and 2 add o
                           << expected << "), got R + G + B from " << s.min << " to " << s.max << " (" << s.bad << " NaN or Inf)");
     }
 }
+
+TEST_CASE("roulette: Russian roulette ends long paths (furnace, albedo 0.5, maxdepth 1000) [1 pt]") {
+    // With maxdepth 1000 only Russian roulette can end a path in the closed furnace (albedo 0.5):
+    // without it every path would trace 1001 rays (and NEE another 1000 shadow rays). With
+    // Eq. 3.5 a path survives its first two bounces for sure and then each further one with
+    // probability about 0.5 (q follows the throughput, and a survivor's throughput is divided
+    // by q): a few rays per path. Counted with takeRayCount (scene.h) over 1000 paths; every
+    // sample must also be at least the emission seen directly, Le = 1 per channel.
+    const ps::Scene scene = furnace(Enclosure::Cube, 0.5f, 1.0f);
+    for (const Estimator& e : estimators()) {
+        ps::takeRayCount();
+        const Samples s = sampleLi(scene, e, 1000, 1000, 361);
+        const double raysPerPath = double(ps::takeRayCount()) / 1000.0;
+        CHECK_MESSAGE((s.bad == 0 && s.w.n == 1000 && s.min >= 3.0 && raysPerPath <= 40.0),
+                      e.name << ", closed cube furnace (albedo 0.5, Le 1), maxdepth 1000, 1000 paths: expected at most 40 "
+                             << "rays per path (Russian roulette, Eq. 3.5) and every sample >= Le (R + G + B >= 3), got "
+                             << raysPerPath << " rays per path, R + G + B from " << s.min << " to " << s.max << " ("
+                             << s.bad << " NaN or Inf)");
+    }
+}
