@@ -14,8 +14,8 @@ Camera::Camera(const Vec3& eye, const Vec3& target, const Vec3& up, float fovY, 
 namespace {
 // Raster position of the direction d (any length) from the pinhole, given the camera's basis;
 // false if d points behind the camera or outside the image.
-bool rasterOfDirection(const Vec3& d, const Vec3& forward, const Vec3& right, const Vec3& up, float tanHalfX,
-                       float tanHalfY, int width, int height, Vec2& raster) {
+bool rasterOf(const Vec3& d, const Vec3& forward, const Vec3& right, const Vec3& up, float tanHalfX, float tanHalfY,
+              int width, int height, Vec2& raster) {
     const float z = glm::dot(d, forward);
     if (!(z > 0.0f)) return false;
     const float sx = glm::dot(d, right) / z, sy = glm::dot(d, up) / z;
@@ -25,23 +25,21 @@ bool rasterOfDirection(const Vec3& d, const Vec3& forward, const Vec3& right, co
 }  // namespace
 
 bool Camera::rasterPosition(const Vec3& p, Vec2& raster) const {
-    return rasterOfDirection(p - eye_, forward_, right_, up_, tanHalfX_, tanHalfY_, width_, height_, raster);
+    return rasterOf(p - eye_, forward_, right_, up_, tanHalfX_, tanHalfY_, width_, height_, raster);
 }
 
-// W_e and the pdf test the direction itself: eye_ + dir would be rounded to the ulp of the
-// eye's coordinates (0.008 at 1e5) and misjudge directions near the image edges.
-float Camera::We(const Vec3& dir) const {
-    const float cosTheta = glm::dot(dir, forward_);
-    Vec2 raster;
-    if (!(cosTheta > 0.0f) || !rasterOfDirection(dir, forward_, right_, up_, tanHalfX_, tanHalfY_, width_, height_, raster)) return 0.0f;
-    const float c2 = cosTheta * cosTheta;
-    return 1.0f / (imagePlaneArea() * c2 * c2);
+bool Camera::rasterOfDirection(const Vec3& dir, Vec2& raster) const {
+    return rasterOf(dir, forward_, right_, up_, tanHalfX_, tanHalfY_, width_, height_, raster);
 }
 
+// Camera::We (the emitted importance) is lesson 4's piece: solutions/04-measurement/importance.cpp.
+
+// The pdf tests the direction itself: eye_ + dir would be rounded to the ulp of the eye's
+// coordinates (0.008 at 1e5) and misjudge directions near the image edges.
 float Camera::pdfDirection(const Vec3& dir) const {
     const float cosTheta = glm::dot(dir, forward_);
     Vec2 raster;
-    if (!(cosTheta > 0.0f) || !rasterOfDirection(dir, forward_, right_, up_, tanHalfX_, tanHalfY_, width_, height_, raster)) return 0.0f;
+    if (!(cosTheta > 0.0f) || !rasterOf(dir, forward_, right_, up_, tanHalfX_, tanHalfY_, width_, height_, raster)) return 0.0f;
     return 1.0f / (imagePlaneArea() * cosTheta * cosTheta * cosTheta);
 }
 

@@ -23,11 +23,16 @@ public:
     // Raster position where the direction from the pinhole towards p crosses the image;
     // false if p is behind the camera or outside the image.
     bool rasterPosition(const Vec3& p, Vec2& raster) const;
+    // The same for a direction dir (any length) leaving the pinhole. Prefer it to
+    // rasterPosition(position() + dir): adding dir to a far-off eye rounds it.
+    bool rasterOfDirection(const Vec3& dir, Vec2& raster) const;
 
     // Importance emitted along dir (unit, from the pinhole), normalised over the whole image:
     // W_e = 1 / (A cos^4 theta) inside the image, 0 outside, where A is the area of the image
     // rectangle at distance 1. Then the integral of W_e cos(theta) over the image's directions
     // is 1. A single pixel's sensor is W_e * width * height restricted to that pixel.
+    // Lesson 4's piece: implemented in solutions/04-measurement/importance.cpp (reference) or
+    // assignments/04-measurement/importance.cpp (yours), not in camera.cpp.
     float We(const Vec3& dir) const;
 
     // Solid-angle pdf of dir for rays through uniformly chosen raster positions:

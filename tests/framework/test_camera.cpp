@@ -1,5 +1,5 @@
-// Tests of framework/camera.h: the pinhole camera's rays, raster positions, emitted importance
-// W_e and direction pdf.
+// Tests of framework/camera.h: the pinhole camera's rays, raster positions and direction pdf.
+// (The emitted importance W_e is lesson 4's piece: tests/04-measurement tests it.)
 #include <doctest/doctest.h>
 #include <cmath>
 #include <functional>
@@ -121,15 +121,16 @@ TEST_CASE("camera: points behind the camera, in its plane, or outside the image 
         CHECK_FALSE(cam.rasterPosition(eye + 10.0f * (f + 1.01f * ty * u), raster));
         CHECK_FALSE(cam.rasterPosition(eye + 10.0f * (f - 1.01f * ty * u), raster));
         CHECK(cam.rasterPosition(eye + 10.0f * (f + 0.99f * tx * r + 0.99f * ty * u), raster));
-        // W_e and the pdf are 0 there too.
-        CHECK(cam.We(-f) == 0.0f);
+        // The pdf is 0 there too, and rasterOfDirection agrees with rasterPosition.
         CHECK(cam.pdfDirection(-f) == 0.0f);
-        CHECK(cam.We(glm::normalize(f + 1.01f * tx * r)) == 0.0f);
         CHECK(cam.pdfDirection(glm::normalize(f - 1.01f * ty * u)) == 0.0f);
+        CHECK_FALSE(cam.rasterOfDirection(-f, raster));
+        CHECK_FALSE(cam.rasterOfDirection(f + 1.01f * tx * r, raster));
+        CHECK(cam.rasterOfDirection(f + 0.99f * tx * r + 0.99f * ty * u, raster));
     }
 }
 
-TEST_CASE("camera: W_e cos integrates to 1 over the image's directions, the pdf to 1") {
+TEST_CASE("camera: pdfDirection integrates to 1 over the image's directions") {
     // Integrated over a rectangle 1.25 times the image in each direction, so the zero outside
     // is tested too; the image edges fall on cell edges (grid of 500: the edges at cells 50 and
     // 450). Each cell's solid angle is exact (spherical triangles), the integrand is taken at
@@ -137,12 +138,9 @@ TEST_CASE("camera: W_e cos integrates to 1 over the image's directions, the pdf 
     for (const CameraCase& cc : kCameras) {
         const Camera cam = make(cc);
         const ImagePlane p = planeOf(cam);
-        const Vec3 f = cam.forward();
         const double X = 1.25 * p.tx, Y = 1.25 * p.ty;
-        const double iWe = integrateOverRect(p, -X, -Y, X, Y, 500, [&](const Vec3& d) { return cam.We(d) * glm::dot(d, f); });
         const double iPdf = integrateOverRect(p, -X, -Y, X, Y, 500, [&](const Vec3& d) { return cam.pdfDirection(d); });
         INFO(cc.name);
-        CHECK_MESSAGE(std::abs(iWe - 1.0) < 1e-3, "integral of W_e cos over the image: expected 1, got " << iWe);
         CHECK_MESSAGE(std::abs(iPdf - 1.0) < 1e-3, "integral of pdfDirection over the image: expected 1, got " << iPdf);
         CHECK(cam.imagePlaneArea() == doctest::Approx(4.0 * p.tx * p.ty).epsilon(1e-5));
     }
@@ -169,28 +167,12 @@ TEST_CASE("camera: pdfDirection is the density of rays through uniform raster po
     }
 }
 
-TEST_CASE("camera: W_e times width times height integrates to 1 over one pixel") {
-    // The pixel (i, j) as a sensor: W_e * w * h restricted to it; its integral of W cos over the
-    // pixel's directions is 1 (32 x 32 sub-cells, exact solid angles; tolerance 1e-3).
-    for (const CameraCase& cc : kCameras) {
-        const Camera cam = make(cc);
-        const ImagePlane p = planeOf(cam);
-        const Vec3 f = cam.forward();
-        for (auto [i, j] : {std::pair<int, int>{cc.w / 2, cc.h / 2}, {0, 0}, {cc.w - 1, cc.h - 1}, {cc.w - 1, 0}}) {
-            const glm::dvec2 a = planeOfRaster(p, cam, i, j + 1.0), b = planeOfRaster(p, cam, i + 1.0, j);
-            const double I = integrateOverRect(p, a.x, a.y, b.x, b.y, 32, [&](const Vec3& d) {
-                return double(cam.We(d)) * cc.w * cc.h * glm::dot(d, f);
-            });
-            CHECK_MESSAGE(std::abs(I - 1.0) < 1e-3, cc.name << ", pixel (" << i << ", " << j << "): expected 1, got " << I);
-        }
-    }
-}
-
-TEST_CASE("camera: W_e and pdfDirection do not depend on where the camera is") {
-    // The same camera at the origin and translated by 1e5: W_e(dir) and pdfDirection(dir) are
-    // functions of the direction alone, so directions half a pixel inside every image edge must
-    // give the same, nonzero values (relative 1e-5). Rounding eye + dir at 1e5 (ulp 0.008)
-    // would move such a direction by ~3 pixels of this 256 x 256 image and drop it.
+TEST_CASE("camera: pdfDirection and rasterOfDirection do not depend on where the camera is") {
+    // The same camera at the origin and translated by 1e5: pdfDirection(dir) and
+    // rasterOfDirection(dir) are functions of the direction alone, so directions half a pixel
+    // inside every image edge must give the same, nonzero pdf (relative 1e-5) and the same raster
+    // position. Rounding eye + dir at 1e5 (ulp 0.008) would move such a direction by ~3 pixels of
+    // this 256 x 256 image and drop it.
     const Camera near(Vec3(0), Vec3(0, 0, 1), Vec3(0, 1, 0), 40.0f, 256, 256);
     const Vec3 shift(1e5f, -1e5f, 1e5f);
     const Camera far(shift, shift + Vec3(0, 0, 1), Vec3(0, 1, 0), 40.0f, 256, 256);
@@ -199,11 +181,15 @@ TEST_CASE("camera: W_e and pdfDirection do not depend on where the camera is") {
         const float c = k + 0.5f;
         for (const Vec2& x : {Vec2(0.5f, c), Vec2(255.5f, c), Vec2(c, 0.5f), Vec2(c, 255.5f), Vec2(c, c)}) {
             const Vec3 d = near.generateRay(x).d;
-            const float we = near.We(d), weFar = far.We(d), pdf = near.pdfDirection(d), pdfFar = far.pdfDirection(d);
-            const bool ok = we > 0.0f && std::abs(weFar - we) <= 1e-5f * we && pdf > 0.0f && std::abs(pdfFar - pdf) <= 1e-5f * pdf;
+            const float pdf = near.pdfDirection(d), pdfFar = far.pdfDirection(d);
+            Vec2 r(-1.0f), rFar(-2.0f);
+            const bool in = near.rasterOfDirection(d, r), inFar = far.rasterOfDirection(d, rFar);
+            const bool ok = pdf > 0.0f && std::abs(pdfFar - pdf) <= 1e-5f * pdf && in && inFar && r == rFar &&
+                            glm::length(r - x) < 1e-3f;
             if (!ok && ++bad <= 5)
-                FAIL_CHECK("raster (" << x.x << ", " << x.y << "): W_e " << we << " at the origin, " << weFar
-                                      << " translated by 1e5; pdf " << pdf << " vs " << pdfFar);
+                FAIL_CHECK("raster (" << x.x << ", " << x.y << "): pdf " << pdf << " at the origin, " << pdfFar
+                                      << " translated by 1e5; rasterOfDirection (" << r.x << ", " << r.y << ") vs ("
+                                      << rFar.x << ", " << rFar.y << ")");
         }
     }
     CHECK_MESSAGE(bad == 0, "expected 0 directions to differ, got " << bad);

@@ -1,0 +1,26 @@
+// Lesson 4 — the emitted importance of the pinhole camera and of one pixel. Interfaces:
+// framework/camera.h (Camera::We) and lessons/04-measurement/measurement.h (pixelImportance).
+// Equation numbers refer to lessons/04-measurement/README.md.
+#include "04-measurement/measurement.h"
+#include "todo.h"
+
+namespace ps {
+
+float Camera::We(const Vec3& dir) const {
+    // TODO(04) The pinhole's importance over the whole image (Eq. 4.5): 0 when dir (unit, from
+    //          the pinhole) points behind the camera or outside the image (rasterOfDirection
+    //          tells), else 1 / (A cos^4 theta) with A = imagePlaneArea() and cos(theta) the
+    //          cosine between dir and forward_.
+    (void)dir;
+    return PS_TODO("lesson 04: Camera::We", 0.0f);
+}
+
+float pixelImportance(const Camera& camera, int px, int py, const Vec3& dir) {
+    // TODO(04) One pixel's sensor (Eq. 4.6): width * height * camera.We(dir) if the raster
+    //          position of dir (camera.rasterOfDirection) lies in pixel (px, py), i.e.
+    //          px <= x < px + 1 and py <= y < py + 1; else 0.
+    (void)camera; (void)px; (void)py; (void)dir;
+    return PS_TODO("lesson 04: pixelImportance", 0.0f);
+}
+
+}  // namespace ps
