@@ -15,6 +15,7 @@
 #include "integrator.h"
 #include "render.h"
 #include "scene_loader.h"
+#include "threads.h"
 
 namespace {
 
@@ -341,6 +342,7 @@ int converge(const std::vector<std::string>& args) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    ps::preferPassiveWaiting(argv);
     std::vector<std::string> args(argv + 1, argv + argc);
     try {
         if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
