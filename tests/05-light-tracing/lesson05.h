@@ -1,0 +1,87 @@
+// Shared by lesson 5's graded tests: scenes at test resolution, renders through the registered
+// integrators, the stored references, pixel masks, the significance level.
+#pragma once
+#include <doctest/doctest.h>
+#include <cmath>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+#include "05-light-tracing/lighttracer.h"
+#include "format.h"
+#include "image.h"
+#include "render.h"
+#include "scene_loader.h"
+#include "statistics.h"
+
+namespace lesson05 {
+
+using ps::Color;
+using ps::Vec2;
+using ps::Vec3;
+using ps::fmt::num;
+using ps::fmt::str;
+
+// Statistical tests in this suite (every other check is exact):
+//   z-tests against stored path-traced references: the Cornell box, all pixels; its border
+//            ring; each of its four edges (sum of the edge's pixels); the Cornell spheres away
+//            from the spheres; the glass lamp                                              -> 8
+//   t-tests: a point light in a sphere at 3 radii                                          -> 3
+// m = 11; each runs at the Sidak level alpha' = 1 - (1 - 0.01)^(1/11) ~ 9.1e-4, so a correct
+// implementation fails any of them by bad luck with probability at most 1 %.
+constexpr int kStatisticalTests = 11;
+inline double alpha() { return ps::stats::sidak(0.01, kStatisticalTests); }
+
+inline std::string sourcePath(const std::string& rel) { return std::string(PATHSPACE_SOURCE_DIR) + "/" + rel; }
+
+inline std::string readText(const std::string& path) {
+    std::ifstream in(path);
+    REQUIRE_MESSAGE(in.good(), "cannot open " << path);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+// A scene file of the repository at width x height pixels (its 'resolution' replaced), so that
+// the tests and the documented reference commands (`sed` on the same file) see the same scene.
+inline ps::Scene loadSceneAt(const std::string& rel, int width, int height) {
+    const std::string path = sourcePath(rel);
+    const std::string text = std::regex_replace(readText(path), std::regex(R"(resolution\s+\d+\s+\d+)"),
+                                                "resolution " + std::to_string(width) + " " + std::to_string(height));
+    return ps::parseScene(text, path);
+}
+
+struct Render {
+    ps::Image mean, variance;
+    ps::SampleStats stats;
+};
+inline Render render(const ps::Scene& scene, const std::string& algo, int iterations, uint64_t seed, int threads = 2) {
+    std::unique_ptr<ps::Integrator> integrator = ps::makeIntegrator(algo);
+    ps::RenderOptions opt;
+    opt.spp = iterations;
+    opt.seed = seed;
+    opt.threads = threads;
+    const ps::RenderResult r = ps::render(scene, *integrator, opt);
+    return {r.film.mean(), r.film.varianceOfMean(), r.stats};
+}
+
+inline double sum(const Color& c) { return double(c.r) + double(c.g) + double(c.b); }
+inline double total(const ps::Image& img) {
+    double t = 0.0;
+    for (const Color& c : img.pixels) t += sum(c);
+    return t;
+}
+
+// The pixels of img where mask is true, as a one-row image (for a z-test on part of an image).
+inline ps::Image select(const ps::Image& img, const std::vector<bool>& mask) {
+    int n = 0;
+    for (bool m : mask) n += m;
+    ps::Image out(n, 1);
+    int k = 0;
+    for (size_t i = 0; i < img.pixels.size(); ++i)
+        if (mask[i]) out.pixels[size_t(k++)] = img.pixels[i];
+    return out;
+}
+
+}  // namespace lesson05
