@@ -34,7 +34,7 @@ TEST_CASE("light tracing: the particle leaving a light carries Le |cos| / (P p_A
         const bool point = scene.lights[l].isDelta();
         const Color expected = e.Le * float((point ? 1.0 : std::abs(double(glm::dot(e.n, e.dir)))) / (double(P) * e.pdfA * e.pdfW));
         ++checked[point];
-        INFO((point ? "point light" : "area light") << ", sample " << i << ": emission point " << str(e.p) << ", direction "
+        INFO(std::string(point ? "point light" : "area light") << ", sample " << i << ": emission point " << str(e.p) << ", direction "
                                                     << str(e.dir) << ", light chosen with probability " << P);
         REQUIRE_MESSAGE(s.valid, "expected a valid start");
         CHECK_MESSAGE(s.light == l, "expected light " << l << ", got " << s.light);
@@ -77,8 +77,8 @@ TEST_CASE("light tracing: the connection to the camera: raster position, W_e G a
         y.errScale = c.onSurface ? ps::maxAbsComponent(c.p) : 0.0f;
         const ps::CameraConnection got = ps::connectToCamera(scene, y, c.onSurface);
         INFO("point " << str(c.p) << (c.onSurface ? ", normal " + str(c.n) : std::string(", not on a surface")));
-        CHECK_MESSAGE(got.valid == c.visible, "expected the connection to be " << (c.visible ? "valid" : "invalid") << ", got "
-                                                                               << (got.valid ? "valid" : "invalid"));
+        CHECK_MESSAGE(got.valid == c.visible, "expected the connection to be " << std::string(c.visible ? "valid" : "invalid") << ", got "
+                                                                               << std::string(got.valid ? "valid" : "invalid"));
         if (!c.visible || !got.valid) continue;
         const glm::dvec3 toEye = -glm::dvec3(c.p);
         const double d = glm::length(toEye), cosE = double(c.p.z) / d;
@@ -110,8 +110,8 @@ TEST_CASE("light tracing: the adjoint BSDF keeps a particle's power through glas
                 ps::BSDFSample s;
                 const bool ok = ps::sampleAdjointBSDF(glass, n, wLight, Vec2(0.3f, 0.6f), uLobe, s);
                 const bool refract = uLobe >= F;
-                INFO("glass (ior 1.5), particle from the " << (sign > 0 ? "outside" : "inside") << " at " << deg << " degrees, "
-                                                           << (refract ? "refraction" : "reflection") << " (F = " << F << ")");
+                INFO("glass (ior 1.5), particle from the " << std::string(sign > 0 ? "outside" : "inside") << " at " << deg << " degrees, "
+                                                           << std::string(refract ? "refraction" : "reflection") << " (F = " << F << ")");
                 REQUIRE_MESSAGE(ok, "expected a valid sample");
                 CHECK_MESSAGE(s.delta, "expected a delta (specular) sample");
                 CHECK_MESSAGE((close(s.weight.r, 1.0, 1e-5) && close(s.weight.g, 1.0, 1e-5) && close(s.weight.b, 1.0, 1e-5)),
@@ -149,7 +149,7 @@ TEST_CASE("light tracing: the adjoint BSDF keeps a particle's power through glas
             const bool ok = !s.delta && close(s.pdf, ps::pdfBSDF(*m, n, wLight, s.wi), 1e-4) && close(s.weight.r, expected.r, 1e-4) &&
                             close(s.weight.g, expected.g, 1e-4) && close(s.weight.b, expected.b, 1e-4);
             if (!ok && ++bad <= 3)
-                FAIL_CHECK((m == &diffuse ? "diffuse" : "Phong (n = 20)")
+                FAIL_CHECK(std::string(m == &diffuse ? "diffuse" : "Phong (n = 20)")
                            << ", particle from " << str(wLight) << ", sampled " << str(s.wi) << ": expected pdf "
                            << ps::pdfBSDF(*m, n, wLight, s.wi) << " and weight f |cos(theta_wi)| / pdf = " << str(expected) << ", got pdf "
                            << s.pdf << " and weight " << str(s.weight));
