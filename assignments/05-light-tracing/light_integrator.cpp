@@ -6,8 +6,8 @@
 // from taskRng(seed, k, i), whichever thread traces it.
 //
 // Left out where the scene shows it cannot contribute (exact: the image's expectation is the
-// same): in a scene whose surfaces are all specular no vertex after the light can be connected
-// to the pinhole (Eq. 5.9), so the paths end at the light (maxDepth 0).
+// same): in a scene whose surfaces are all specular (or black) no vertex after the light can be
+// connected to the pinhole (Eq. 5.9), so the paths end at the light (maxDepth 0).
 #include "05-light-tracing/lighttracer.h"
 
 namespace ps {
@@ -17,12 +17,19 @@ namespace {
 constexpr int kPathsPerTask = 64;
 
 struct LightTracer : Integrator {
-    static bool onlyLightVertices(const Scene& scene) { return scene.settings.prune && !scene.caps.hasNonDeltaBSDF(); }
+    // True if no surface can send light towards the camera: every material is specular, or
+    // black (a light's own "(emitter)" material).
+    static bool onlyLightVertices(const Scene& scene) {
+        if (!scene.settings.prune) return false;
+        for (const Material& m : scene.materials)
+            if (!m.isDelta() && !isBlack(m.albedo)) return false;
+        return true;
+    }
 
     std::vector<std::string> leftOut(const Scene& scene) const override {
         if (!onlyLightVertices(scene)) return {};
-        return {"light paths beyond the lights: every surface is specular, so no later vertex can be connected to the "
-                "pinhole (lesson 5, Eq. 5.9)"};
+        return {"light paths beyond the lights: every surface is specular or black, so no later vertex can be "
+                "connected to the pinhole (lesson 5, Eq. 5.9)"};
     }
 
     void renderIteration(const Scene& scene, uint32_t iteration, uint64_t seed, Image& out,
