@@ -1,0 +1,36 @@
+// Lesson 6 — the geometry term between two path vertices. Interface:
+// lessons/06-path-space/paths.h. Equation numbers refer to lessons/06-path-space/README.md.
+#include "06-path-space/paths.h"
+#include "todo.h"
+
+namespace ps {
+
+float geometryTerm(const PathVertex& a, const PathVertex& b) {
+    //! TODO(06) G(a, b) = |cos theta_a| |cos theta_b| / d^2 without visibility (Eq. 6.4, 6.5):
+    //!          1. Both infinite: 0. One infinite (say a): w = a.sp.n (the direction from b
+    //!             towards the background); G = |cos theta_b| = |dot(b.sp.n, w)|, no 1/d^2
+    //!             (and no cosine at all if b is a point light).
+    //!          2. Otherwise d = b.p() - a.p(), d2 = dot(d, d) (0 if d2 is 0), w = d / sqrt(d2);
+    //!             cos theta_a = |dot(a.sp.n, w)|, cos theta_b = |dot(b.sp.n, w)|, but 1 at a
+    //!             point light (no surface). The pinhole has its cosine: its sp.n is
+    //!             camera.forward(). G = cos theta_a cos theta_b / d2.
+    //! STUB (void)a; (void)b;
+    //! STUB return PS_TODO("lesson 06: geometryTerm", 0.0f);
+    //! BEGIN
+    if (a.infinite && b.infinite) return 0.0f;
+    if (a.infinite || b.infinite) {
+        const PathVertex& f = a.infinite ? b : a;
+        const Vec3& w = a.infinite ? a.sp.n : b.sp.n;
+        return f.pointLight ? 1.0f : std::abs(glm::dot(f.sp.n, w));
+    }
+    const Vec3 d = b.p() - a.p();
+    const float d2 = glm::dot(d, d);
+    if (!(d2 > 0.0f)) return 0.0f;
+    const Vec3 w = d / std::sqrt(d2);
+    const float cosA = a.pointLight ? 1.0f : std::abs(glm::dot(a.sp.n, w));
+    const float cosB = b.pointLight ? 1.0f : std::abs(glm::dot(b.sp.n, w));
+    return cosA * cosB / d2;
+    //! END
+}
+
+}  // namespace ps
