@@ -190,7 +190,6 @@ void checkAllTechniques(const TestPath& t) {
         const double expected = numericPdf(scene, t.v, s);
         REQUIRE_MESSAGE(expected > 0.0, "test setup: the path should be sampleable");
         CHECK_MESSAGE(close(got, expected, 2e-3), "expected p_{s,t} = P(light) |det du/dx| = " << num(expected)
-                                                                                                << " per unit area^" << (expected > 0 ? "n" : "")
                                                                                                 << " (finite-difference Jacobian of the sampling map), got " << num(got)
                                                                                                 << " (ratio " << num(got / expected) << ")");
     }
