@@ -79,13 +79,13 @@ TEST_CASE("path space: the sum over k = 1, 2, 3 of technique (1, k) equals lesso
     scene.settings.maxDepth = 2;
     std::unique_ptr<ps::Integrator> pt = ps::makeIntegrator("pt");
     ps::RenderOptions opt;
-    opt.spp = 1000;
+    opt.spp = 8000;
     opt.seed = kSeed;
     opt.threads = 1;
     const ps::RenderResult ref = ps::render(scene, *pt, opt);
     CHECK_MESSAGE(total(sum) > 0.0, "expected a lit image, got a black one (is f or p_{s,t} 0?)");
     const ps::stats::ZTestResult z = ps::stats::zTestImages(sum, var, ref.film.mean(), ref.film.varianceOfMean(), alpha());
     CHECK_MESSAGE(z.passed, "gap box 16 x 16: expected the sum over k = 1, 2, 3 of technique (1, k) (a) to equal pt with maxdepth 2 (b, "
-                            "1000 spp, seed "
+                            "8000 spp, seed "
                                 << kSeed << ") within the noise, got\n  " << z.report);
 }

@@ -1,0 +1,116 @@
+// Lesson 6 — plumbing (nothing to write here): path vertices from what the framework gives,
+// visibility and directions between vertices, and the Dirac delta of a specular vertex
+// (Eq. 6.11). Interface: lessons/06-path-space/paths.h.
+#include "06-path-space/paths.h"
+
+namespace ps {
+
+PathVertex surfaceVertex(const Scene& scene, const SurfacePoint& sp) {
+    PathVertex v;
+    v.sp = sp;
+    v.onLight = sp.light >= 0;
+    v.specular = sp.material >= 0 && scene.materials[size_t(sp.material)].isDelta();
+    return v;
+}
+
+PathVertex lightVertex(const Scene& scene, int l, const EmissionSample& e) {
+    const Light& light = scene.lights[size_t(l)];
+    if (light.isInfinite()) {
+        PathVertex v = backgroundVertex(scene, -e.dir);
+        return v;
+    }
+    PathVertex v;
+    v.sp = emissionPoint(scene, l, e);
+    v.onLight = true;
+    v.pointLight = light.isDelta();
+    return v;
+}
+
+PathVertex backgroundVertex(const Scene& scene, const Vec3& towardsBackground) {
+    PathVertex v;
+    v.sp.n = towardsBackground;
+    v.sp.light = scene.background;
+    v.onLight = true;
+    v.infinite = true;
+    return v;
+}
+
+PathVertex cameraVertex(const Scene& scene) {
+    PathVertex v;
+    v.sp.p = scene.camera.position();
+    v.sp.n = scene.camera.forward();
+    v.pinhole = true;
+    return v;
+}
+
+Vec3 direction(const PathVertex& a, const PathVertex& b) {
+    if (b.infinite) return b.sp.n;
+    if (a.infinite) return -a.sp.n;
+    return glm::normalize(b.sp.p - a.sp.p);
+}
+
+namespace {
+bool isPoint(const PathVertex& v) { return v.pointLight || v.pinhole; }
+}  // namespace
+
+bool visible(const Scene& scene, const PathVertex& a, const PathVertex& b) {
+    if (a.infinite && b.infinite) return false;
+    if (a.infinite || b.infinite) {
+        const PathVertex& f = a.infinite ? b : a;
+        const Vec3 d = a.infinite ? a.sp.n : b.sp.n;
+        const Ray r = isPoint(f) ? Ray(f.sp.p, d) : scene.spawnRay(f.sp, d);
+        return !scene.occluded(r);
+    }
+    if (isPoint(a) && isPoint(b)) {
+        const Vec3 d = b.sp.p - a.sp.p;
+        const float len = glm::length(d);
+        return len > 0.0f && !scene.occluded(Ray(a.sp.p, d / len, len * (1.0f - 0x1p-20f)));
+    }
+    if (isPoint(b)) return !scene.occluded(scene.spawnRayTo(a.sp, b.sp.p));
+    if (isPoint(a)) return !scene.occluded(scene.spawnRayTo(b.sp, a.sp.p));
+    return !scene.occluded(scene.spawnRayTo(a.sp, b.sp));
+}
+
+DeltaLobe deltaLobe(const Material& m, const Vec3& n, const Vec3& wLight, const Vec3& wCamera) {
+    DeltaLobe d;
+    const float cosL = glm::dot(n, wLight), cosC = glm::dot(n, wCamera);
+    if (!m.isDelta() || cosL == 0.0f || cosC == 0.0f) return d;
+    constexpr float kTolerance = 1e-3f;
+    const bool sameSide = (cosL > 0.0f) == (cosC > 0.0f);
+    const Vec3 ns = cosL > 0.0f ? n : -n;
+    if (m.kind == BSDFKind::Mirror) {
+        if (!sameSide || glm::length(reflect(wLight, ns) - wCamera) > kTolerance) return d;
+        d.valid = true;
+        d.fs = m.albedo / std::abs(cosC);
+        d.pdfLight = d.pdfCamera = 1.0f;
+        return d;
+    }
+    // Smooth dielectric: index 1 on the side n points to, m.ior on the other.
+    const float etaL = cosL > 0.0f ? 1.0f : m.ior, etaC = cosC > 0.0f ? 1.0f : m.ior;
+    const float aL = std::abs(cosL), aC = std::abs(cosC);
+    if (sameSide) {
+        if (glm::length(reflect(wLight, ns) - wCamera) > kTolerance) return d;
+        const float etaOther = cosL > 0.0f ? m.ior : 1.0f;
+        const float F = fresnelDielectric(aL, etaL, etaOther);
+        d.valid = true;
+        d.fs = Color(F / aC);
+        d.pdfLight = F;
+        d.pdfCamera = fresnelDielectric(aC, etaL, etaOther);   // the same side: the same F
+        return d;
+    }
+    const float eta = etaL / etaC;
+    const float sin2T = eta * eta * (1.0f - aL * aL);
+    if (sin2T >= 1.0f) return d;   // total internal reflection: no refracted direction
+    const float cosT = std::sqrt(1.0f - sin2T);
+    const Vec3 t = glm::normalize(-eta * wLight + (eta * aL - cosT) * ns);
+    if (glm::length(t - wCamera) > kTolerance) return d;
+    const float FL = fresnelDielectric(aL, etaL, etaC), FC = fresnelDielectric(aC, etaC, etaL);
+    d.valid = true;
+    d.refracted = true;
+    d.fs = Color((1.0f - FL) / aC);
+    d.pdfLight = 1.0f - FL;
+    d.pdfCamera = (1.0f - FC) * (etaL * etaL * aL) / (etaC * etaC * aC);
+    return d;
+}
+
+}  // namespace ps

@@ -1,0 +1,82 @@
+// Lesson 6 — plumbing (nothing to write here): the image of one technique (s, t) for paths of
+// length exactly k (Eq. 6.2 with one technique): every iteration samples N = width * height
+// paths with sampleTechnique and adds f / (p N) at the pixel each lands in, through a
+// SplatBuffer as lesson 5 (fixed batches, added in order: the image does not depend on the
+// number of threads). The render command knows path-s0 ... path-s4 (s fixed) and path-t1
+// (s = k, light tracing), with k = maxdepth + 1.
+#include "06-path-space/paths.h"
+
+namespace ps {
+
+namespace {
+
+constexpr int kPathsPerTask = 64;
+
+struct TechniqueIntegrator : Integrator {
+    int k, s;   // k < 0: maxdepth + 1; s < 0: s = k (t = 1)
+    TechniqueIntegrator(int k_, int s_) : k(k_), s(s_) {}
+
+    void renderIteration(const Scene& scene, uint32_t iteration, uint64_t seed, Image& out,
+                         SampleStats& stats) override {
+        const int length = k >= 0 ? k : scene.settings.maxDepth + 1;
+        const int lightVertices = s >= 0 ? s : length;
+        const int paths = out.width * out.height;
+        const int tasks = (paths + kPathsPerTask - 1) / kPathsPerTask;
+        SplatBuffer splats(out.width, out.height, static_cast<size_t>(tasks));
+        const float scale = 1.0f / static_cast<float>(paths);
+        uint64_t nan = 0, inf = 0, rays = 0;
+#pragma omp parallel reduction(+ : nan, inf, rays)
+        {
+            SampleStats local;
+#pragma omp for schedule(dynamic, 1)
+            for (int task = 0; task < tasks; ++task) {
+                const int end = std::min(paths, (task + 1) * kPathsPerTask);
+                for (int path = task * kPathsPerTask; path < end; ++path) {
+                    Rng rng = taskRng(seed, iteration, static_cast<uint32_t>(path));
+                    const TechniqueSample ts = sampleTechnique(scene, length, lightVertices, rng);
+                    if (!ts.valid) continue;
+                    const Color c = techniqueEstimate(scene, ts, lightVertices);
+                    if (!isBlack(c)) splats.splat(size_t(task), ts.raster, c * scale, local);
+                }
+            }
+            nan += local.nan;
+            inf += local.inf;
+            rays += takeRayCount();
+        }
+        splats.resolve(out);
+        stats.nan += nan;
+        stats.inf += inf;
+        stats.rays += rays;
+    }
+};
+
+template <int S>
+struct FixedS : TechniqueIntegrator {
+    FixedS() : TechniqueIntegrator(-1, S) {}
+};
+using PathS0 = FixedS<0>;
+using PathS1 = FixedS<1>;
+using PathS2 = FixedS<2>;
+using PathS3 = FixedS<3>;
+using PathS4 = FixedS<4>;
+using PathT1 = FixedS<-1>;
+
+}  // namespace
+
+PS_REGISTER_INTEGRATOR(PathS0, "path-s0", "paths of length maxdepth + 1 by technique s = 0 alone: camera subpath hits a light (lesson 6)");
+PS_REGISTER_INTEGRATOR(PathS1, "path-s1", "paths of length maxdepth + 1 by technique s = 1 alone: next-event estimation (lesson 6)");
+PS_REGISTER_INTEGRATOR(PathS2, "path-s2", "paths of length maxdepth + 1 by technique s = 2 alone (lesson 6)");
+PS_REGISTER_INTEGRATOR(PathS3, "path-s3", "paths of length maxdepth + 1 by technique s = 3 alone (lesson 6)");
+PS_REGISTER_INTEGRATOR(PathS4, "path-s4", "paths of length maxdepth + 1 by technique s = 4 alone (lesson 6)");
+PS_REGISTER_INTEGRATOR(PathT1, "path-t1", "paths of length maxdepth + 1 by technique t = 1 alone: light tracing (lesson 6)");
+
+RenderResult renderTechnique(const Scene& scene, int k, int s, int iterations, uint64_t seed, int threads) {
+    TechniqueIntegrator integrator(k, s);
+    RenderOptions opt;
+    opt.spp = iterations;
+    opt.seed = seed;
+    opt.threads = threads;
+    return render(scene, integrator, opt);
+}
+
+}  // namespace ps

@@ -1,0 +1,76 @@
+// Lesson 6 — plumbing (nothing to write here): sampling a path of length k with technique
+// (s, t = k + 1 - s) (Eq. 6.8), and the estimate f(x) / p_{s,t}(x) of one such path (Eq. 6.2),
+// which uses your contribution and pdfTechnique. Interface: lessons/06-path-space/paths.h.
+#include "06-path-space/paths.h"
+
+namespace ps {
+
+TechniqueSample sampleTechnique(const Scene& scene, int k, int s, Rng& rng) {
+    TechniqueSample ts;
+    const int t = k + 1 - s;
+    if (k < 1 || s < 0 || t < 1) return ts;   // t = 0: a ray cannot hit the pinhole
+    Path& x = ts.x;
+    x.resize(size_t(k) + 1);
+    // The light subpath x0 ... x_{s-1}: a light chosen by power, a point and a direction on it,
+    // then the BSDF in Importance mode (the light tracer's directions, lesson 5).
+    if (s >= 1) {
+        float P = 0.0f;
+        const int l = scene.selectLight(rng.uniform(), P);
+        if (l < 0 || P <= 0.0f) return ts;
+        const EmissionSample e = sampleEmission(scene, l, rng.uniform2(), rng.uniform2());
+        if (!(e.pdfA > 0.0f && e.pdfW > 0.0f)) return ts;
+        x[0] = lightVertex(scene, l, e);
+        Ray ray = x[0].infinite ? Ray(e.p, e.dir) : scene.spawnRay(x[0].sp, e.dir);
+        for (int i = 1; i <= s - 1; ++i) {
+            SurfacePoint sp;
+            if (!scene.intersect(ray, sp)) return ts;
+            x[size_t(i)] = surfaceVertex(scene, sp);
+            if (i == s - 1) break;
+            BSDFSample b;
+            if (!sampleBSDF(scene.materials[size_t(sp.material)], sp.n, -ray.d, rng.uniform2(), rng.uniform(),
+                            Transport::Importance, b))
+                return ts;
+            ray = scene.spawnRay(sp, b.wi);
+        }
+    }
+    // The camera subpath x_k ... x_s: the pinhole, a ray through a uniform raster position,
+    // then the BSDF in Radiance mode (the path tracer's directions, lesson 3).
+    x[size_t(k)] = cameraVertex(scene);
+    const Camera& camera = scene.camera;
+    if (t >= 2) {
+        ts.raster = Vec2(rng.uniform() * float(camera.width()), rng.uniform() * float(camera.height()));
+        Ray ray = camera.generateRay(ts.raster);
+        for (int j = k - 1; j >= s; --j) {
+            SurfacePoint sp;
+            if (!scene.intersect(ray, sp)) {
+                if (j != 0 || scene.background < 0) return ts;   // only x0 may be the background
+                x[0] = backgroundVertex(scene, ray.d);
+                break;
+            }
+            x[size_t(j)] = surfaceVertex(scene, sp);
+            if (j == s) break;
+            BSDFSample b;
+            if (!sampleBSDF(scene.materials[size_t(sp.material)], sp.n, -ray.d, rng.uniform2(), rng.uniform(),
+                            Transport::Radiance, b))
+                return ts;
+            ray = scene.spawnRay(sp, b.wi);
+        }
+        if (s == 0 && !x[0].onLight) return ts;   // the camera subpath must end on a light
+    } else {
+        // t = 1: the pixel is where x_{k-1} projects (lesson 5's splat).
+        if (x[size_t(k) - 1].infinite || !camera.rasterPosition(x[size_t(k) - 1].sp.p, ts.raster)) return ts;
+    }
+    ts.valid = true;
+    return ts;
+}
+
+Color techniqueEstimate(const Scene& scene, const TechniqueSample& ts, int s) {
+    if (!ts.valid) return Color(0.0f);
+    const float p = pdfTechnique(scene, ts.x, s);
+    if (!(p > 0.0f)) return Color(0.0f);
+    const Color f = contribution(scene, ts.x);
+    if (isBlack(f)) return Color(0.0f);
+    return f / p;
+}
+
+}  // namespace ps
