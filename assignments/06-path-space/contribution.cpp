@@ -5,9 +5,10 @@
 
 namespace ps {
 
-Color contribution(const Scene& scene, const Path& x) {
+DColor contribution(const Scene& scene, const Path& x) {
     // TODO(06) f(x) of Eq. 6.3 for x = x[0] ... x[k], k = x.size() - 1 (0 if k < 1):
-    //          1. Le(x0 -> x1): light = scene.lights[x[0].sp.light]; a point light or the
+    //          Accumulate in double (DColor): the product leaves the float range at extreme scales.
+//          1. Le(x0 -> x1): light = scene.lights[x[0].sp.light]; a point light or the
     //             background: light.Le; an area light: emittedRadiance(light, x[0].sp.n,
     //             direction(x[0], x[1])).
     //          2. Every edge i = 0 ... k-1: 0 if !visible(scene, x[i], x[i+1]); times
@@ -21,7 +22,7 @@ Color contribution(const Scene& scene, const Path& x) {
     //          4. The pixel's sensor at the pinhole x[k] (lesson 4, Eq. 4.6): width * height *
     //             camera.We(direction(x[k], x[k-1])).
     (void)scene; (void)x;
-    return PS_TODO("lesson 06: contribution", Color(0.0f));
+    return PS_TODO("lesson 06: contribution", DColor(0.0));
 }
 
 }  // namespace ps

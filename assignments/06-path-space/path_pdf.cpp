@@ -5,9 +5,9 @@
 
 namespace ps {
 
-float pdfTechnique(const Scene& scene, const Path& x, int s) {
-    // TODO(06) p_{s,t}(x) = p(light subpath) p(camera subpath) (Eq. 6.7-6.10), in double
-    //          or float, for k = x.size() - 1 and t = k + 1 - s:
+double pdfTechnique(const Scene& scene, const Path& x, int s) {
+    // TODO(06) p_{s,t}(x) = p(light subpath) p(camera subpath) (Eq. 6.7-6.10), multiplied in
+    //          double (a long path's pdf leaves the float range at extreme scales), for k = x.size() - 1 and t = k + 1 - s:
     //          0. Techniques that cannot sample x return 0 (Eq. 6.12): k < 1, s < 0, t < 1
     //             (t = 0 would need a ray to hit the pinhole); s = 0 with x[0] a point light;
     //             s >= 1 and x[s-1] or x[s] specular (the joining edge cannot follow a delta).
@@ -35,7 +35,7 @@ float pdfTechnique(const Scene& scene, const Path& x, int s) {
     //             deltaLobe(m, n, wPrev, wCamera).pdfCamera (0 if not valid); converted to x[j-1].
     //          3. The joining edge x[s-1] x[s] is deterministic: no factor. No Russian roulette.
     (void)scene; (void)x; (void)s;
-    return PS_TODO("lesson 06: pdfTechnique", 0.0f);
+    return PS_TODO("lesson 06: pdfTechnique", 0.0);
 }
 
 }  // namespace ps

@@ -51,16 +51,17 @@ float pdfSolidAngleToArea(float pdfW, const PathVertex& from, const PathVertex& 
 //   f(x) = Le(x0 -> x1) G(x0, x1) V(x0, x1) prod_{i=1}^{k-1} f_s(x_{i-1} -> x_i -> x_{i+1}) G(x_i, x_{i+1}) V(x_i, x_{i+1})
 //          * W_e^(j)(x_{k-1} -> x_k),
 // W_e^(j) = width * height * camera.We(direction from the pinhole to x_{k-1}) (lesson 4, Eq.
-// 4.6), V from visible(). A specular vertex contributes the coefficient of its Dirac delta
+// 4.6), V from visible(). In double: a long path's f in a scene at scale 1e-4 or 1e4 leaves
+// the float range (it has a 1/d^2 per edge), while f / p stays moderate. A specular vertex contributes the coefficient of its Dirac delta
 // (deltaLobe, Eq. 6.11), 0 if the directions are not its reflected / refracted pair.
-Color contribution(const Scene& scene, const Path& x);
+DColor contribution(const Scene& scene, const Path& x);
 
 // The area-measure pdf p_{s,t}(x) (Eq. 6.7-6.10), t = k + 1 - s, with which technique (s, t)
 // samples the path: the light subpath samples x0 ... x_{s-1}, the camera subpath x_k ...
 // x_{k-t+1}, and the deterministic edge x_{s-1} x_s joins them. 0 if the technique cannot
 // sample the path (Eq. 6.12): t = 0 (pinhole), s = 0 with a point light, a specular vertex at
-// either end of the joining edge. Russian roulette is not part of p_{s,t}.
-float pdfTechnique(const Scene& scene, const Path& x, int s);
+// either end of the joining edge. Russian roulette is not part of p_{s,t}. In double, as f.
+double pdfTechnique(const Scene& scene, const Path& x, int s);
 
 // ---- plumbing ----------------------------------------------------------------------------
 

@@ -5,9 +5,10 @@
 
 namespace ps {
 
-Color contribution(const Scene& scene, const Path& x) {
+DColor contribution(const Scene& scene, const Path& x) {
     //! TODO(06) f(x) of Eq. 6.3 for x = x[0] ... x[k], k = x.size() - 1 (0 if k < 1):
-    //!          1. Le(x0 -> x1): light = scene.lights[x[0].sp.light]; a point light or the
+    //!          Accumulate in double (DColor): the product leaves the float range at extreme scales.
+//!          1. Le(x0 -> x1): light = scene.lights[x[0].sp.light]; a point light or the
     //!             background: light.Le; an area light: emittedRadiance(light, x[0].sp.n,
     //!             direction(x[0], x[1])).
     //!          2. Every edge i = 0 ... k-1: 0 if !visible(scene, x[i], x[i+1]); times
@@ -21,28 +22,28 @@ Color contribution(const Scene& scene, const Path& x) {
     //!          4. The pixel's sensor at the pinhole x[k] (lesson 4, Eq. 4.6): width * height *
     //!             camera.We(direction(x[k], x[k-1])).
     //! STUB (void)scene; (void)x;
-    //! STUB return PS_TODO("lesson 06: contribution", Color(0.0f));
+    //! STUB return PS_TODO("lesson 06: contribution", DColor(0.0));
     //! BEGIN
     const size_t k = x.size() - 1;
-    if (x.size() < 2 || x[0].sp.light < 0) return Color(0.0f);
+    if (x.size() < 2 || x[0].sp.light < 0) return DColor(0.0);
     const Light& light = scene.lights[size_t(x[0].sp.light)];
-    Color f = light.kind == LightKind::Area ? emittedRadiance(light, x[0].sp.n, direction(x[0], x[1])) : light.Le;
-    for (size_t i = 0; i < k && !isBlack(f); ++i) {
-        if (!visible(scene, x[i], x[i + 1])) return Color(0.0f);
-        f *= geometryTerm(x[i], x[i + 1]);
+    DColor f(light.kind == LightKind::Area ? emittedRadiance(light, x[0].sp.n, direction(x[0], x[1])) : light.Le);
+    for (size_t i = 0; i < k && f != DColor(0.0); ++i) {
+        if (!visible(scene, x[i], x[i + 1])) return DColor(0.0);
+        f *= double(geometryTerm(x[i], x[i + 1]));
     }
-    for (size_t i = 1; i < k && !isBlack(f); ++i) {
+    for (size_t i = 1; i < k && f != DColor(0.0); ++i) {
         const Material& m = scene.materials[size_t(x[i].sp.material)];
         const Vec3 wLight = direction(x[i], x[i - 1]), wCamera = direction(x[i], x[i + 1]);
         if (x[i].specular) {
             const DeltaLobe lobe = deltaLobe(m, x[i].sp.n, wLight, wCamera);
-            f *= lobe.valid ? lobe.fs : Color(0.0f);
+            f *= lobe.valid ? DColor(lobe.fs) : DColor(0.0);
         } else {
-            f *= evalBSDF(m, x[i].sp.n, wCamera, wLight);
+            f *= DColor(evalBSDF(m, x[i].sp.n, wCamera, wLight));
         }
     }
     const Camera& camera = scene.camera;
-    const float We = float(camera.width()) * float(camera.height()) * camera.We(direction(x[k], x[k - 1]));
+    const double We = double(camera.width()) * double(camera.height()) * double(camera.We(direction(x[k], x[k - 1])));
     return f * We;
     //! END
 }

@@ -5,9 +5,9 @@
 
 namespace ps {
 
-float pdfTechnique(const Scene& scene, const Path& x, int s) {
-    //! TODO(06) p_{s,t}(x) = p(light subpath) p(camera subpath) (Eq. 6.7-6.10), in double
-    //!          or float, for k = x.size() - 1 and t = k + 1 - s:
+double pdfTechnique(const Scene& scene, const Path& x, int s) {
+    //! TODO(06) p_{s,t}(x) = p(light subpath) p(camera subpath) (Eq. 6.7-6.10), multiplied in
+    //!          double (a long path's pdf leaves the float range at extreme scales), for k = x.size() - 1 and t = k + 1 - s:
     //!          0. Techniques that cannot sample x return 0 (Eq. 6.12): k < 1, s < 0, t < 1
     //!             (t = 0 would need a ray to hit the pinhole); s = 0 with x[0] a point light;
     //!             s >= 1 and x[s-1] or x[s] specular (the joining edge cannot follow a delta).
@@ -35,24 +35,24 @@ float pdfTechnique(const Scene& scene, const Path& x, int s) {
     //!             deltaLobe(m, n, wPrev, wCamera).pdfCamera (0 if not valid); converted to x[j-1].
     //!          3. The joining edge x[s-1] x[s] is deterministic: no factor. No Russian roulette.
     //! STUB (void)scene; (void)x; (void)s;
-    //! STUB return PS_TODO("lesson 06: pdfTechnique", 0.0f);
+    //! STUB return PS_TODO("lesson 06: pdfTechnique", 0.0);
     //! BEGIN
     const int k = int(x.size()) - 1, t = k + 1 - s;
-    if (k < 1 || s < 0 || t < 1) return 0.0f;
-    if (s == 0 && (!x[0].onLight || x[0].pointLight)) return 0.0f;
-    if (s >= 1 && (x[size_t(s) - 1].specular || x[size_t(s)].specular)) return 0.0f;
-    float p = 1.0f;
+    if (k < 1 || s < 0 || t < 1) return 0.0;
+    if (s == 0 && (!x[0].onLight || x[0].pointLight)) return 0.0;
+    if (s >= 1 && (x[size_t(s) - 1].specular || x[size_t(s)].specular)) return 0.0;
+    double p = 1.0;
     // The light subpath x0 ... x_{s-1} (Eq. 6.8).
     if (s >= 1) {
         const int l = x[0].sp.light;
-        if (l < 0) return 0.0f;
+        if (l < 0) return 0.0;
         const Light& light = scene.lights[size_t(l)];
         p *= scene.lightSelectionProb(l);
         if (light.kind == LightKind::Area) p *= pdfLightArea(scene, l);
         else if (light.isInfinite()) p *= pdfBackgroundDirection();
         if (s >= 2) {
             if (light.isInfinite()) {
-                p *= std::abs(glm::dot(x[1].sp.n, x[0].sp.n)) / (kPi * scene.radius * scene.radius);
+                p *= std::abs(double(glm::dot(x[1].sp.n, x[0].sp.n))) / (double(kPi) * scene.radius * scene.radius);
             } else {
                 const float pdfW = light.isDelta() ? uniformSpherePdf()
                                                    : std::max(0.0f, glm::dot(x[0].sp.n, direction(x[0], x[1]))) * kInvPi;

@@ -66,11 +66,11 @@ TechniqueSample sampleTechnique(const Scene& scene, int k, int s, Rng& rng) {
 
 Color techniqueEstimate(const Scene& scene, const TechniqueSample& ts, int s) {
     if (!ts.valid) return Color(0.0f);
-    const float p = pdfTechnique(scene, ts.x, s);
-    if (!(p > 0.0f)) return Color(0.0f);
-    const Color f = contribution(scene, ts.x);
-    if (isBlack(f)) return Color(0.0f);
-    return f / p;
+    const double p = pdfTechnique(scene, ts.x, s);
+    if (!(p > 0.0)) return Color(0.0f);
+    const DColor f = contribution(scene, ts.x);
+    if (f == DColor(0.0)) return Color(0.0f);
+    return Color(f / p);
 }
 
 }  // namespace ps

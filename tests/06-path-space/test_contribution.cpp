@@ -32,7 +32,9 @@ double phong(double albedo, double n, const DVec3& normal, const DVec3& wo, cons
     return c <= 0 ? 0.0 : albedo * (n + 2) / (2 * kPi) * std::pow(c, n);
 }
 
-void checkColor(const ps::Path& x, const Color& got, const DVec3& expected, const std::string& what) {
+bool black(const ps::DColor& c) { return c.x == 0.0 && c.y == 0.0 && c.z == 0.0; }
+
+void checkColor(const ps::Path& x, const ps::DColor& got, const DVec3& expected, const std::string& what) {
     CHECK_MESSAGE((close(got.r, expected.x, 2e-4) && close(got.g, expected.y, 2e-4) && close(got.b, expected.z, 2e-4)),
                   what << ": path " << describe(x) << ": expected f = " << str(expected) << ", got " << str(got));
 }
@@ -104,8 +106,8 @@ TEST_CASE("path space: f(x) of longer paths: a glossy bounce and a mirror's delt
         // The same mirror vertex with a floor point off the reflection direction: 0.
         const ps::PathVertex off = surface(scene, Vec3(0.6f, 0.0f, 0.4f), Vec3(0, 1, 0), "floor");
         const ps::Path y = {x0, mirror, off, cam};
-        const Color got = ps::contribution(scene, y);
-        CHECK_MESSAGE(ps::isBlack(got), "path " << describe(y) << ": the directions at the mirror are not a reflected pair: expected f = 0, got "
+        const ps::DColor got = ps::contribution(scene, y);
+        CHECK_MESSAGE(black(got), "path " << describe(y) << ": the directions at the mirror are not a reflected pair: expected f = 0, got "
                                             << str(got));
     }
 }
@@ -117,16 +119,16 @@ TEST_CASE("path space: f(x) is 0 for occluded edges and for light leaving the ba
     const ps::PathVertex x0 = areaLightPoint(scene, Vec3(0.1f, 2.0f, -0.2f)), cam = pinhole(scene);
     const ps::PathVertex x1 = surface(scene, Vec3(0.3f, 0.0f, 0.4f), Vec3(0, 1, 0), "floor");
     const ps::Path blocked = {x0, x1, cam};
-    const Color got = ps::contribution(scene, blocked);
-    CHECK_MESSAGE(ps::isBlack(got), "path " << describe(blocked) << ": the edge x0 x1 passes through a blocker at y = 1: expected f = 0 (V = 0), got "
+    const ps::DColor got = ps::contribution(scene, blocked);
+    CHECK_MESSAGE(black(got), "path " << describe(blocked) << ": the edge x0 x1 passes through a blocker at y = 1: expected f = 0 (V = 0), got "
                                         << str(got));
     // Without the blocker, the same path is not 0 (so the 0 above is the visibility).
-    const Color open = ps::contribution(room(), {areaLightPoint(room(), Vec3(0.1f, 2.0f, -0.2f)), x1, pinhole(room())});
-    CHECK_MESSAGE(!ps::isBlack(open), "path " << describe(blocked) << " in the room without the blocker: expected f > 0, got " << str(open));
+    const ps::DColor open = ps::contribution(room(), {areaLightPoint(room(), Vec3(0.1f, 2.0f, -0.2f)), x1, pinhole(room())});
+    CHECK_MESSAGE(!black(open), "path " << describe(blocked) << " in the room without the blocker: expected f > 0, got " << str(open));
     // The light faces down: a wall point above its plane gets nothing from it.
     const ps::PathVertex high = surface(room(), Vec3(0.0f, 2.5f, 2.0f), Vec3(0, 0, -1), "wall");
     const ps::Path up = {areaLightPoint(room(), Vec3(0.0f, 2.0f, 0.0f)), high, pinhole(room())};
-    const Color gotUp = ps::contribution(room(), up);
-    CHECK_MESSAGE(ps::isBlack(gotUp), "path " << describe(up) << ": the area light emits only below (its normal faces -y): expected f = 0, got "
+    const ps::DColor gotUp = ps::contribution(room(), up);
+    CHECK_MESSAGE(black(gotUp), "path " << describe(up) << ": the area light emits only below (its normal faces -y): expected f = 0, got "
                                           << str(gotUp));
 }
