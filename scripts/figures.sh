@@ -1,0 +1,92 @@
+#!/usr/bin/env bash
+# Renders every figure the lessons and slides show, with the reference solutions, from the
+# commands their READMEs document (lecturers: after changing a solution or a scene).
+#
+#   bash scripts/figures.sh [--quick] [--out DIR] [--build DIR] [NN ...]
+#
+#   NN ...       only these lessons (e.g. 03 05); default: every lesson that has figures
+#   --out DIR    write the figures under DIR/NN-name/ instead of into lessons/NN-name/
+#   --quick      tiny budgets (seconds, not minutes) for a smoke run: checks that every command
+#                works and every figure is written; the images are noisy. CI runs it.
+#   --build DIR  the build to use (default: build; configured and built if missing)
+#
+# Full budgets take about 40 minutes on 2 cores (most of it rendering references).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+src="$PWD"
+quick=0 out="" build="build" only=()
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --quick) quick=1 ;;
+    --out) out="$2"; shift ;;
+    --build) build="$2"; shift ;;
+    -h|--help) sed -n '2,14p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    [0-9][0-9]) only+=("$1") ;;
+    *) echo "figures: unknown argument '$1' (see --help)" >&2; exit 2 ;;
+  esac
+  shift
+done
+if [ ! -x "$build/pathspace" ]; then
+  cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
+  cmake --build "$build" -j"$(nproc)" >/dev/null
+fi
+case "$build" in /*) ;; *) build="$src/$build" ;; esac
+ps="$build/pathspace"
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+
+# t FULL QUICK: a budget (seconds or samples) in full or in quick mode.
+t() { if [ "$quick" = 1 ]; then echo "$2"; else echo "$1"; fi; }
+# dest NN-name: the folder the lesson's figures go to.
+dest() { local d="${out:+$out/$1}"; d="${d:-$src/lessons/$1}"; mkdir -p "$d"; echo "$d"; }
+wanted() { [ ${#only[@]} -eq 0 ] && return 0; local n; for n in "${only[@]}"; do [ "$n" = "$1" ] && return 0; done; return 1; }
+# scene NAME RES: scenes/NAME.scene at RES x RES pixels, as the READMEs' `sed` lines make it.
+scene() { sed "s/resolution 256 256/resolution $2 $2/" "scenes/$1.scene" > "$work/$1-$2.scene"; echo "$work/$1-$2.scene"; }
+# reference ALGO SECONDS SCENE: a reference image of SCENE (seed 99), its path.
+reference() { local r="$work/ref-$RANDOM.pfm"; "$ps" render "$3" --algo "$1" --time "$2" --seed 99 --out "$r" --no-progress >&2; echo "$r"; }
+# converge SCENE REF OUTDIR ARGS...: pathspace converge quietly into OUTDIR.
+converge() { local s="$1" r="$2" o="$3"; shift 3; "$ps" converge "$s" --reference "$r" --out "$o" --no-progress "$@" > "$o.log"; }
+n=0
+done_fig() { n=$((n + 1)); echo "figures: wrote $1"; }
+
+# Lesson 2: Veach's plates, 16 spp of each estimator and the reference (lessons/02 README, section 5).
+if wanted 02; then
+  d="$(dest 02-direct-mis)"; s="$(scene veach-plates 128)"
+  r="$(reference direct-power "$(t 60 2)" "$s")"
+  converge "$s" "$r" "$work/02" --spp "$(t 16 2)" \
+    --algos direct-light,direct-bsdf,direct-balance,direct-power,direct-max,direct-onesample
+  cp "$work/02/equal-time.png" "$d/plates-16spp.png"; done_fig "$d/plates-16spp.png"
+fi
+
+# Lesson 3: pt-bsdf, pt-nee, pt on the Cornell box at equal time, 2 seeds (lessons/03 README, section 5).
+if wanted 03; then
+  d="$(dest 03-path-tracing)"; s="$(scene cornell-box 128)"
+  r="$(reference pt "$(t 300 2)" "$s")"
+  converge "$s" "$r" "$work/03" --algos pt-bsdf,pt-nee,pt --time "$(t 5 0.3)" --seeds 2
+  cp "$work/03/equal-time.png" "$d/cornell-equal-time.png"
+  cp "$work/03/convergence.svg" "$work/03/convergence.csv" "$work/03/efficiency.md" "$d/"
+  done_fig "$d/cornell-equal-time.png, convergence.svg, convergence.csv, efficiency.md"
+fi
+
+# Lesson 4: pt and measure on the Cornell box (lessons/04 README).
+if wanted 04; then
+  d="$(dest 04-measurement)"; s="$(scene cornell-box 128)"
+  r="$(reference pt "$(t 300 2)" "$s")"
+  converge "$s" "$r" "$work/04" --algos pt,measure --time "$(t 8 0.3)" --seeds 2
+  cp "$work/04/equal-time.png" "$d/converge-equal-time.png"; cp "$work/04/convergence.svg" "$d/converge.svg"
+  done_fig "$d/converge-equal-time.png, converge.svg"
+fi
+
+# Lesson 5: pt and lt on the Cornell box, the glass lamp and the Cornell spheres (lessons/05 README).
+if wanted 05; then
+  d="$(dest 05-light-tracing)"
+  for c in "cornell-box cornell pt 300" "glass-lamp glass-lamp lt 300" "cornell-spheres spheres pt 745"; do
+    set -- $c
+    s="$(scene "$1" 128)"; r="$(reference "$3" "$(t "$4" 2)" "$s")"
+    converge "$s" "$r" "$work/05-$2" --algos pt,lt --time "$(t 8 0.3)" --seeds 2
+    cp "$work/05-$2/equal-time.png" "$d/$2-equal-time.png"; cp "$work/05-$2/convergence.svg" "$d/$2-converge.svg"
+    done_fig "$d/$2-equal-time.png, $2-converge.svg"
+  done
+fi
+
+echo "figures: $n figure sets written$([ "$quick" = 1 ] && echo ' (quick budgets: noisy)')"
