@@ -1,0 +1,178 @@
+// Lesson 7's bidirectional path tracer: a light subpath y_0 .. y_{s-1} and a camera subpath
+// z_0 .. z_{t-1} (Eq. 7.1), joined by one connection into a full path for every (s, t)
+// (Eq. 7.2-7.4), each technique weighted by multiple importance sampling with the balance or
+// power heuristic, computed from the full list of pdfs p_0 .. p_{k+1} of the joined path
+// (Eq. 7.5-7.7) or recursively with O(1) work per vertex (Eq. 7.8-7.10). Implemented in
+// solutions/07-bidirectional/*.cpp (reference) or assignments/07-bidirectional/*.cpp (yours);
+// lessons/07-bidirectional/README.md derives every formula (Eq. 7.1-7.12).
+//
+// Conventions. Every pdf of a vertex is per unit AREA at that vertex, except at a vertex at
+// infinity (the background), where it is per unit solid angle (Eq. 7.3). pdfFwd is the density
+// with which the vertex was sampled by its own subpath, pdfRev the density with which the other
+// direction would sample it (from the next vertex of its subpath, Eq. 7.6). Delta vertices are
+// FLAGS: a specular vertex has delta = true and the pdfs its lobe produces are stored as 0
+// (they stand for the same delta factor in every technique and cancel; the MIS code counts a 0
+// as 1 in ratios, Eq. 7.7); a point light and the pinhole have deltaPosition = true (they
+// cannot be hit by chance: no s = 0 or t = 0 technique for them).
+#pragma once
+#include <vector>
+#include "02-direct-mis/mis.h"
+#include "05-light-tracing/lighttracer.h"
+
+namespace ps {
+
+enum class VertexKind : uint8_t { Camera, Light, Surface };
+
+struct PathVertex {
+    VertexKind kind = VertexKind::Surface;
+    SurfacePoint sp;           // position, normal, material, light; infinite: sp.n is the
+                               // direction the light travels (into the scene), sp.p unused
+    Color beta = Color(0.0f);  // throughput of the subpath up to and including this vertex (Eq. 7.1):
+                               // camera z_i: product of f |cos| / pdf; light y_i: Le-side product
+                               // (y_0: 1 / pdfFwd; the emitted radiance is evaluated at the connection)
+    float pdfFwd = 0.0f;       // density of this vertex under its own subpath's sampling (Eq. 7.3)
+    float pdfRev = 0.0f;       // density of this vertex sampled from the other direction (Eq. 7.6)
+    bool delta = false;        // specular surface: no connection at this vertex
+    bool deltaPosition = false;// point light or pinhole: cannot be hit by a random ray
+    bool infinite = false;     // the background, a vertex at infinity
+    int light = -1;            // kind Light (or a camera vertex on an emitter): index into scene.lights
+    double misSum = 0.0;       // recursive MIS (Eq. 7.9): B_i, the partial sum of the techniques
+                               // that move the connection at least two vertices into this subpath
+
+    // The vertex lies on a surface with normal sp.n (cosines count there).
+    bool onSurface() const {
+        return kind == VertexKind::Surface || (kind == VertexKind::Light && !deltaPosition && !infinite);
+    }
+};
+using Subpath = std::vector<PathVertex>;
+
+// ---- vertex pdfs (vertex_pdfs.cpp), one function for sampling and for MIS (Eq. 7.3) ----
+
+// Solid-angle density pdfW of the direction from `from` towards `to`, turned into a density per
+// unit area at `to`: pdfW |cos theta_to| / d^2 (no cosine if `to` is not on a surface; unchanged
+// if `to` is at infinity). 0 when d is 0.
+float convertToArea(float pdfW, const PathVertex& from, const PathVertex& to);
+
+// Density of choosing the light vertex v itself (Eq. 7.3): P(l) / area for an area light,
+// P(l) for a point light, P(l) * pdfBackgroundDirection() for the background (solid angle).
+// v.light is the light's index; v may be a camera-path vertex that hit an emitter.
+float pdfLightOrigin(const Scene& scene, const PathVertex& v);
+
+// Area density with which the light at `light` emits towards `to` (the light subpath's second
+// vertex, Eq. 7.3): area light: cos(theta) / pi about its normal (0 behind it), point light:
+// 1 / (4 pi), both converted with convertToArea; background: 1 / (pi R^2) * |cos theta_to|
+// (the disk of sampleEmission, R = scene.radius).
+float pdfLightToward(const Scene& scene, const PathVertex& light, const PathVertex& to);
+
+// Area density with which `cur` samples `next` (Eq. 7.3): cur is the camera: pdfDirection;
+// a surface: pdfBSDF(material, n, towards prev, towards next), 0 if delta; prev may be null
+// only for the camera. Always through convertToArea.
+float pdfScatter(const Scene& scene, const PathVertex* prev, const PathVertex& cur, const PathVertex& next);
+
+// ---- subpaths (light_subpath.cpp, camera_subpath.cpp), Eq. 7.1 ----
+
+// The light subpath: at most maxDepth + 1 vertices (y_0 on a light, then one per bounce).
+// Uses startLightPath (lesson 5), sampleAdjointBSDF, survivalProbability (lesson 3). Fills
+// beta, pdfFwd, the pdfRev of y_{i-2} once y_i exists, the flags, and, after each vertex,
+// updateMisSum(path, i, h). Clears path first.
+void lightSubpath(const Scene& scene, Rng& rng, int maxDepth, Heuristic h, Subpath& path);
+
+// The camera subpath through raster position `raster`: z_0 the pinhole, then one vertex per
+// intersection; at most maxDepth + 2 vertices; a ray that leaves the scene ends it with a
+// vertex at infinity if there is a background. Clears path first.
+void cameraSubpath(const Scene& scene, Rng& rng, const Vec2& raster, int maxDepth, Heuristic h, Subpath& path);
+
+// ---- the connection (connect.cpp), Eq. 7.2, 7.4, 7.6 ----
+
+// The new reverse pdfs the connection of y_{s-1} and z_{t-1} gives (Eq. 7.6): of the two
+// endpoints and of the vertices before them. 0 where there is no such vertex.
+struct ReversePdfs {
+    float lightEnd = 0.0f;    // y_{s-1} sampled from z_{t-1}
+    float lightPrev = 0.0f;   // y_{s-2} sampled from y_{s-1} (arriving from z_{t-1})
+    float cameraEnd = 0.0f;   // z_{t-1} sampled from y_{s-1} (s = 0: pdfLightOrigin)
+    float cameraPrev = 0.0f;  // z_{t-2} sampled from z_{t-1} (s = 0: pdfLightToward)
+};
+// y points to the s light vertices, z to the t camera vertices (s + t >= 2, t >= 1).
+ReversePdfs connectionPdfs(const Scene& scene, const PathVertex* y, int s, const PathVertex* z, int t);
+
+struct Connection {
+    bool valid = false;
+    Color value = Color(0.0f);  // unweighted contribution C*_{s,t} (Eq. 7.4); t = 1: to splat
+    Vec2 raster;                // t = 1: where the light vertex lands on the image
+    PathVertex sampledLight;    // s = 1: the light vertex sampled for this connection (it
+                                // replaces the light subpath's y_0, Eq. 7.2)
+    ReversePdfs rev;
+};
+
+// Technique (s, t) for the given subpaths (s <= light.size(), t <= camera.size(), t >= 1):
+// s = 0: z_{t-1} is on an emitter or at infinity; s = 1: a new light sample (uLight, uPos from
+// the caller) towards z_{t-1}; t = 1: y_{s-1} to the pinhole (connectToCamera); otherwise
+// both endpoints' BSDFs and the geometry term, after a visibility test. Not valid when a
+// connected endpoint is delta or nothing arrives.
+Connection connect(const Scene& scene, const Subpath& light, const Subpath& camera, int s, int t, float uLight,
+                   const Vec2& uPos);
+
+// ---- MIS weights (mis_full.cpp, mis_recursive.cpp), Eq. 7.5-7.10 ----
+
+// Whether technique s' of a full path of n vertices x_0 .. x_{n-1} (x_0 on the light, x_{n-1}
+// the camera) can sample it (Eq. 7.7): t' = n - s' >= 1; s' = 0 needs x_0 not deltaPosition;
+// otherwise x_{s'-1} and x_{s'} both non-delta, and not a background vertex joined straight to
+// the camera (s' = 1, t' = 1, x_0 infinite).
+bool techniqueSamples(const PathVertex* x, int n, int sPrime);
+
+// w_{s,t} from the full list p_0 .. p_n of the joined path's techniques (Eq. 7.5-7.7): build
+// x_0 .. x_{n-1} (y then z reversed), with pL[i] (density from the light side) and pE[i] (from
+// the camera side) from pdfFwd/pdfRev and the connection's rev; p_s' = prod_{i<s'} pL[i]
+// prod_{i>=s'} pE[i] (0 counted as 1), and w = p_s^b / sum over sampling techniques of p_s'^b.
+// y: s vertices (s = 1: &c.sampledLight), z: t vertices.
+float misWeightFull(const PathVertex* y, int s, const PathVertex* z, int t, const ReversePdfs& rev, Heuristic h);
+
+// The recursive partial sum (Eq. 7.9) for vertex i of a subpath, once path[i-2].pdfRev is
+// known: B_0 = B_1 = 0, B_i = r_{i-2}^b (c_{i-2} + B_{i-1}), r_j = pdfRev/pdfFwd of path[j]
+// (0 counted as 1), c_j whether the connection may sit just before path[j] (Eq. 7.10).
+// Light subpaths: c_0 = not deltaPosition; camera subpaths: c_0 = 0. Stores it in path[i].misSum.
+void updateMisSum(Subpath& path, size_t i, Heuristic h);
+
+// The same weight as misWeightFull with O(1) work (Eq. 7.8-7.10), from the endpoints' misSum.
+float misWeightRecursive(const PathVertex* y, int s, const PathVertex* z, int t, const ReversePdfs& rev, Heuristic h);
+
+// ---- the integrator (plumbing, bpt_integrator.cpp) ----
+
+struct BptOptions {
+    Heuristic heuristic = Heuristic::Power;
+    bool recursive = true;   // misWeightRecursive (else misWeightFull)
+    bool prune = true;       // leave out what the scene cannot use (Eq. 7.12)
+};
+
+// What one pixel sample's techniques gave, for per-technique images (Veach's pyramid).
+struct TechniqueRecorder {
+    virtual ~TechniqueRecorder() = default;
+    // t >= 2: the pixel of the camera subpath; t = 1: raster is where it landed (already
+    // scaled by 1 / (width * height) like every light-tracing splat).
+    virtual void add(int s, int t, const Vec2& raster, const Color& unweighted, const Color& weighted) = 0;
+};
+
+// One pixel sample: a camera subpath through `raster`, a light subpath, every (s, t). Returns
+// the t >= 2 estimate for the pixel; t = 1 contributions go to splat. recorder may be null.
+Color bptSample(const Scene& scene, const Vec2& raster, Rng& rng, const BptOptions& opt, const SplatTarget& splat,
+                TechniqueRecorder* recorder);
+
+// The pruning decisions of Eq. 7.12 for this scene, one line each (empty if !opt.prune).
+std::vector<std::string> bptLeftOut(const Scene& scene, const BptOptions& opt);
+
+// Veach's pyramid: per technique images for path lengths k = 1 .. maxLength (k edges,
+// s + t = k + 1). index(s, k) = k (k + 1) / 2 - 1 + ... see techniqueIndex.
+struct TechniqueImages {
+    int maxLength = 0;
+    std::vector<Image> unweighted, weighted;   // per technique, techniqueIndex(s, k)
+    std::vector<Image> unweightedSq;           // per-sample sum of squares (variance), same order
+    int spp = 0;
+};
+inline int techniqueIndex(int s, int k) { return (k - 1) * (k + 4) / 2 + s; }   // row k holds s = 0 .. k + 1
+inline int techniqueCount(int maxLength) { return techniqueIndex(0, maxLength + 1); }
+// Renders spp samples per pixel with `threads` threads (results depend on the thread count only
+// through the order of float sums); images are means over the samples.
+TechniqueImages renderTechniques(const Scene& scene, int maxLength, int spp, uint64_t seed, int threads,
+                                 const BptOptions& opt);
+
+}  // namespace ps

@@ -1,0 +1,183 @@
+// Shared by lesson 7's graded tests: scenes at test resolution, renders, stored references,
+// joined paths split at every technique, the significance level.
+#pragma once
+#include <doctest/doctest.h>
+#include <cmath>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+#include "07-bidirectional/bpt.h"
+#include "format.h"
+#include "image.h"
+#include "render.h"
+#include "scene_loader.h"
+#include "statistics.h"
+
+namespace lesson07 {
+
+using ps::Color;
+using ps::PathVertex;
+using ps::Vec2;
+using ps::Vec3;
+using ps::fmt::num;
+using ps::fmt::str;
+
+// Statistical tests in this suite (every other check is exact or a stated bound):
+//   per-technique images of path lengths 1-3 on the Cornell box against the path-traced
+//   reference restricted to that length: 9 techniques                                   -> 9
+//   bpt against path-traced references: Cornell box (bpt and bpt-balance), Cornell spheres,
+//   point light, background                                                              -> 5
+//   pruned against unpruned renders: point light, spheres                               -> 2
+// m = 16; each runs at the Sidak level alpha' = 1 - (1 - 0.01)^(1/16) ~ 6.3e-4, so a correct
+// implementation fails any of them by bad luck with probability at most 1 %.
+constexpr int kStatisticalTests = 16;
+inline double alpha() { return ps::stats::sidak(0.01, kStatisticalTests); }
+
+inline std::string sourcePath(const std::string& rel) { return std::string(PATHSPACE_SOURCE_DIR) + "/" + rel; }
+
+inline std::string readText(const std::string& path) {
+    std::ifstream in(path);
+    REQUIRE_MESSAGE(in.good(), "cannot open " << path);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+// A scene file of the repository at width x height pixels (its 'resolution' replaced), as the
+// documented reference commands (`sed` on the same file) see it.
+inline ps::Scene loadSceneAt(const std::string& rel, int width, int height) {
+    const std::string path = sourcePath(rel);
+    const std::string text = std::regex_replace(readText(path), std::regex(R"(resolution\s+\d+\s+\d+)"),
+                                                "resolution " + std::to_string(width) + " " + std::to_string(height));
+    return ps::parseScene(text, path);
+}
+
+struct Render {
+    ps::Image mean, variance;
+    ps::SampleStats stats;
+};
+inline Render render(const ps::Scene& scene, const std::string& algo, int iterations, uint64_t seed, int threads = 1) {
+    std::unique_ptr<ps::Integrator> integrator = ps::makeIntegrator(algo);
+    ps::RenderOptions opt;
+    opt.spp = iterations;
+    opt.seed = seed;
+    opt.threads = threads;
+    const ps::RenderResult r = ps::render(scene, *integrator, opt);
+    return {r.film.mean(), r.film.varianceOfMean(), r.stats};
+}
+
+inline double sum(const Color& c) { return double(c.r) + double(c.g) + double(c.b); }
+inline double total(const ps::Image& img) {
+    double t = 0.0;
+    for (const Color& c : img.pixels) t += sum(c);
+    return t;
+}
+
+// ---- a joined path, split at every technique (the test's own bookkeeping, Eq. 7.5-7.7) ----
+
+// x_0 .. x_{n-1} (light to camera) with the densities of each vertex from the light side (pL)
+// and from the camera side (pE), read from the subpaths and the connection's reverse pdfs.
+struct JoinedPath {
+    std::vector<PathVertex> x;
+    std::vector<float> pL, pE;
+    int s = 0, t = 0;   // the technique that made it
+};
+
+inline JoinedPath join(const PathVertex* y, int s, const PathVertex* z, int t, const ps::ReversePdfs& rev) {
+    JoinedPath j;
+    j.s = s;
+    j.t = t;
+    const int n = s + t;
+    j.x.resize(size_t(n));
+    j.pL.resize(size_t(n));
+    j.pE.resize(size_t(n));
+    for (int i = 0; i < s; ++i) {
+        j.x[size_t(i)] = y[i];
+        j.pL[size_t(i)] = y[i].pdfFwd;
+        j.pE[size_t(i)] = i == s - 1 ? rev.lightEnd : i == s - 2 ? rev.lightPrev : y[i].pdfRev;
+    }
+    for (int k = 0; k < t; ++k) {
+        const size_t i = size_t(n - 1 - k);
+        j.x[i] = z[k];
+        j.pE[i] = z[k].pdfFwd;
+        j.pL[i] = k == t - 1 ? rev.cameraEnd : k == t - 2 ? rev.cameraPrev : z[k].pdfRev;
+    }
+    return j;
+}
+
+// Whether technique s' can sample the joined path (the test's own copy of Eq. 7.7).
+inline bool samples(const JoinedPath& j, int sp) {
+    const int n = int(j.x.size());
+    if (sp >= n) return false;
+    if (sp == 0) return !j.x[0].deltaPosition;
+    if (j.x[size_t(sp - 1)].delta || j.x[size_t(sp)].delta) return false;
+    return !(sp == 1 && n == 2 && j.x[0].infinite);
+}
+
+// The subpaths of technique s' of the joined path, as the subpath functions would have built
+// them (pdfFwd, pdfRev, and misSum through updateMisSum), and the reverse pdfs of its connection.
+struct Split {
+    ps::Subpath y, z;
+    ps::ReversePdfs rev;
+};
+inline Split split(const ps::Scene& scene, const JoinedPath& j, int sp, ps::Heuristic h) {
+    Split out;
+    const int n = int(j.x.size());
+    for (int i = 0; i < sp; ++i) {
+        PathVertex v = j.x[size_t(i)];
+        v.pdfFwd = j.pL[size_t(i)];
+        v.pdfRev = j.pE[size_t(i)];
+        out.y.push_back(v);
+        ps::updateMisSum(out.y, out.y.size() - 1, h);
+    }
+    for (int i = n - 1; i >= sp; --i) {
+        PathVertex v = j.x[size_t(i)];
+        v.pdfFwd = j.pE[size_t(i)];
+        v.pdfRev = j.pL[size_t(i)];
+        out.z.push_back(v);
+        ps::updateMisSum(out.z, out.z.size() - 1, h);
+    }
+    out.rev = ps::connectionPdfs(scene, out.y.data(), sp, out.z.data(), n - sp);
+    return out;
+}
+
+// Every valid connection of nSamples pixel samples of a scene (random pixels), as joined paths.
+inline std::vector<JoinedPath> randomPaths(const ps::Scene& scene, int nSamples, uint64_t seed, ps::Heuristic h) {
+    std::vector<JoinedPath> paths;
+    ps::Subpath camera, light;
+    const int w = scene.camera.width(), ht = scene.camera.height();
+    for (int i = 0; i < nSamples; ++i) {
+        ps::Rng rng(seed, uint64_t(i));
+        const Vec2 raster(rng.uniform() * float(w), rng.uniform() * float(ht));
+        ps::cameraSubpath(scene, rng, raster, scene.settings.maxDepth, h, camera);
+        ps::lightSubpath(scene, rng, scene.settings.maxDepth, h, light);
+        for (int t = 1; t <= int(camera.size()); ++t)
+            for (int s = 0; s <= std::max(int(light.size()), 1); ++s) {
+                if (s + t < 2 || (t == 1 && s == 0) || s + t - 2 > scene.settings.maxDepth) continue;
+                if (s > int(light.size()) && !(s == 1 && t >= 2)) continue;
+                const ps::Connection c = ps::connect(scene, light, camera, s, t, rng.uniform(), rng.uniform2());
+                if (!c.valid) continue;
+                paths.push_back(join(s == 1 ? &c.sampledLight : light.data(), s, camera.data(), t, c.rev));
+            }
+    }
+    return paths;
+}
+
+inline std::string describe(const JoinedPath& j) {
+    std::ostringstream o;
+    o << "a path of " << j.x.size() << " vertices made by (s, t) = (" << j.s << ", " << j.t << "): ";
+    for (size_t i = 0; i < j.x.size(); ++i) {
+        const PathVertex& v = j.x[i];
+        o << (i ? " - " : "")
+          << (v.kind == ps::VertexKind::Camera ? "camera"
+              : v.infinite                     ? "background"
+              : v.kind == ps::VertexKind::Light ? (v.deltaPosition ? "point light" : "area light")
+              : v.delta                        ? "specular"
+                                               : "surface");
+    }
+    return o.str();
+}
+
+}  // namespace lesson07
