@@ -128,7 +128,7 @@ struct BptBalance : BptBase {
     BptBalance() { opt.heuristic = Heuristic::Balance; }
 };
 struct BptFull : BptBase {
-    BptFull() { opt.recursive = false; if (getenv("BPT_UNIFORM")) opt.heuristic = Heuristic::Maximum; }
+    BptFull() { opt.recursive = false; }
 };
 
 // Per-thread accumulation of the technique images.

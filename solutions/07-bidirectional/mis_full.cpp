@@ -52,7 +52,7 @@ float misWeightFull(const PathVertex* y, int s, const PathVertex* z, int t, cons
         if (!techniqueSamples(x.data(), n, sp)) continue;
         double p = 1.0;
         for (int i = 0; i < n; ++i) p *= i < sp ? pL[size_t(i)] : pE[size_t(i)];
-        const double q = h == Heuristic::Maximum ? 1.0 : std::pow(p, beta);
+        const double q = std::pow(p, beta);
         sum += q;
         if (sp == s) mine = q;
     }

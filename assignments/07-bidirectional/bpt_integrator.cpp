@@ -1,0 +1,214 @@
+// Lesson 7 — the bidirectional path tracer the render command knows as `bpt` (plumbing: read
+// it, nothing to write here), its variants `bpt-balance` (balance heuristic) and `bpt-full`
+// (weights from the full pdf list, Eq. 7.7, instead of the recursive form, Eq. 7.9), and the
+// per-technique images of Veach's pyramid (`pathspace pyramid`).
+//
+// One iteration: for every pixel a camera subpath through a jittered point of the pixel and a
+// light subpath (random numbers from taskRng(seed, iteration, pixel), whichever thread runs
+// it), then every technique (s, t) (Eq. 7.2). t >= 2 goes to the pixel, t = 1 is splatted with
+// the factor 1 / (width * height) of lesson 5 (Eq. 5.4) into a SplatBuffer whose lists are
+// added in a fixed order: the image does not depend on the number of threads.
+//
+// Left out where the scene shows it cannot contribute (Eq. 7.12, exact): see bptLeftOut.
+#include <omp.h>
+#include "07-bidirectional/bpt.h"
+
+namespace ps {
+
+namespace {
+constexpr int kPixelsPerTask = 64;
+
+struct Pruning {
+    bool s0 = false;          // no light can be hit (point lights only)
+    bool deltaEnds = false;   // connections at specular vertices
+};
+Pruning pruning(const Scene& scene, const BptOptions& opt) {
+    Pruning p;
+    if (!opt.prune || !scene.settings.prune) return p;
+    p.s0 = !scene.caps.areaLights && !scene.caps.backgroundLight;
+    p.deltaEnds = true;
+    return p;
+}
+}  // namespace
+
+std::vector<std::string> bptLeftOut(const Scene& scene, const BptOptions& opt) {
+    if (!opt.prune || !scene.settings.prune) return {};
+    std::vector<std::string> lines;
+    lines.push_back("t = 0 techniques: the pinhole is a delta position no ray can hit (Eq. 7.12)");
+    const Pruning p = pruning(scene, opt);
+    if (p.s0) lines.push_back("s = 0 techniques: no light can be hit (point lights only) (Eq. 7.12)");
+    if (scene.caps.hasDeltaBSDF())
+        lines.push_back("connections at specular (mirror, glass) vertices, and light vertices on them are not "
+                        "connected to the camera: a delta BSDF is 0 for every given pair of directions (Eq. 7.12)");
+    return lines;
+}
+
+Color bptSample(const Scene& scene, const Vec2& raster, Rng& rng, const BptOptions& opt, const SplatTarget& splat,
+                TechniqueRecorder* recorder) {
+    thread_local Subpath camera, light;
+    const int maxDepth = scene.settings.maxDepth;
+    cameraSubpath(scene, rng, raster, maxDepth, opt.heuristic, camera);
+    lightSubpath(scene, rng, maxDepth, opt.heuristic, light);
+    const Pruning prune = pruning(scene, opt);
+    Color L(0.0f);
+    const int nCamera = static_cast<int>(camera.size()), nLight = static_cast<int>(light.size());
+    for (int t = 1; t <= nCamera; ++t) {
+        for (int s = 0; s <= std::max(nLight, 1); ++s) {
+            if (s + t < 2 || s + t - 2 > maxDepth) continue;
+            if (t == 1 && s == 0) continue;
+            if (s > nLight && !(s == 1 && t >= 2)) continue;   // s = 1 samples its own light vertex
+            if (s == 0 && prune.s0) continue;
+            if (prune.deltaEnds && t >= 2 && camera[size_t(t - 1)].delta) continue;
+            if (prune.deltaEnds && s >= 2 && light[size_t(s - 1)].delta) continue;
+            if (prune.deltaEnds && t == 1 && light[size_t(s - 1)].delta) continue;
+            float uLight = 0.0f;
+            Vec2 uPos(0.0f);
+            if (s == 1 && t >= 2) {
+                uLight = rng.uniform();
+                uPos = rng.uniform2();
+            }
+            const Connection c = connect(scene, light, camera, s, t, uLight, uPos);
+            if (!c.valid) continue;
+            const PathVertex* y = s == 1 ? &c.sampledLight : light.data();
+            const float w = opt.recursive ? misWeightRecursive(y, s, camera.data(), t, c.rev, opt.heuristic)
+                                          : misWeightFull(y, s, camera.data(), t, c.rev, opt.heuristic);
+            const Color weighted = c.value * w;
+            if (t == 1) {
+                splat.add(c.raster, weighted);
+                if (recorder) recorder->add(s, t, c.raster, c.value * splat.scale, weighted * splat.scale);
+            } else {
+                L += weighted;
+                if (recorder) recorder->add(s, t, raster, c.value, weighted);
+            }
+        }
+    }
+    return L;
+}
+
+namespace {
+
+struct BptBase : Integrator {
+    BptOptions opt;
+    std::vector<std::string> leftOut(const Scene& scene) const override { return bptLeftOut(scene, opt); }
+
+    void renderIteration(const Scene& scene, uint32_t iteration, uint64_t seed, Image& out,
+                         SampleStats& stats) override {
+        const int w = out.width, h = out.height, pixels = w * h;
+        const int tasks = (pixels + kPixelsPerTask - 1) / kPixelsPerTask;
+        SplatBuffer splats(w, h, static_cast<size_t>(tasks));
+        const float scale = 1.0f / static_cast<float>(pixels);
+        uint64_t nan = 0, inf = 0, rays = 0;
+#pragma omp parallel reduction(+ : nan, inf, rays)
+        {
+            SampleStats local;
+#pragma omp for schedule(dynamic, 1)
+            for (int task = 0; task < tasks; ++task) {
+                const SplatTarget target{&splats, static_cast<size_t>(task), &local, scale};
+                const int end = std::min(pixels, (task + 1) * kPixelsPerTask);
+                for (int pixel = task * kPixelsPerTask; pixel < end; ++pixel) {
+                    Rng rng = taskRng(seed, iteration, static_cast<uint32_t>(pixel));
+                    const Vec2 raster(static_cast<float>(pixel % w) + rng.uniform(),
+                                      static_cast<float>(pixel / w) + rng.uniform());
+                    out.pixels[size_t(pixel)] = checkSample(bptSample(scene, raster, rng, opt, target, nullptr), local);
+                }
+            }
+            nan += local.nan;
+            inf += local.inf;
+            rays += takeRayCount();
+        }
+        splats.resolve(out);
+        stats.nan += nan;
+        stats.inf += inf;
+        stats.rays += rays;
+    }
+};
+
+struct BptPower : BptBase {};
+struct BptBalance : BptBase {
+    BptBalance() { opt.heuristic = Heuristic::Balance; }
+};
+struct BptFull : BptBase {
+    BptFull() { opt.recursive = false; }
+};
+
+// Per-thread accumulation of the technique images.
+struct ImageRecorder : TechniqueRecorder {
+    TechniqueImages* images = nullptr;
+    void add(int s, int t, const Vec2& raster, const Color& unweighted, const Color& weighted) override {
+        const int k = s + t - 1;
+        if (k < 1 || k > images->maxLength) return;
+        const size_t i = size_t(techniqueIndex(s, k));
+        const int x = std::clamp(static_cast<int>(raster.x), 0, images->unweighted[i].width - 1);
+        const int y = std::clamp(static_cast<int>(raster.y), 0, images->unweighted[i].height - 1);
+        if (!isFinite(unweighted) || !isFinite(weighted)) return;
+        images->unweighted[i].at(x, y) += unweighted;
+        images->weighted[i].at(x, y) += weighted;
+        images->unweightedSq[i].at(x, y) += unweighted * unweighted;
+    }
+};
+
+TechniqueImages emptyTechniques(int maxLength, int w, int h) {
+    TechniqueImages t;
+    t.maxLength = maxLength;
+    const size_t n = size_t(techniqueCount(maxLength));
+    t.unweighted.assign(n, Image(w, h));
+    t.weighted.assign(n, Image(w, h));
+    t.unweightedSq.assign(n, Image(w, h));
+    return t;
+}
+
+}  // namespace
+
+TechniqueImages renderTechniques(const Scene& scene, int maxLength, int spp, uint64_t seed, int threads,
+                                 const BptOptions& opt) {
+    const int w = scene.camera.width(), h = scene.camera.height(), pixels = w * h;
+    if (threads < 1) threads = omp_get_max_threads();
+    std::vector<TechniqueImages> parts(static_cast<size_t>(threads));
+    Scene limited = scene;
+    limited.settings.maxDepth = std::min(scene.settings.maxDepth, maxLength - 1);
+    const float scale = 1.0f / static_cast<float>(pixels);
+#pragma omp parallel num_threads(threads)
+    {
+        const int me = omp_get_thread_num();
+        parts[size_t(me)] = emptyTechniques(maxLength, w, h);
+        ImageRecorder recorder;
+        recorder.images = &parts[size_t(me)];
+        SplatBuffer dummy(w, h, 1);
+        Image scratch(w, h);
+        SampleStats stats;
+#pragma omp for schedule(static)
+        for (int pixel = 0; pixel < pixels; ++pixel) {
+            for (int it = 0; it < spp; ++it) {
+                Rng rng = taskRng(seed, uint32_t(it), static_cast<uint32_t>(pixel));
+                const SplatTarget target{&dummy, 0, &stats, scale};
+                const Vec2 raster(static_cast<float>(pixel % w) + rng.uniform(), static_cast<float>(pixel / w) + rng.uniform());
+                bptSample(limited, raster, rng, opt, target, &recorder);
+            }
+            dummy.resolve(scratch);
+        }
+    }
+    TechniqueImages out = emptyTechniques(maxLength, w, h);
+    out.spp = spp;
+    const float inv = 1.0f / static_cast<float>(spp);
+    for (size_t i = 0; i < out.unweighted.size(); ++i) {
+        for (const TechniqueImages& p : parts)
+            for (size_t q = 0; q < out.unweighted[i].pixels.size(); ++q) {
+                out.unweighted[i].pixels[q] += p.unweighted[i].pixels[q];
+                out.weighted[i].pixels[q] += p.weighted[i].pixels[q];
+                out.unweightedSq[i].pixels[q] += p.unweightedSq[i].pixels[q];
+            }
+        for (size_t q = 0; q < out.unweighted[i].pixels.size(); ++q) {
+            out.unweighted[i].pixels[q] *= inv;
+            out.weighted[i].pixels[q] *= inv;
+            out.unweightedSq[i].pixels[q] *= inv * inv;   // sum of squares / spp^2: the variance of the mean (an upper bound)
+        }
+    }
+    return out;
+}
+
+PS_REGISTER_INTEGRATOR(BptPower, "bpt",
+                       "bidirectional path tracing: all (s, t) connections, power-heuristic MIS (recursive form) (lesson 7)");
+PS_REGISTER_INTEGRATOR(BptBalance, "bpt-balance", "bpt with the balance heuristic (lesson 7)");
+PS_REGISTER_INTEGRATOR(BptFull, "bpt-full", "bpt with MIS weights from the full pdf list (lesson 7)");
+
+}  // namespace ps

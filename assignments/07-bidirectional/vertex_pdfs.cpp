@@ -1,0 +1,43 @@
+// Lesson 7 — the densities of path vertices (Eq. 7.3): one set of functions for sampling the
+// subpaths and for the MIS weights, so that the 1/d^2 of a short connection cancels exactly.
+// Interface: lessons/07-bidirectional/bpt.h. Equation numbers refer to lessons/07-bidirectional/README.md.
+#include "07-bidirectional/bpt.h"
+#include "todo.h"
+
+namespace ps {
+
+float convertToArea(float pdfW, const PathVertex& from, const PathVertex& to) {
+    // TODO(07) Eq. 7.3: if `to` is at infinity return pdfW unchanged; else w = to.sp.p - from.sp.p,
+    //          d2 = |w|^2, 0 if d2 is 0; pdf = pdfW / d2, times |cos| = |dot(to.sp.n, w)| / sqrt(d2)
+    //          if to.onSurface().
+    (void)pdfW; (void)from; (void)to;
+    return PS_TODO("lesson 07: convertToArea", 0.0f);
+}
+
+float pdfLightOrigin(const Scene& scene, const PathVertex& v) {
+    // TODO(07) Eq. 7.3: P = scene.lightSelectionProb(v.light) (0 if v.light < 0); background:
+    //          P * pdfBackgroundDirection(); point light: P; area light: P * pdfLightArea(scene, l).
+    (void)scene; (void)v;
+    return PS_TODO("lesson 07: pdfLightOrigin", 0.0f);
+}
+
+float pdfLightToward(const Scene& scene, const PathVertex& light, const PathVertex& to) {
+    // TODO(07) Eq. 7.3, the densities sampleEmission uses: background: 1 / (pi R^2) with
+    //          R = scene.radius, times |dot(to.sp.n, light.sp.n)| if to.onSurface() (parallel
+    //          rays from a disk); point light: convertToArea(1 / (4 pi)); area light: the
+    //          cosine density max(0, dot(light.sp.n, w)) / pi of the unit direction w from the
+    //          light to `to`, through convertToArea.
+    (void)scene; (void)light; (void)to;
+    return PS_TODO("lesson 07: pdfLightToward", 0.0f);
+}
+
+float pdfScatter(const Scene& scene, const PathVertex* prev, const PathVertex& cur, const PathVertex& next) {
+    // TODO(07) Eq. 7.3: the unit direction wn from cur to next (-next.sp.n if next is at
+    //          infinity); camera: pdfW = scene.camera.pdfDirection(wn); surface: 0 if cur.delta,
+    //          else pdfW = pdfBSDF(material, cur.sp.n, wp, wn) with wp the unit direction from
+    //          cur to *prev (-prev->sp.n if prev is at infinity). Return convertToArea(pdfW, cur, next).
+    (void)scene; (void)prev; (void)cur; (void)next;
+    return PS_TODO("lesson 07: pdfScatter", 0.0f);
+}
+
+}  // namespace ps
