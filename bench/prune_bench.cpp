@@ -1,0 +1,85 @@
+// prune_bench: what lesson 7's pruning (Eq. 7.12 in lessons/07-bidirectional/README.md) saves.
+// For a few scenes it renders the same number of iterations of `bpt` with the scene's
+// capabilities used to leave out techniques that cannot contribute (the default) and with
+// `--no-prune` (every technique tried), and prints the wall time and pixel samples per second
+// of both. A benchmark, never a test: nothing is timed against a threshold (pruning's
+// exactness is tested in tests/07-bidirectional/test_robust.cpp). bench/README.md lists the
+// figures measured on the course machine.
+#include <cstdio>
+#include <exception>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+#include "integrator.h"
+#include "render.h"
+#include "scene_loader.h"
+
+#ifndef PATHSPACE_SOURCE_DIR
+#define PATHSPACE_SOURCE_DIR "."
+#endif
+
+namespace {
+
+ps::Scene loadAt(const std::string& dir, const std::string& name, int res) {
+    const std::string path = dir + "/" + name + ".scene";
+    std::ifstream in(path);
+    if (!in) throw std::runtime_error("cannot open " + path);
+    std::ostringstream s;
+    s << in.rdbuf();
+    const std::string text = std::regex_replace(s.str(), std::regex(R"(resolution\s+\d+\s+\d+)"),
+                                                "resolution " + std::to_string(res) + " " + std::to_string(res));
+    return ps::parseScene(text, path);
+}
+
+double run(const ps::Scene& scene, int spp, int threads, int repeats) {
+    double best = 1e30;
+    for (int r = 0; r < repeats; ++r) {
+        std::unique_ptr<ps::Integrator> bpt = ps::makeIntegrator("bpt");
+        ps::RenderOptions opt;
+        opt.spp = spp;
+        opt.seed = 1;
+        opt.threads = threads;
+        best = std::min(best, ps::render(scene, *bpt, opt).seconds);
+    }
+    return best;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    std::string dir = std::string(PATHSPACE_SOURCE_DIR) + "/scenes";
+    int res = 64, spp = 16, threads = 1, repeats = 3;
+    for (int i = 1; i < argc; ++i) {
+        const std::string a = argv[i];
+        if (a == "--quick") { res = 16; spp = 2; repeats = 1; }
+        else if (a == "--scenes" && i + 1 < argc) dir = argv[++i];
+        else if (a == "--threads" && i + 1 < argc) threads = std::stoi(argv[++i]);
+        else if (a == "--spp" && i + 1 < argc) spp = std::stoi(argv[++i]);
+        else {
+            std::printf("usage: prune_bench [--quick] [--scenes DIR] [--threads T] [--spp N]\n"
+                        "  bpt with and without pruning on a few scenes at %d x %d, %d spp, best of %d runs\n",
+                        res, res, spp, repeats);
+            return a == "--help" ? 0 : 2;
+        }
+    }
+    try {
+        std::printf("bpt, %d x %d pixels, %d spp, %d thread(s), best of %d runs\n", res, res, spp, threads, repeats);
+        std::printf("%-22s %10s %14s %10s %14s %8s  left out\n", "scene", "pruned s", "samples/s", "full s", "samples/s", "saved");
+        for (const std::string name : {"cornell-box", "cornell-point-light", "cornell-spheres", "glass-lamp"}) {
+            ps::Scene pruned = loadAt(dir, name, res);
+            ps::Scene full = pruned;
+            full.settings.prune = false;
+            const double tp = run(pruned, spp, threads, repeats), tf = run(full, spp, threads, repeats);
+            const double samples = double(res) * res * spp;
+            const std::vector<std::string> left = ps::makeIntegrator("bpt")->leftOut(pruned);
+            std::printf("%-22s %10.3f %14.0f %10.3f %14.0f %7.1f%%  %zu item(s)\n", name.c_str(), tp, samples / tp, tf,
+                        samples / tf, 100.0 * (tf - tp) / tf, left.size());
+        }
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "prune_bench: %s\n", e.what());
+        return 1;
+    }
+    return 0;
+}
