@@ -2,9 +2,11 @@
 // For a few scenes it renders the same number of iterations of `bpt` with the scene's
 // capabilities used to leave out techniques that cannot contribute (the default) and with
 // `--no-prune` (every technique tried), and prints the wall time and pixel samples per second
-// of both. A benchmark, never a test: nothing is timed against a threshold (pruning's
+// of both, the rays each traced (deterministic: the same in every run) and what pruning saved of
+// each. A benchmark, never a test: nothing is timed against a threshold (pruning's
 // exactness is tested in tests/07-bidirectional/test_robust.cpp). bench/README.md lists the
 // figures measured on the course machine.
+#include <cstdint>
 #include <cstdio>
 #include <exception>
 #include <fstream>
@@ -33,15 +35,18 @@ ps::Scene loadAt(const std::string& dir, const std::string& name, int res) {
     return ps::parseScene(text, path);
 }
 
-double run(const ps::Scene& scene, int spp, int threads, int repeats) {
+// Best wall time of `repeats` renders; rays: the rays traced (the same in every run).
+double timeBpt(const ps::Scene& scene, int spp, int threads, int repeats, uint64_t& rays) {
     double best = 1e30;
-    for (int r = 0; r < repeats; ++r) {
+    for (int run = 0; run < repeats; ++run) {
         std::unique_ptr<ps::Integrator> bpt = ps::makeIntegrator("bpt");
         ps::RenderOptions opt;
         opt.spp = spp;
         opt.seed = 1;
         opt.threads = threads;
-        best = std::min(best, ps::render(scene, *bpt, opt).seconds);
+        const ps::RenderResult r = ps::render(scene, *bpt, opt);
+        best = std::min(best, r.seconds);
+        rays = r.stats.rays;
     }
     return best;
 }
@@ -66,16 +71,19 @@ int main(int argc, char** argv) {
     }
     try {
         std::printf("bpt, %d x %d pixels, %d spp, %d thread(s), best of %d runs\n", res, res, spp, threads, repeats);
-        std::printf("%-22s %10s %14s %10s %14s %8s  left out\n", "scene", "pruned s", "samples/s", "full s", "samples/s", "saved");
+        std::printf("%-20s %9s %11s %10s %9s %11s %10s %7s %7s  %s\n", "scene", "pruned s", "samples/s", "Mrays", "full s",
+                    "samples/s", "Mrays", "time", "rays", "left out");
         for (const std::string name : {"cornell-box", "cornell-point-light", "cornell-spheres", "glass-lamp"}) {
             ps::Scene pruned = loadAt(dir, name, res);
             ps::Scene full = pruned;
             full.settings.prune = false;
-            const double tp = run(pruned, spp, threads, repeats), tf = run(full, spp, threads, repeats);
+            uint64_t rp = 0, rf = 0;
+            const double tp = timeBpt(pruned, spp, threads, repeats, rp), tf = timeBpt(full, spp, threads, repeats, rf);
             const double samples = double(res) * res * spp;
             const std::vector<std::string> left = ps::makeIntegrator("bpt")->leftOut(pruned);
-            std::printf("%-22s %10.3f %14.0f %10.3f %14.0f %7.1f%%  %zu item(s)\n", name.c_str(), tp, samples / tp, tf,
-                        samples / tf, 100.0 * (tf - tp) / tf, left.size());
+            std::printf("%-20s %9.3f %11.0f %10.3f %9.3f %11.0f %10.3f %6.1f%% %6.1f%%  %zu item(s)\n", name.c_str(), tp,
+                        samples / tp, rp * 1e-6, tf, samples / tf, rf * 1e-6, 100.0 * (tf - tp) / tf,
+                        100.0 * (double(rf) - double(rp)) / double(rf), left.size());
         }
     } catch (const std::exception& e) {
         std::fprintf(stderr, "prune_bench: %s\n", e.what());
