@@ -47,6 +47,7 @@ Connection connect(const Scene& scene, const Subpath& light, const Subpath& came
     //            camera[t-2], w) zEnd.beta with G = |cos_y| |cos_z| / |d|^2; f_x(a, b) =
     //            evalBSDF(material, n, a, b) (camera-side direction first); then unless black
     //            the shadow ray scene.spawnRayTo(zEnd.sp, yEnd.sp).
+    //          ("towards a vertex" = directionTo(from, to) of bpt.h.)
     //          valid = value is not black (and unoccluded); finally
     //          rev = connectionPdfs(scene, s == 1 ? &sampledLight : light.data(), s, camera.data(), t).
     (void)scene; (void)light; (void)camera; (void)s; (void)t; (void)uLight; (void)uPos;

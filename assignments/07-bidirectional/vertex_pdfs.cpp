@@ -32,10 +32,10 @@ float pdfLightToward(const Scene& scene, const PathVertex& light, const PathVert
 }
 
 float pdfScatter(const Scene& scene, const PathVertex* prev, const PathVertex& cur, const PathVertex& next) {
-    // TODO(07) Eq. 7.3: the unit direction wn from cur to next (-next.sp.n if next is at
-    //          infinity); camera: pdfW = scene.camera.pdfDirection(wn); surface: 0 if cur.delta,
-    //          else pdfW = pdfBSDF(material, cur.sp.n, wp, wn) with wp the unit direction from
-    //          cur to *prev (-prev->sp.n if prev is at infinity). Return convertToArea(pdfW, cur, next).
+    // TODO(07) Eq. 7.3: the unit direction wn = directionTo(cur, next) (bpt.h); camera:
+    //          pdfW = scene.camera.pdfDirection(wn); surface: 0 if cur.delta, else
+    //          pdfW = pdfBSDF(material, cur.sp.n, wp, wn) with wp = directionTo(cur, *prev).
+    //          Return convertToArea(pdfW, cur, next).
     (void)scene; (void)prev; (void)cur; (void)next;
     return PS_TODO("lesson 07: pdfScatter", 0.0f);
 }

@@ -46,6 +46,15 @@ struct PathVertex {
 };
 using Subpath = std::vector<PathVertex>;
 
+// Unit direction from `from` towards `to` (-to.sp.n if `to` is at infinity); the zero vector if
+// the two points coincide (a point light on a surface: every BSDF and pdf of it is then 0, never NaN).
+inline Vec3 directionTo(const PathVertex& from, const PathVertex& to) {
+    if (to.infinite) return -to.sp.n;
+    const Vec3 d = to.sp.p - from.sp.p;
+    const float d2 = glm::dot(d, d);
+    return d2 > 0.0f ? d / std::sqrt(d2) : Vec3(0.0f);
+}
+
 // ---- vertex pdfs (vertex_pdfs.cpp), one function for sampling and for MIS (Eq. 7.3) ----
 
 // Solid-angle density pdfW of the direction from `from` towards `to`, turned into a density per
@@ -161,7 +170,7 @@ Color bptSample(const Scene& scene, const Vec2& raster, Rng& rng, const BptOptio
 std::vector<std::string> bptLeftOut(const Scene& scene, const BptOptions& opt);
 
 // Veach's pyramid: per technique images for path lengths k = 1 .. maxLength (k edges,
-// s + t = k + 1). index(s, k) = k (k + 1) / 2 - 1 + ... see techniqueIndex.
+// s + t = k + 1), stored row by row: row k holds s = 0 .. k + 1 (techniqueIndex).
 struct TechniqueImages {
     int maxLength = 0;
     std::vector<Image> unweighted, weighted;   // per technique, techniqueIndex(s, k)

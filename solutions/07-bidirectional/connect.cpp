@@ -64,6 +64,7 @@ Connection connect(const Scene& scene, const Subpath& light, const Subpath& came
     //!            camera[t-2], w) zEnd.beta with G = |cos_y| |cos_z| / |d|^2; f_x(a, b) =
     //!            evalBSDF(material, n, a, b) (camera-side direction first); then unless black
     //!            the shadow ray scene.spawnRayTo(zEnd.sp, yEnd.sp).
+    //!          ("towards a vertex" = directionTo(from, to) of bpt.h.)
     //!          valid = value is not black (and unoccluded); finally
     //!          rev = connectionPdfs(scene, s == 1 ? &sampledLight : light.data(), s, camera.data(), t).
     //! STUB (void)scene; (void)light; (void)camera; (void)s; (void)t; (void)uLight; (void)uPos;
@@ -71,9 +72,7 @@ Connection connect(const Scene& scene, const Subpath& light, const Subpath& came
     //! BEGIN
     Connection c;
     const PathVertex& zEnd = camera[size_t(t - 1)];
-    const auto towards = [](const PathVertex& from, const PathVertex& to) {
-        return to.infinite ? -to.sp.n : glm::normalize(to.sp.p - from.sp.p);
-    };
+    const auto towards = directionTo;
     const auto material = [&](const PathVertex& v) -> const Material& { return scene.materials[size_t(v.sp.material)]; };
     if (s == 0) {
         if (zEnd.infinite) c.value = zEnd.beta * scene.backgroundRadiance();

@@ -62,23 +62,20 @@ float pdfLightToward(const Scene& scene, const PathVertex& light, const PathVert
 }
 
 float pdfScatter(const Scene& scene, const PathVertex* prev, const PathVertex& cur, const PathVertex& next) {
-    //! TODO(07) Eq. 7.3: the unit direction wn from cur to next (-next.sp.n if next is at
-    //!          infinity); camera: pdfW = scene.camera.pdfDirection(wn); surface: 0 if cur.delta,
-    //!          else pdfW = pdfBSDF(material, cur.sp.n, wp, wn) with wp the unit direction from
-    //!          cur to *prev (-prev->sp.n if prev is at infinity). Return convertToArea(pdfW, cur, next).
+    //! TODO(07) Eq. 7.3: the unit direction wn = directionTo(cur, next) (bpt.h); camera:
+    //!          pdfW = scene.camera.pdfDirection(wn); surface: 0 if cur.delta, else
+    //!          pdfW = pdfBSDF(material, cur.sp.n, wp, wn) with wp = directionTo(cur, *prev).
+    //!          Return convertToArea(pdfW, cur, next).
     //! STUB (void)scene; (void)prev; (void)cur; (void)next;
     //! STUB return PS_TODO("lesson 07: pdfScatter", 0.0f);
     //! BEGIN
-    const auto towards = [&](const PathVertex& v) {
-        return v.infinite ? -v.sp.n : glm::normalize(v.sp.p - cur.sp.p);
-    };
-    const Vec3 wn = towards(next);
+    const Vec3 wn = directionTo(cur, next);
     float pdfW = 0.0f;
     if (cur.kind == VertexKind::Camera) {
         pdfW = scene.camera.pdfDirection(wn);
     } else {
         if (cur.delta || prev == nullptr) return 0.0f;
-        pdfW = pdfBSDF(scene.materials[size_t(cur.sp.material)], cur.sp.n, towards(*prev), wn);
+        pdfW = pdfBSDF(scene.materials[size_t(cur.sp.material)], cur.sp.n, directionTo(cur, *prev), wn);
     }
     return convertToArea(pdfW, cur, next);
     //! END
