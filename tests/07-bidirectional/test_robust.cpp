@@ -97,6 +97,7 @@ TEST_CASE("close vertices in a corner make no fireflies: max pixel below 2 x the
     const auto [maxB, meanB] = stats(b.mean, atB);
     const auto [maxP, meanP] = stats(p.mean, atP);
     CHECK_MESSAGE(b.stats.bad() == 0, "bpt in the corner: expected no NaN or Inf samples, got " << b.stats.bad());
+    CHECK_MESSAGE(meanB > 0.0, "bpt in the corner: expected a lit image, got a black one");
     CHECK_MESSAGE(maxB <= 2.0 * maxP, "bpt in the corner (16 x 16, 64 spp): expected every pixel's luminance <= 2 x the path tracer's "
                                       "brightest pixel ("
                                           << num(maxP) << "), got " << num(maxB) << " at pixel (" << atB % 16 << ", " << atB / 16 << ")");
