@@ -89,4 +89,18 @@ if wanted 05; then
   done
 fi
 
+# Lesson 7: pt, lt and bpt on the Cornell box at equal time; Veach's pyramid (lessons/07 README).
+if wanted 07; then
+  d="$(dest 07-bidirectional)"; s="$(scene cornell-box 128)"
+  r="$(reference pt "$(t 240 2)" "$s")"
+  converge "$s" "$r" "$work/07" --algos pt,lt,bpt --time "$(t 8 0.3)" --seeds 2
+  cp "$work/07/equal-time.png" "$d/cornell-equal-time.png"; cp "$work/07/convergence.svg" "$d/cornell-converge.svg"
+  cp "$work/07/convergence.csv" "$d/cornell-convergence.csv"; cp "$work/07/efficiency.md" "$d/cornell-efficiency.md"
+  done_fig "$d/cornell-equal-time.png, cornell-converge.svg, cornell-convergence.csv, cornell-efficiency.md"
+  "$ps" pyramid "$s" --max-length 4 --spp "$(t 128 2)" --seed 1 --exposure 1 --out "$work/07-pyramid" > "$work/07-pyramid.log"
+  cp "$work/07-pyramid-unweighted.png" "$d/cornell-pyramid-unweighted.png"
+  cp "$work/07-pyramid-weighted.png" "$d/cornell-pyramid-weighted.png"
+  done_fig "$d/cornell-pyramid-unweighted.png, cornell-pyramid-weighted.png"
+fi
+
 echo "figures: $n figure sets written$([ "$quick" = 1 ] && echo ' (quick budgets: noisy)')"
