@@ -6,7 +6,7 @@
 
 namespace ps {
 
-ReversePdfs connectionPdfs(const Scene& scene, const PathVertex* y, int s, const PathVertex* z, int t) {
+ReversePdfs connectionPdfs(const Scene& scene, const SubpathVertex* y, int s, const SubpathVertex* z, int t) {
     // TODO(07) Eq. 7.6, with zEnd = z[t-1], zPrev = z[t-2] (if t >= 2), yEnd = y[s-1],
     //          yPrev = y[s-2] (if s >= 2); leave a field 0 where its vertex does not exist:
     //          s = 0 (zEnd is the light): cameraEnd = pdfLightOrigin(zEnd),

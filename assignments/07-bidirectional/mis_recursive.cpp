@@ -12,7 +12,7 @@ double heuristicPower(double r, Heuristic h) { return h == Heuristic::Power ? r 
 double nonzero(float p) { return p != 0.0f ? double(p) : 1.0; }
 
 // c_j of Eq. 7.10 for vertex j of a subpath (camera subpaths start with the camera).
-[[maybe_unused]] double connectible(const PathVertex* path, int j) {
+[[maybe_unused]] double connectible(const SubpathVertex* path, int j) {
     // TODO(07) Eq. 7.10: light subpath (path[0] is not the camera): c_0 = !path[0].deltaPosition;
     //          camera subpath: c_0 = 0, and c_1 = 0 if path[1] is at infinity; otherwise
     //          c_j = 1 if neither path[j] nor path[j-1] is delta, else 0.
@@ -21,13 +21,13 @@ double nonzero(float p) { return p != 0.0f ? double(p) : 1.0; }
 }
 
 // r_j^b with the given reverse pdf (Eq. 7.8).
-[[maybe_unused]] double ratio(float pdfRev, const PathVertex& v, Heuristic h) {
+[[maybe_unused]] double ratio(float pdfRev, const SubpathVertex& v, Heuristic h) {
     return heuristicPower(nonzero(pdfRev) / nonzero(v.pdfFwd), h);
 }
 
 // The sum over the techniques that move the connection into this subpath (Eq. 7.9), for the
 // endpoint e = path[e] with the connection's reverse pdfs of path[e] and path[e-1].
-[[maybe_unused]] double subpathSum(const PathVertex* path, int e, float revEnd, float revPrev, Heuristic h) {
+[[maybe_unused]] double subpathSum(const SubpathVertex* path, int e, float revEnd, float revPrev, Heuristic h) {
     // TODO(07) Eq. 7.9: e == 0: r'_0 c_0; else r'_e (c_e + r'_{e-1} (c_{e-1} + path[e].misSum)),
     //          where r'_e = ratio(revEnd, path[e], h), r'_{e-1} = ratio(revPrev, path[e-1], h),
     //          c_j = connectible(path, j).
@@ -45,7 +45,7 @@ void updateMisSum(Subpath& path, size_t i, Heuristic h) {
     (void)PS_TODO("lesson 07: updateMisSum", 0);
 }
 
-float misWeightRecursive(const PathVertex* y, int s, const PathVertex* z, int t, const ReversePdfs& rev, Heuristic h) {
+float misWeightRecursive(const SubpathVertex* y, int s, const SubpathVertex* z, int t, const ReversePdfs& rev, Heuristic h) {
     // TODO(07) Eq. 7.8: w = 1 / (1 + light sum + camera sum), the light sum
     //          subpathSum(y, s - 1, rev.lightEnd, rev.lightPrev, h) if s >= 1 (else 0), the
     //          camera sum subpathSum(z, t - 1, rev.cameraEnd, rev.cameraPrev, h).

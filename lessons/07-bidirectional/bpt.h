@@ -23,7 +23,7 @@ namespace ps {
 
 enum class VertexKind : uint8_t { Camera, Light, Surface };
 
-struct PathVertex {
+struct SubpathVertex {
     VertexKind kind = VertexKind::Surface;
     SurfacePoint sp;           // position, normal, material, light; infinite: sp.n is the
                                // direction the light travels (into the scene), sp.p unused
@@ -44,11 +44,11 @@ struct PathVertex {
         return kind == VertexKind::Surface || (kind == VertexKind::Light && !deltaPosition && !infinite);
     }
 };
-using Subpath = std::vector<PathVertex>;
+using Subpath = std::vector<SubpathVertex>;
 
 // Unit direction from `from` towards `to` (-to.sp.n if `to` is at infinity); the zero vector if
 // the two points coincide (a point light on a surface: every BSDF and pdf of it is then 0, never NaN).
-inline Vec3 directionTo(const PathVertex& from, const PathVertex& to) {
+inline Vec3 directionTo(const SubpathVertex& from, const SubpathVertex& to) {
     if (to.infinite) return -to.sp.n;
     const Vec3 d = to.sp.p - from.sp.p;
     const float d2 = glm::dot(d, d);
@@ -60,23 +60,23 @@ inline Vec3 directionTo(const PathVertex& from, const PathVertex& to) {
 // Solid-angle density pdfW of the direction from `from` towards `to`, turned into a density per
 // unit area at `to`: pdfW |cos theta_to| / d^2 (no cosine if `to` is not on a surface; unchanged
 // if `to` is at infinity). 0 when d is 0.
-float convertToArea(float pdfW, const PathVertex& from, const PathVertex& to);
+float convertToArea(float pdfW, const SubpathVertex& from, const SubpathVertex& to);
 
 // Density of choosing the light vertex v itself (Eq. 7.3): P(l) / area for an area light,
 // P(l) for a point light, P(l) * pdfBackgroundDirection() for the background (solid angle).
 // v.light is the light's index; v may be a camera-path vertex that hit an emitter.
-float pdfLightOrigin(const Scene& scene, const PathVertex& v);
+float pdfLightOrigin(const Scene& scene, const SubpathVertex& v);
 
 // Area density with which the light at `light` emits towards `to` (the light subpath's second
 // vertex, Eq. 7.3): area light: cos(theta) / pi about its normal (0 behind it), point light:
 // 1 / (4 pi), both converted with convertToArea; background: 1 / (pi R^2) * |cos theta_to|
 // (the disk of sampleEmission, R = scene.radius).
-float pdfLightToward(const Scene& scene, const PathVertex& light, const PathVertex& to);
+float pdfLightToward(const Scene& scene, const SubpathVertex& light, const SubpathVertex& to);
 
 // Area density with which `cur` samples `next` (Eq. 7.3): cur is the camera: pdfDirection;
 // a surface: pdfBSDF(material, n, towards prev, towards next), 0 if delta; prev may be null
 // only for the camera. Always through convertToArea.
-float pdfScatter(const Scene& scene, const PathVertex* prev, const PathVertex& cur, const PathVertex& next);
+float pdfScatter(const Scene& scene, const SubpathVertex* prev, const SubpathVertex& cur, const SubpathVertex& next);
 
 // ---- subpaths (light_subpath.cpp, camera_subpath.cpp), Eq. 7.1 ----
 
@@ -102,13 +102,13 @@ struct ReversePdfs {
     float cameraPrev = 0.0f;  // z_{t-2} sampled from z_{t-1} (s = 0: pdfLightToward)
 };
 // y points to the s light vertices, z to the t camera vertices (s + t >= 2, t >= 1).
-ReversePdfs connectionPdfs(const Scene& scene, const PathVertex* y, int s, const PathVertex* z, int t);
+ReversePdfs connectionPdfs(const Scene& scene, const SubpathVertex* y, int s, const SubpathVertex* z, int t);
 
 struct Connection {
     bool valid = false;
     Color value = Color(0.0f);  // unweighted contribution C*_{s,t} (Eq. 7.4); t = 1: to splat
     Vec2 raster;                // t = 1: where the light vertex lands on the image
-    PathVertex sampledLight;    // s = 1: the light vertex sampled for this connection (it
+    SubpathVertex sampledLight;    // s = 1: the light vertex sampled for this connection (it
                                 // replaces the light subpath's y_0, Eq. 7.2)
     ReversePdfs rev;
 };
@@ -127,14 +127,14 @@ Connection connect(const Scene& scene, const Subpath& light, const Subpath& came
 // the camera) can sample it (Eq. 7.7): t' = n - s' >= 1; s' = 0 needs x_0 not deltaPosition;
 // otherwise x_{s'-1} and x_{s'} both non-delta, and not a background vertex joined straight to
 // the camera (s' = 1, t' = 1, x_0 infinite).
-bool techniqueSamples(const PathVertex* x, int n, int sPrime);
+bool techniqueSamples(const SubpathVertex* x, int n, int sPrime);
 
 // w_{s,t} from the full list p_0 .. p_n of the joined path's techniques (Eq. 7.5-7.7): build
 // x_0 .. x_{n-1} (y then z reversed), with pL[i] (density from the light side) and pE[i] (from
 // the camera side) from pdfFwd/pdfRev and the connection's rev; p_s' = prod_{i<s'} pL[i]
 // prod_{i>=s'} pE[i] (0 counted as 1), and w = p_s^b / sum over sampling techniques of p_s'^b.
 // y: s vertices (s = 1: &c.sampledLight), z: t vertices.
-float misWeightFull(const PathVertex* y, int s, const PathVertex* z, int t, const ReversePdfs& rev, Heuristic h);
+float misWeightFull(const SubpathVertex* y, int s, const SubpathVertex* z, int t, const ReversePdfs& rev, Heuristic h);
 
 // The recursive partial sum (Eq. 7.9) for vertex i of a subpath, once path[i-2].pdfRev is
 // known: B_0 = B_1 = 0, B_i = r_{i-2}^b (c_{i-2} + B_{i-1}), r_j = pdfRev/pdfFwd of path[j]
@@ -143,7 +143,7 @@ float misWeightFull(const PathVertex* y, int s, const PathVertex* z, int t, cons
 void updateMisSum(Subpath& path, size_t i, Heuristic h);
 
 // The same weight as misWeightFull with O(1) work (Eq. 7.8-7.10), from the endpoints' misSum.
-float misWeightRecursive(const PathVertex* y, int s, const PathVertex* z, int t, const ReversePdfs& rev, Heuristic h);
+float misWeightRecursive(const SubpathVertex* y, int s, const SubpathVertex* z, int t, const ReversePdfs& rev, Heuristic h);
 
 // ---- the integrator (plumbing, bpt_integrator.cpp) ----
 

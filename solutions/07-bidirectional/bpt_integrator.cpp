@@ -69,7 +69,7 @@ Color bptSample(const Scene& scene, const Vec2& raster, Rng& rng, const BptOptio
             }
             const Connection c = connect(scene, light, camera, s, t, uLight, uPos);
             if (!c.valid) continue;
-            const PathVertex* y = s == 1 ? &c.sampledLight : light.data();
+            const SubpathVertex* y = s == 1 ? &c.sampledLight : light.data();
             const float w = opt.recursive ? misWeightRecursive(y, s, camera.data(), t, c.rev, opt.heuristic)
                                           : misWeightFull(y, s, camera.data(), t, c.rev, opt.heuristic);
             const Color weighted = c.value * w;

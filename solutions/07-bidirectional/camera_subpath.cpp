@@ -32,7 +32,7 @@ void cameraSubpath(const Scene& scene, Rng& rng, const Vec2& raster, int maxDept
     //! BEGIN
     path.clear();
     const Camera& camera = scene.camera;
-    PathVertex z0;
+    SubpathVertex z0;
     z0.kind = VertexKind::Camera;
     z0.sp.p = camera.position();
     z0.sp.n = camera.forward();
@@ -46,7 +46,7 @@ void cameraSubpath(const Scene& scene, Rng& rng, const Vec2& raster, int maxDept
     for (int i = 1; i <= maxDepth + 1; ++i) {
         SurfacePoint sp;
         const bool hit = scene.intersect(ray, sp);
-        PathVertex v;
+        SubpathVertex v;
         v.beta = beta;
         if (!hit) {
             if (scene.background < 0) break;

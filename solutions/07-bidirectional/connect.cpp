@@ -6,7 +6,7 @@
 
 namespace ps {
 
-ReversePdfs connectionPdfs(const Scene& scene, const PathVertex* y, int s, const PathVertex* z, int t) {
+ReversePdfs connectionPdfs(const Scene& scene, const SubpathVertex* y, int s, const SubpathVertex* z, int t) {
     //! TODO(07) Eq. 7.6, with zEnd = z[t-1], zPrev = z[t-2] (if t >= 2), yEnd = y[s-1],
     //!          yPrev = y[s-2] (if s >= 2); leave a field 0 where its vertex does not exist:
     //!          s = 0 (zEnd is the light): cameraEnd = pdfLightOrigin(zEnd),
@@ -20,15 +20,15 @@ ReversePdfs connectionPdfs(const Scene& scene, const PathVertex* y, int s, const
     //! STUB return PS_TODO("lesson 07: connectionPdfs", ReversePdfs());
     //! BEGIN
     ReversePdfs r;
-    const PathVertex& zEnd = z[t - 1];
-    const PathVertex* zPrev = t >= 2 ? &z[t - 2] : nullptr;
+    const SubpathVertex& zEnd = z[t - 1];
+    const SubpathVertex* zPrev = t >= 2 ? &z[t - 2] : nullptr;
     if (s == 0) {
         r.cameraEnd = pdfLightOrigin(scene, zEnd);
         if (zPrev) r.cameraPrev = pdfLightToward(scene, zEnd, *zPrev);
         return r;
     }
-    const PathVertex& yEnd = y[s - 1];
-    const PathVertex* yPrev = s >= 2 ? &y[s - 2] : nullptr;
+    const SubpathVertex& yEnd = y[s - 1];
+    const SubpathVertex* yPrev = s >= 2 ? &y[s - 2] : nullptr;
     r.cameraEnd = s == 1 ? pdfLightToward(scene, yEnd, zEnd) : pdfScatter(scene, yPrev, yEnd, zEnd);
     if (zPrev) r.cameraPrev = pdfScatter(scene, &yEnd, zEnd, *zPrev);
     r.lightEnd = pdfScatter(scene, zPrev, zEnd, yEnd);
@@ -71,9 +71,9 @@ Connection connect(const Scene& scene, const Subpath& light, const Subpath& came
     //! STUB return PS_TODO("lesson 07: connect", Connection());
     //! BEGIN
     Connection c;
-    const PathVertex& zEnd = camera[size_t(t - 1)];
+    const SubpathVertex& zEnd = camera[size_t(t - 1)];
     const auto towards = directionTo;
-    const auto material = [&](const PathVertex& v) -> const Material& { return scene.materials[size_t(v.sp.material)]; };
+    const auto material = [&](const SubpathVertex& v) -> const Material& { return scene.materials[size_t(v.sp.material)]; };
     if (s == 0) {
         if (zEnd.infinite) c.value = zEnd.beta * scene.backgroundRadiance();
         else if (zEnd.light >= 0 && zEnd.kind == VertexKind::Surface)
@@ -82,7 +82,7 @@ Connection connect(const Scene& scene, const Subpath& light, const Subpath& came
         c.valid = !isBlack(c.value);
     } else if (t == 1) {
         c.sampledLight = light[0];
-        const PathVertex& yEnd = light[size_t(s - 1)];
+        const SubpathVertex& yEnd = light[size_t(s - 1)];
         if (yEnd.infinite) return c;
         const CameraConnection cc = connectToCamera(scene, yEnd.sp, yEnd.onSurface());
         if (!cc.valid) return c;
@@ -103,7 +103,7 @@ Connection connect(const Scene& scene, const Subpath& light, const Subpath& came
         if (l < 0) return c;
         const LightSample ls = sampleLight(scene, l, zEnd.sp.p, uPos);
         const Light& lt = scene.lights[size_t(l)];
-        PathVertex& y0 = c.sampledLight;
+        SubpathVertex& y0 = c.sampledLight;
         y0.kind = VertexKind::Light;
         y0.light = l;
         y0.sp.p = ls.p;
@@ -132,7 +132,7 @@ Connection connect(const Scene& scene, const Subpath& light, const Subpath& came
         }
         c.valid = visible;
     } else {
-        const PathVertex& yEnd = light[size_t(s - 1)];
+        const SubpathVertex& yEnd = light[size_t(s - 1)];
         if (zEnd.infinite) return c;
         const Vec3 d = yEnd.sp.p - zEnd.sp.p;
         const float d2 = glm::dot(d, d);

@@ -35,7 +35,7 @@ void lightSubpath(const Scene& scene, Rng& rng, int maxDepth, Heuristic h, Subpa
     const LightPathStart start = startLightPath(scene, rng.uniform(), rng.uniform2(), rng.uniform2());
     if (!start.valid) return;
     const Light& light = scene.lights[size_t(start.light)];
-    PathVertex y0;
+    SubpathVertex y0;
     y0.kind = VertexKind::Light;
     y0.sp = start.y0;
     y0.light = start.light;
@@ -54,13 +54,13 @@ void lightSubpath(const Scene& scene, Rng& rng, int maxDepth, Heuristic h, Subpa
         SurfacePoint sp;
         if (!scene.intersect(ray, sp)) break;
         const Material& m = scene.materials[size_t(sp.material)];
-        PathVertex v;
+        SubpathVertex v;
         v.kind = VertexKind::Surface;
         v.sp = sp;
         v.beta = beta;
         v.delta = m.isDelta();
         v.light = sp.light;
-        const PathVertex& prev = path.back();
+        const SubpathVertex& prev = path.back();
         if (bounces == 1) v.pdfFwd = pdfLightToward(scene, prev, v);
         else v.pdfFwd = pdfScatter(scene, &path[path.size() - 2], prev, v);
         path.push_back(v);

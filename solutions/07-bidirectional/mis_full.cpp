@@ -5,7 +5,7 @@
 
 namespace ps {
 
-bool techniqueSamples(const PathVertex* x, int n, int sPrime) {
+bool techniqueSamples(const SubpathVertex* x, int n, int sPrime) {
     //! TODO(07) Eq. 7.7: false if sPrime >= n (t' = 0: the pinhole cannot be hit); s' = 0:
     //!          !x[0].deltaPosition; otherwise x[s'-1] and x[s'] must both be non-delta, and
     //!          not (s' == 1 && n == 2 && x[0].infinite).
@@ -19,7 +19,7 @@ bool techniqueSamples(const PathVertex* x, int n, int sPrime) {
     //! END
 }
 
-float misWeightFull(const PathVertex* y, int s, const PathVertex* z, int t, const ReversePdfs& rev, Heuristic h) {
+float misWeightFull(const SubpathVertex* y, int s, const SubpathVertex* z, int t, const ReversePdfs& rev, Heuristic h) {
     //! TODO(07) Eq. 7.5-7.7. n = s + t; x[i] = y[i] for i < s, x[s + j] = z[t - 1 - j];
     //!          pL[i] (x_i sampled from the light side) and pE[i] (from the camera side):
     //!          light vertex y_i: pL = pdfFwd, pE = pdfRev, but rev.lightEnd for i = s-1 and
@@ -32,7 +32,7 @@ float misWeightFull(const PathVertex* y, int s, const PathVertex* z, int t, cons
     //! STUB return PS_TODO("lesson 07: misWeightFull", 0.0f);
     //! BEGIN
     const int n = s + t;
-    std::vector<PathVertex> x(static_cast<size_t>(n));
+    std::vector<SubpathVertex> x(static_cast<size_t>(n));
     std::vector<double> pL(static_cast<size_t>(n)), pE(static_cast<size_t>(n));
     const auto one = [](float p) { return p != 0.0f ? double(p) : 1.0; };
     for (int i = 0; i < s; ++i) {

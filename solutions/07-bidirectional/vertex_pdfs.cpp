@@ -6,7 +6,7 @@
 
 namespace ps {
 
-float convertToArea(float pdfW, const PathVertex& from, const PathVertex& to) {
+float convertToArea(float pdfW, const SubpathVertex& from, const SubpathVertex& to) {
     //! TODO(07) Eq. 7.3: if `to` is at infinity return pdfW unchanged; else w = to.sp.p - from.sp.p,
     //!          d2 = |w|^2, 0 if d2 is 0; pdf = pdfW / d2, times |cos| = |dot(to.sp.n, w)| / sqrt(d2)
     //!          if to.onSurface().
@@ -23,7 +23,7 @@ float convertToArea(float pdfW, const PathVertex& from, const PathVertex& to) {
     //! END
 }
 
-float pdfLightOrigin(const Scene& scene, const PathVertex& v) {
+float pdfLightOrigin(const Scene& scene, const SubpathVertex& v) {
     //! TODO(07) Eq. 7.3: P = scene.lightSelectionProb(v.light) (0 if v.light < 0); background:
     //!          P * pdfBackgroundDirection(); point light: P; area light: P * pdfLightArea(scene, l).
     //! STUB (void)scene; (void)v;
@@ -38,7 +38,7 @@ float pdfLightOrigin(const Scene& scene, const PathVertex& v) {
     //! END
 }
 
-float pdfLightToward(const Scene& scene, const PathVertex& light, const PathVertex& to) {
+float pdfLightToward(const Scene& scene, const SubpathVertex& light, const SubpathVertex& to) {
     //! TODO(07) Eq. 7.3, the densities sampleEmission uses: background: 1 / (pi R^2) with
     //!          R = scene.radius, times |dot(to.sp.n, light.sp.n)| if to.onSurface() (parallel
     //!          rays from a disk); point light: convertToArea(1 / (4 pi)); area light: the
@@ -61,7 +61,7 @@ float pdfLightToward(const Scene& scene, const PathVertex& light, const PathVert
     //! END
 }
 
-float pdfScatter(const Scene& scene, const PathVertex* prev, const PathVertex& cur, const PathVertex& next) {
+float pdfScatter(const Scene& scene, const SubpathVertex* prev, const SubpathVertex& cur, const SubpathVertex& next) {
     //! TODO(07) Eq. 7.3: the unit direction wn = directionTo(cur, next) (bpt.h); camera:
     //!          pdfW = scene.camera.pdfDirection(wn); surface: 0 if cur.delta, else
     //!          pdfW = pdfBSDF(material, cur.sp.n, wp, wn) with wp = directionTo(cur, *prev).

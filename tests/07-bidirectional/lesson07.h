@@ -18,7 +18,7 @@
 namespace lesson07 {
 
 using ps::Color;
-using ps::PathVertex;
+using ps::SubpathVertex;
 using ps::Vec2;
 using ps::Vec3;
 using ps::fmt::num;
@@ -80,12 +80,12 @@ inline double total(const ps::Image& img) {
 // x_0 .. x_{n-1} (light to camera) with the densities of each vertex from the light side (pL)
 // and from the camera side (pE), read from the subpaths and the connection's reverse pdfs.
 struct JoinedPath {
-    std::vector<PathVertex> x;
+    std::vector<SubpathVertex> x;
     std::vector<float> pL, pE;
     int s = 0, t = 0;   // the technique that made it
 };
 
-inline JoinedPath join(const PathVertex* y, int s, const PathVertex* z, int t, const ps::ReversePdfs& rev) {
+inline JoinedPath join(const SubpathVertex* y, int s, const SubpathVertex* z, int t, const ps::ReversePdfs& rev) {
     JoinedPath j;
     j.s = s;
     j.t = t;
@@ -126,14 +126,14 @@ inline Split split(const ps::Scene& scene, const JoinedPath& j, int sp, ps::Heur
     Split out;
     const int n = int(j.x.size());
     for (int i = 0; i < sp; ++i) {
-        PathVertex v = j.x[size_t(i)];
+        SubpathVertex v = j.x[size_t(i)];
         v.pdfFwd = j.pL[size_t(i)];
         v.pdfRev = j.pE[size_t(i)];
         out.y.push_back(v);
         ps::updateMisSum(out.y, out.y.size() - 1, h);
     }
     for (int i = n - 1; i >= sp; --i) {
-        PathVertex v = j.x[size_t(i)];
+        SubpathVertex v = j.x[size_t(i)];
         v.pdfFwd = j.pE[size_t(i)];
         v.pdfRev = j.pL[size_t(i)];
         out.z.push_back(v);
@@ -169,7 +169,7 @@ inline std::string describe(const JoinedPath& j) {
     std::ostringstream o;
     o << "a path of " << j.x.size() << " vertices made by (s, t) = (" << j.s << ", " << j.t << "): ";
     for (size_t i = 0; i < j.x.size(); ++i) {
-        const PathVertex& v = j.x[i];
+        const SubpathVertex& v = j.x[i];
         o << (i ? " - " : "")
           << (v.kind == ps::VertexKind::Camera ? "camera"
               : v.infinite                     ? "background"

@@ -106,7 +106,7 @@ TEST_CASE("close vertices in a corner make no fireflies: max pixel below 2 x the
 }
 
 TEST_CASE("no NaN or Inf in any scene of the course, and every image is lit [1 pt]") {
-    for (const std::string& name : {"cornell-box", "cornell-glossy", "cornell-small-light", "cornell-spheres", "cornell-point-light",
+    for (const std::string name : {"cornell-box", "cornell-glossy", "cornell-small-light", "cornell-spheres", "cornell-point-light",
                                     "cornell-background", "glass-lamp", "veach-plates", "point-in-sphere", "furnace"}) {
         const ps::Scene scene = loadSceneAt("scenes/" + name + ".scene", 12, 12);
         for (const std::string algo : {"bpt", "bpt-balance", "bpt-full"}) {
