@@ -89,6 +89,16 @@ if wanted 05; then
   done
 fi
 
+# Lesson 6: the four techniques of path length 3 on the gap box, 64 spp each (lessons/06 README, section 5).
+if wanted 06; then
+  d="$(dest 06-path-space)"; s="$work/gap96.scene"
+  sed 's/resolution 16 16/resolution 96 96/' tests/06-path-space/data/gap-box.scene > "$s"
+  r="$work/ref96.pfm"
+  "$ps" render "$s" --algo path-s1 --maxdepth 2 --spp "$(t 4096 16)" --seed 1 --out "$r" --no-progress >&2
+  converge "$s" "$r" "$work/06" --algos path-s0,path-s1,path-s2,path-s3 --spp "$(t 64 4)" --maxdepth 2
+  cp "$work/06/equal-time.png" "$d/gap-box-k3-techniques.png"; done_fig "$d/gap-box-k3-techniques.png"
+fi
+
 # Lesson 7: pt, lt and bpt on the Cornell box at equal time; Veach's pyramid (lessons/07 README).
 if wanted 07; then
   d="$(dest 07-bidirectional)"; s="$(scene cornell-box 128)"
