@@ -34,6 +34,7 @@ case "$build" in /*) ;; *) build="$src/$build" ;; esac
 ps="$build/pathspace"
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
+touch "$work/start"   # figures newer than this were made by this run
 
 # t FULL QUICK: a budget (seconds or samples) in full or in quick mode.
 t() { if [ "$quick" = 1 ]; then echo "$2"; else echo "$1"; fi; }
@@ -113,4 +114,15 @@ if wanted 07; then
   done_fig "$d/cornell-pyramid-unweighted.png, cornell-pyramid-weighted.png"
 fi
 
+# Every image a slide deck shows from a lesson folder must be one this script makes (so one command
+# remakes all of them); checked when every lesson was run.
+if [ ${#only[@]} -eq 0 ]; then
+  missing=0
+  for link in $(grep -ho '](\.\./lessons/[^)]*)' slides/*.md | sed 's/^](\.\.\/lessons\///; s/)$//' | sort -u); do
+    if [ ! -f "$(dest "${link%%/*}")/${link#*/}" ] || [ -z "$(find "$(dest "${link%%/*}")/${link#*/}" -newer "$work/start" 2>/dev/null)" ]; then
+      echo "figures: slides show lessons/$link, which this script does not make" >&2; missing=1
+    fi
+  done
+  [ "$missing" = 0 ] || exit 1
+fi
 echo "figures: $n figure sets written$([ "$quick" = 1 ] && echo ' (quick budgets: noisy)')"
