@@ -372,7 +372,7 @@ int pyramid(const std::vector<std::string>& args) {
         else if (a == "--spp") { spp = parseNumber<int>(a, value()); if (spp < 1) throw UsageError("--spp must be at least 1"); }
         else if (a == "--seed") seed = parseNumber<uint64_t>(a, value());
         else if (a == "--threads") { threads = parseNumber<int>(a, value()); if (threads < 1) throw UsageError("--threads must be at least 1"); }
-        else if (a == "--exposure") exposure = std::stof(value());
+        else if (a == "--exposure") exposure = parseNumber<float>(a, value());
         else if (a == "--out") out = value();
         else if (a == "--no-prune") prune = false;
         else if (!a.empty() && a[0] == '-') throw UsageError("unknown option " + a);
@@ -418,6 +418,7 @@ int pyramid(const std::vector<std::string>& args) {
                  "a connection at a specular vertex) or found nothing at this spp\n";
     ps::writePNG(out + "-unweighted.png", unweighted, exposure);
     ps::writePNG(out + "-weighted.png", weighted, exposure);
+    std::cout << "pathspace: " << t.stats.nan << " NaN, " << t.stats.inf << " Inf values (counted, left out of the images)\n";
     std::cout << "pathspace: wrote " << out << "-unweighted.png, " << out << "-weighted.png and " << out << "-S-T[-weighted].pfm\n";
     return 0;
 }

@@ -176,11 +176,12 @@ struct TechniqueImages {
     std::vector<Image> unweighted, weighted;   // per technique, techniqueIndex(s, k)
     std::vector<Image> unweightedSq;           // per-sample sum of squares (variance), same order
     int spp = 0;
+    SampleStats stats;                         // NaN/Inf values met (counted, left out of the images)
 };
 inline int techniqueIndex(int s, int k) { return (k - 1) * (k + 4) / 2 + s; }   // row k holds s = 0 .. k + 1
 inline int techniqueCount(int maxLength) { return techniqueIndex(0, maxLength + 1); }
-// Renders spp samples per pixel with `threads` threads (results depend on the thread count only
-// through the order of float sums); images are means over the samples.
+// Renders spp samples per pixel with `threads` threads; images are means over the samples and
+// do not depend on the number of threads (t = 1 values are added in a fixed order).
 TechniqueImages renderTechniques(const Scene& scene, int maxLength, int spp, uint64_t seed, int threads,
                                  const BptOptions& opt);
 

@@ -131,19 +131,36 @@ struct BptFull : BptBase {
     BptFull() { opt.recursive = false; }
 };
 
-// Per-thread accumulation of the technique images.
+// Accumulation of the technique images for one task (a fixed block of pixels) of one iteration.
+// t >= 2 lands in the task's own pixels and is added at once (no other task writes there);
+// t = 1 lands anywhere and is kept in the task's list, added after the iteration in task order,
+// so the images do not depend on the number of threads. NaN/Inf values are counted and left out.
 struct ImageRecorder : TechniqueRecorder {
+    struct Splat {
+        size_t technique;
+        int x, y;
+        Color unweighted, weighted;
+    };
     TechniqueImages* images = nullptr;
+    std::vector<Splat>* splats = nullptr;   // this task's t = 1 list
+    SampleStats* stats = nullptr;
     void add(int s, int t, const Vec2& raster, const Color& unweighted, const Color& weighted) override {
         const int k = s + t - 1;
         if (k < 1 || k > images->maxLength) return;
         const size_t i = size_t(techniqueIndex(s, k));
         const int x = std::clamp(static_cast<int>(raster.x), 0, images->unweighted[i].width - 1);
         const int y = std::clamp(static_cast<int>(raster.y), 0, images->unweighted[i].height - 1);
-        if (!isFinite(unweighted) || !isFinite(weighted)) return;
-        images->unweighted[i].at(x, y) += unweighted;
-        images->weighted[i].at(x, y) += weighted;
-        images->unweightedSq[i].at(x, y) += unweighted * unweighted;
+        if (!isFinite(unweighted) || !isFinite(weighted)) {
+            checkSample(isFinite(unweighted) ? weighted : unweighted, *stats);
+            return;
+        }
+        if (t == 1) splats->push_back({i, x, y, unweighted, weighted});
+        else accumulate(*images, i, x, y, unweighted, weighted);
+    }
+    static void accumulate(TechniqueImages& images, size_t i, int x, int y, const Color& u, const Color& w) {
+        images.unweighted[i].at(x, y) += u;
+        images.weighted[i].at(x, y) += w;
+        images.unweightedSq[i].at(x, y) += u * u;
     }
 };
 
@@ -162,47 +179,53 @@ TechniqueImages emptyTechniques(int maxLength, int w, int h) {
 TechniqueImages renderTechniques(const Scene& scene, int maxLength, int spp, uint64_t seed, int threads,
                                  const BptOptions& opt) {
     const int w = scene.camera.width(), h = scene.camera.height(), pixels = w * h;
+    const int tasks = (pixels + kPixelsPerTask - 1) / kPixelsPerTask;
     if (threads < 1) threads = omp_get_max_threads();
-    std::vector<TechniqueImages> parts(static_cast<size_t>(threads));
     Scene limited = scene;
     limited.settings.maxDepth = std::min(scene.settings.maxDepth, maxLength - 1);
     const float scale = 1.0f / static_cast<float>(pixels);
-#pragma omp parallel num_threads(threads)
-    {
-        const int me = omp_get_thread_num();
-        parts[size_t(me)] = emptyTechniques(maxLength, w, h);
-        ImageRecorder recorder;
-        recorder.images = &parts[size_t(me)];
-        SplatBuffer dummy(w, h, 1);
-        Image scratch(w, h);
-        SampleStats stats;
-#pragma omp for schedule(static)
-        for (int pixel = 0; pixel < pixels; ++pixel) {
-            for (int it = 0; it < spp; ++it) {
-                Rng rng = taskRng(seed, uint32_t(it), static_cast<uint32_t>(pixel));
-                const SplatTarget target{&dummy, 0, &stats, scale};
-                const Vec2 raster(static_cast<float>(pixel % w) + rng.uniform(), static_cast<float>(pixel / w) + rng.uniform());
-                bptSample(limited, raster, rng, opt, target, &recorder);
-            }
-            dummy.resolve(scratch);
-        }
-    }
     TechniqueImages out = emptyTechniques(maxLength, w, h);
+    std::vector<std::vector<ImageRecorder::Splat>> lists(static_cast<size_t>(tasks));
+    std::vector<SampleStats> taskStats(static_cast<size_t>(tasks));
+    for (int it = 0; it < spp; ++it) {
+#pragma omp parallel num_threads(threads)
+        {
+            SplatBuffer dummy(w, h, 1);   // bptSample's own t = 1 splats (the weighted image): unused here
+            Image scratch(w, h);
+#pragma omp for schedule(dynamic, 1)
+            for (int task = 0; task < tasks; ++task) {
+                ImageRecorder recorder;
+                recorder.images = &out;
+                recorder.splats = &lists[size_t(task)];
+                recorder.stats = &taskStats[size_t(task)];
+                recorder.splats->clear();
+                SampleStats ignored;
+                const SplatTarget target{&dummy, 0, &ignored, scale};
+                const int end = std::min(pixels, (task + 1) * kPixelsPerTask);
+                for (int pixel = task * kPixelsPerTask; pixel < end; ++pixel) {
+                    Rng rng = taskRng(seed, uint32_t(it), static_cast<uint32_t>(pixel));
+                    const Vec2 raster(static_cast<float>(pixel % w) + rng.uniform(), static_cast<float>(pixel / w) + rng.uniform());
+                    bptSample(limited, raster, rng, opt, target, &recorder);
+                }
+                dummy.resolve(scratch);   // empties the list
+            }
+        }
+        for (const auto& list : lists)   // t = 1, in task order
+            for (const ImageRecorder::Splat& sp : list)
+                ImageRecorder::accumulate(out, sp.technique, sp.x, sp.y, sp.unweighted, sp.weighted);
+    }
+    for (const SampleStats& st : taskStats) {
+        out.stats.nan += st.nan;
+        out.stats.inf += st.inf;
+    }
     out.spp = spp;
     const float inv = 1.0f / static_cast<float>(spp);
-    for (size_t i = 0; i < out.unweighted.size(); ++i) {
-        for (const TechniqueImages& p : parts)
-            for (size_t q = 0; q < out.unweighted[i].pixels.size(); ++q) {
-                out.unweighted[i].pixels[q] += p.unweighted[i].pixels[q];
-                out.weighted[i].pixels[q] += p.weighted[i].pixels[q];
-                out.unweightedSq[i].pixels[q] += p.unweightedSq[i].pixels[q];
-            }
+    for (size_t i = 0; i < out.unweighted.size(); ++i)
         for (size_t q = 0; q < out.unweighted[i].pixels.size(); ++q) {
             out.unweighted[i].pixels[q] *= inv;
             out.weighted[i].pixels[q] *= inv;
             out.unweightedSq[i].pixels[q] *= inv * inv;   // sum of squares / spp^2: the variance of the mean (an upper bound)
         }
-    }
     return out;
 }
 
