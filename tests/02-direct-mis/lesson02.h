@@ -15,8 +15,13 @@
 #include "render.h"
 #include "scene_loader.h"
 #include "statistics.h"
+#include "lesson_files.h"
 
 namespace lesson02 {
+
+using ps::testfiles::loadSceneAt;
+using ps::testfiles::readText;
+using ps::testfiles::sourcePath;
 
 using ps::Color;
 using ps::Vec2;
@@ -37,25 +42,6 @@ inline const std::vector<std::string>& estimators() {
     static const std::vector<std::string> names = {"direct-light", "direct-bsdf",  "direct-balance",
                                                    "direct-power", "direct-max", "direct-onesample"};
     return names;
-}
-
-inline std::string sourcePath(const std::string& rel) { return std::string(PATHSPACE_SOURCE_DIR) + "/" + rel; }
-
-inline std::string readText(const std::string& path) {
-    std::ifstream in(path);
-    REQUIRE_MESSAGE(in.good(), "cannot open " << path);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
-// A scene file of the repository rendered at width x height pixels (its 'resolution' replaced),
-// so tests and the documented reference commands (`sed` on the same file) see the same scene.
-inline ps::Scene loadSceneAt(const std::string& rel, int width, int height) {
-    const std::string path = sourcePath(rel);
-    const std::string text = std::regex_replace(readText(path), std::regex(R"(resolution\s+\d+\s+\d+)"),
-                                                "resolution " + std::to_string(width) + " " + std::to_string(height));
-    return ps::parseScene(text, path);
 }
 
 struct Render {

@@ -14,8 +14,13 @@
 #include "render.h"
 #include "scene_loader.h"
 #include "statistics.h"
+#include "lesson_files.h"
 
 namespace lesson03 {
+
+using ps::testfiles::loadSceneAt;
+using ps::testfiles::readText;
+using ps::testfiles::sourcePath;
 
 using ps::Color;
 using ps::Vec2;
@@ -42,8 +47,6 @@ inline const std::vector<Estimator>& estimators() {
     return e;
 }
 
-inline std::string sourcePath(const std::string& rel) { return std::string(PATHSPACE_SOURCE_DIR) + "/" + rel; }
-
 inline std::string num(double x) {
     std::ostringstream s;
     s.precision(10);
@@ -57,14 +60,6 @@ inline std::string str(const Vec3& v) {
     return s.str();
 }
 inline double sum(const Color& c) { return double(c.r) + double(c.g) + double(c.b); }
-
-inline std::string readText(const std::string& path) {
-    std::ifstream in(path);
-    if (!in) FAIL("cannot open " << path);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
 
 // A closed furnace with diffuse albedo a and emission Le (grey): the camera at the centre of a
 // closed enclosure whose walls emit Le inwards and reflect with albedo a. The cube is
@@ -139,15 +134,6 @@ inline Render render(const ps::Scene& scene, const std::string& algo, int spp, u
     opt.threads = 1;
     const ps::RenderResult r = ps::render(scene, *integrator, opt);
     return {r.film.mean(), r.film.varianceOfMean(), r.stats, algo};
-}
-
-// A scene file of the repository at width x height pixels (its 'resolution' replaced), so that
-// the tests and the documented reference command (`sed` on the same file) see the same scene.
-inline ps::Scene loadSceneAt(const std::string& rel, int width, int height) {
-    const std::string path = sourcePath(rel);
-    return ps::parseScene(std::regex_replace(readText(path), std::regex(R"(resolution\s+\d+\s+\d+)"),
-                                             "resolution " + std::to_string(width) + " " + std::to_string(height)),
-                          path);
 }
 
 }  // namespace lesson03

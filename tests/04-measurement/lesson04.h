@@ -11,11 +11,16 @@
 #include <string>
 #include "04-measurement/measurement.h"
 #include "format.h"
+#include "lesson_files.h"
 #include "image.h"
 #include "scene_loader.h"
 #include "statistics.h"
 
 namespace lesson04 {
+
+using ps::testfiles::loadSceneAt;
+using ps::testfiles::readText;
+using ps::testfiles::sourcePath;
 
 using ps::Color;
 using ps::Vec2;
@@ -30,24 +35,6 @@ using ps::fmt::str;
 // implementation fails any of them by bad luck with probability at most 1 %.
 constexpr int kStatisticalTests = 5;
 inline double alpha() { return ps::stats::sidak(0.01, kStatisticalTests); }
-
-inline std::string sourcePath(const std::string& rel) { return std::string(PATHSPACE_SOURCE_DIR) + "/" + rel; }
-
-inline std::string readText(const std::string& path) {
-    std::ifstream in(path);
-    REQUIRE_MESSAGE(in.good(), "cannot open " << path);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
-// A scene file of the repository at width x height pixels (its 'resolution' replaced).
-inline ps::Scene loadSceneAt(const std::string& rel, int width, int height) {
-    const std::string path = sourcePath(rel);
-    const std::string text = std::regex_replace(readText(path), std::regex(R"(resolution\s+\d+\s+\d+)"),
-                                                "resolution " + std::to_string(width) + " " + std::to_string(height));
-    return ps::parseScene(text, path);
-}
 
 // The cameras of the W_e tests; the second is the wide-angle one (a corner pixel at 74 degrees
 // from the axis, where cos^4 = 0.006).

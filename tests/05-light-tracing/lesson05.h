@@ -10,12 +10,17 @@
 #include <vector>
 #include "05-light-tracing/lighttracer.h"
 #include "format.h"
+#include "lesson_files.h"
 #include "image.h"
 #include "render.h"
 #include "scene_loader.h"
 #include "statistics.h"
 
 namespace lesson05 {
+
+using ps::testfiles::loadSceneAt;
+using ps::testfiles::readText;
+using ps::testfiles::sourcePath;
 
 using ps::Color;
 using ps::Vec2;
@@ -32,25 +37,6 @@ using ps::fmt::str;
 // implementation fails any of them by bad luck with probability at most 1 %.
 constexpr int kStatisticalTests = 11;
 inline double alpha() { return ps::stats::sidak(0.01, kStatisticalTests); }
-
-inline std::string sourcePath(const std::string& rel) { return std::string(PATHSPACE_SOURCE_DIR) + "/" + rel; }
-
-inline std::string readText(const std::string& path) {
-    std::ifstream in(path);
-    REQUIRE_MESSAGE(in.good(), "cannot open " << path);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
-// A scene file of the repository at width x height pixels (its 'resolution' replaced), so that
-// the tests and the documented reference commands (`sed` on the same file) see the same scene.
-inline ps::Scene loadSceneAt(const std::string& rel, int width, int height) {
-    const std::string path = sourcePath(rel);
-    const std::string text = std::regex_replace(readText(path), std::regex(R"(resolution\s+\d+\s+\d+)"),
-                                                "resolution " + std::to_string(width) + " " + std::to_string(height));
-    return ps::parseScene(text, path);
-}
 
 struct Render {
     ps::Image mean, variance;

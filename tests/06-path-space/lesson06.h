@@ -11,12 +11,17 @@
 #include <vector>
 #include "06-path-space/paths.h"
 #include "format.h"
+#include "lesson_files.h"
 #include "image.h"
 #include "render.h"
 #include "scene_loader.h"
 #include "statistics.h"
 
 namespace lesson06 {
+
+using ps::testfiles::loadSceneAt;
+using ps::testfiles::readText;
+using ps::testfiles::sourcePath;
 
 using ps::Color;
 using ps::Vec2;
@@ -36,8 +41,6 @@ constexpr int kStatisticalTests = 6;
 inline double alpha() { return ps::stats::sidak(0.01, kStatisticalTests); }
 
 constexpr double kPi = 3.14159265358979323846;
-
-inline std::string sourcePath(const std::string& rel) { return std::string(PATHSPACE_SOURCE_DIR) + "/" + rel; }
 
 inline bool close(double a, double b, double rel) {
     return std::abs(a - b) <= rel * std::max(std::abs(a), std::abs(b)) + 1e-30;

@@ -1,0 +1,26 @@
+// The repository's files as the graded tests read them: a path in the source tree, a file's
+// text, a shipped scene at test resolution. For test programs built with PATHSPACE_SOURCE_DIR
+// (tests/CMakeLists.txt); each lesson's lessonNN.h brings these names into its namespace.
+#pragma once
+#include <regex>
+#include <string>
+#include "scene_loader.h"
+#include "scene_text.h"
+
+namespace ps::testfiles {
+
+inline std::string sourcePath(const std::string& rel) { return std::string(PATHSPACE_SOURCE_DIR) + "/" + rel; }
+
+// The whole file; fails the test (REQUIRE) if it cannot be read.
+inline std::string readText(const std::string& path) { return scenetext::readText(path); }
+
+// A scene file of the repository at width x height pixels (its 'resolution' replaced), so that
+// the tests and the documented reference commands (`sed` on the same file) see the same scene.
+inline Scene loadSceneAt(const std::string& rel, int width, int height) {
+    const std::string path = sourcePath(rel);
+    const std::string text = std::regex_replace(readText(path), std::regex(R"(resolution\s+\d+\s+\d+)"),
+                                                "resolution " + std::to_string(width) + " " + std::to_string(height));
+    return parseScene(text, path);
+}
+
+}  // namespace ps::testfiles
