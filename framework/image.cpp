@@ -1,14 +1,12 @@
 #include "image.h"
 #include <cstdio>
 #include <cstring>
+#include <iterator>
 #include <fstream>
 #include "errors.h"
 
 #define STB_IMAGE_WRITE_IMPLEMENTATION
 #include <stb_image_write.h>
-#define STB_IMAGE_IMPLEMENTATION
-#define STBI_ONLY_HDR
-#include <stb_image.h>
 
 namespace ps {
 
@@ -21,6 +19,19 @@ std::string extensionOf(const std::string& path) {
     return ext;
 }
 bool littleEndianHost() { uint16_t x = 1; unsigned char b; std::memcpy(&b, &x, 1); return b == 1; }
+
+// Readers check a header's size against the bytes the file really has before they allocate:
+// a 24-byte file must not make them ask for gigabytes.
+constexpr int kMaxImageSide = 1 << 16;
+
+// The bytes of f from its current position to its end (f is left where it was).
+uint64_t bytesLeft(std::ifstream& f) {
+    const std::streampos here = f.tellg();
+    f.seekg(0, std::ios::end);
+    const std::streampos end = f.tellg();
+    f.seekg(here);
+    return here >= 0 && end >= here ? uint64_t(end - here) : 0;
+}
 }  // namespace
 
 void writePFM(const std::string& path, const Image& img) {
@@ -45,6 +56,11 @@ Image readPFM(const std::string& path) {
         throw InputError(path, 0, "bad PFM header (size " + std::to_string(w) + "x" + std::to_string(h) + ")");
     f.get();   // the single whitespace after the scale
     const bool fileLE = scale < 0.0;
+    const uint64_t need = uint64_t(w) * uint64_t(h) * sizeof(Color), have = bytesLeft(f);
+    if (have < need)
+        throw InputError(path, 0, "the header says " + std::to_string(w) + "x" + std::to_string(h) + " pixels (" +
+                                      std::to_string(need) + " bytes) but the file has only " + std::to_string(have) +
+                                      " bytes of pixels (truncated?)");
     Image img(w, h);
     for (int y = h - 1; y >= 0; --y) {
         f.read(reinterpret_cast<char*>(&img.at(0, y)), sizeof(Color) * size_t(w));
@@ -67,13 +83,77 @@ void writeHDR(const std::string& path, const Image& img) {
         throw InputError(path, 0, "cannot write .hdr file");
 }
 
+// Radiance .hdr (RGBE), our own reader: the header lines up to an empty line, the size line
+// "-Y height +X width" (rows top to bottom, as writeHDR writes them), then per scanline either
+// the run-length encoding (2 2 w/256 w%256, then each of the 4 channels as runs: a count byte
+// c > 128 repeats the next byte c - 128 times, 0 < c <= 128 copies c bytes) or flat 4-byte
+// pixels. Every count and size is checked against the file, so a truncated or hostile file
+// gets an error, never a hang or a huge allocation.
 Image readHDR(const std::string& path) {
-    int w, h, n;
-    float* data = stbi_loadf(path.c_str(), &w, &h, &n, 3);
-    if (!data) throw InputError(path, 0, std::string("cannot read .hdr file: ") + stbi_failure_reason());
-    Image img(w, h);
-    std::memcpy(static_cast<void*>(img.pixels.data()), data, sizeof(float) * 3 * size_t(w) * h);
-    stbi_image_free(data);
+    std::ifstream f(path, std::ios::binary);
+    if (!f) throw InputError(path, 0, "cannot open file (does it exist?)");
+    auto fail = [&](const std::string& problem) -> void { throw InputError(path, 0, "not a readable .hdr file: " + problem); };
+    std::string line;
+    if (!std::getline(f, line) || line.rfind("#?", 0) != 0) fail("it does not start with '#?RADIANCE'");
+    bool rgbe = true;
+    for (int n = 0;; ++n) {
+        if (!std::getline(f, line)) fail("the header does not end (no empty line before the size)");
+        if (line.empty()) break;
+        if (line.rfind("FORMAT=", 0) == 0) rgbe = line == "FORMAT=32-bit_rle_rgbe";
+        if (n > 1000 || line.size() > 4096) fail("header too long");
+    }
+    if (!rgbe) fail("only FORMAT=32-bit_rle_rgbe is supported");
+    if (!std::getline(f, line)) fail("no size line");
+    char ya[3] = {}, xa[3] = {};
+    long long h = 0, w = 0;
+    char extra = 0;
+    if (std::sscanf(line.c_str(), "%2s %lld %2s %lld %c", ya, &h, xa, &w, &extra) != 4 || std::string(ya) != "-Y" ||
+        std::string(xa) != "+X")
+        fail("size line '" + line.substr(0, 40) + "' is not '-Y height +X width' (other orientations are not supported)");
+    if (w < 1 || h < 1 || w > kMaxImageSide || h > kMaxImageSide)
+        fail("size " + std::to_string(w) + "x" + std::to_string(h) + " (each side must be 1 to " +
+             std::to_string(kMaxImageSide) + ")");
+    // The smallest possible scanline: run-length encoded, every channel in runs of 127.
+    const bool rle = w >= 8 && w < 32768;
+    const uint64_t minLine = rle ? 4 + 4 * 2 * uint64_t((w + 126) / 127) : 4 * uint64_t(w);
+    if (bytesLeft(f) < minLine * uint64_t(h))
+        fail("the size says " + std::to_string(w) + "x" + std::to_string(h) + " but the file is too short for it");
+    std::vector<unsigned char> data((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+    size_t at = 0;
+    auto next = [&]() -> unsigned char {
+        if (at >= data.size()) fail("the file ends inside the pixels (truncated?)");
+        return data[at++];
+    };
+    Image img{int(w), int(h)};
+    std::vector<unsigned char> scan(4 * size_t(w));
+    for (int y = 0; y < h; ++y) {
+        const bool encoded = rle && at + 4 <= data.size() && data[at] == 2 && data[at + 1] == 2 &&
+                             ((data[at + 2] << 8) | data[at + 3]) == w;
+        if (encoded) {
+            at += 4;
+            for (int c = 0; c < 4; ++c) {
+                for (long long x = 0; x < w;) {
+                    const unsigned count = next();
+                    if (count == 0) fail("a run of length 0 in scanline " + std::to_string(y));
+                    const unsigned n = count > 128 ? count - 128 : count;
+                    if (x + n > w) fail("a run goes past the end of scanline " + std::to_string(y));
+                    if (count > 128) {
+                        const unsigned char v = next();
+                        for (unsigned i = 0; i < n; ++i) scan[4 * size_t(x++) + c] = v;
+                    } else {
+                        for (unsigned i = 0; i < n; ++i) scan[4 * size_t(x++) + c] = next();
+                    }
+                }
+            }
+        } else {
+            for (size_t i = 0; i < scan.size(); ++i) scan[i] = next();
+        }
+        for (int x = 0; x < w; ++x) {
+            const unsigned char* p = &scan[4 * size_t(x)];
+            const float s = p[3] == 0 ? 0.0f : std::ldexp(1.0f, int(p[3]) - (128 + 8));
+            img.at(x, y) = Color(p[0] * s, p[1] * s, p[2] * s);
+        }
+    }
     return img;
 }
 

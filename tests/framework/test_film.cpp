@@ -97,6 +97,36 @@ TEST_CASE("film: readPFM of a missing or malformed file throws InputError naming
     }
 }
 
+TEST_CASE("film: hostile PFM and .hdr files give an InputError at once (no hang, no huge allocation)") {
+    // Each file lies about its size or its run lengths. The readers check every size against
+    // the bytes the file has before allocating, and every run length while decoding: a 24-byte
+    // PFM claiming 65536 x 65536 pixels must not ask for 48 GiB, a run of length 0 must not
+    // loop forever (ctest's timeout would catch a hang), a 0 x 0 image is an error.
+    const std::string rle = std::string("\x02\x02\x00\x10", 4);   // RLE scanline header, width 16
+    struct Bad { const char* name; std::string text; const char* words; };
+    const Bad bad[] = {
+        {"huge.pfm", "PF\n65536 65536\n-1.0\n" + std::string(6, '\0'), "only"},
+        {"huge.hdr", "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 65536 +X 65536\n" + std::string(8, '\0'), "too short"},
+        {"zero.hdr", "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 0 +X 0\n", "size"},
+        {"zero-run.hdr", "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 1 +X 16\n" + rle + std::string(16, '\0'), "length 0"},
+        {"long-run.hdr", "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 1 +X 16\n" + rle + std::string("\xff\x01", 2) +
+                             std::string(14, '\x01'), "past the end"},
+        {"truncated-rle.hdr", "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 2 +X 16\n" + rle + std::string(4 * 17, '\x10') +
+                                  rle + std::string("\x90\x01", 2), "ends"},   // scanline 0 whole, scanline 1 cut
+        {"no-header-end.hdr", "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n", "header"},
+        {"not-hdr.hdr", "P6\n2 2\n255\n", "RADIANCE"},
+        {"flipped.hdr", "#?RADIANCE\n\n+Y 2 +X 2\n" + std::string(16, '\0'), "orientation"},
+    };
+    for (const Bad& b : bad) {
+        const std::string path = tempPath(b.name);
+        writeText(path, b.text);
+        const std::string m = inputErrorOf([&] { readImage(path); });
+        fs::remove(path);
+        CHECK_MESSAGE(m.find(path) != std::string::npos, b.name << ": expected an InputError naming the file, got '" << m << "'");
+        CHECK_MESSAGE(m.find(b.words) != std::string::npos, b.name << ": expected '" << b.words << "' in '" << m << "'");
+    }
+}
+
 TEST_CASE("film: .hdr round trip is within RGBE's error") {
     // stb writes RGBE: a shared exponent e with 2^(e-1) <= max channel < 2^e and 8-bit mantissas
     // truncated, so each decoded channel satisfies 0 <= original - decoded < 2^e / 256 <=
