@@ -18,6 +18,7 @@ struct Light {
     std::vector<uint32_t> prims;   // area light: its primitives (indices into Scene::prims)
     Distribution1D primByArea;     // area light: picks a primitive proportionally to its area
     float area = 0.0f;             // area light: total area
+    int line = 0;                  // the scene file's line that made it (0: not from a file)
 
     bool isDelta() const { return kind == LightKind::Point; }          // a flag, not a huge pdf
     bool isInfinite() const { return kind == LightKind::Background; }

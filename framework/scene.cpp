@@ -1,4 +1,5 @@
 #include "scene.h"
+#include "errors.h"
 #include <sstream>
 
 namespace ps {
@@ -67,7 +68,14 @@ void Scene::finalize() {
         }
     }
     std::vector<double> power;
-    for (size_t l = 0; l < lights.size(); ++l) power.push_back(lightPower(*this, static_cast<int>(l)));
+    for (size_t l = 0; l < lights.size(); ++l) {
+        power.push_back(lightPower(*this, static_cast<int>(l)));
+        // Radiance x area x pi in float: a light whose power overflows would be chosen with
+        // probability NaN or 0 and render black without a single NaN sample to count.
+        if (!std::isfinite(power.back()))
+            throw InputError(path, lights[l].line, "this light's power (radiance x area x pi) overflows float: "
+                                                   "lower its emission or scale the scene's units");
+    }
     lightSelection = Distribution1D(power);
 
     for (const Primitive& pr : prims) {

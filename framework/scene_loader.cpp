@@ -1,5 +1,6 @@
 #include "scene_loader.h"
 #include <charconv>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -103,14 +104,50 @@ std::string folderOf(const std::string& path) {
 }
 
 bool isDegenerate(const Vec3& a, const Vec3& b, const Vec3& c) {
-    const Vec3 e1 = b - a, e2 = c - a;
-    const float l = glm::length(e1) * glm::length(e2);
+    // In double: at coordinates near 1e15 and beyond, the squares of float lengths overflow and
+    // a large triangle would look degenerate.
+    const glm::dvec3 e1 = glm::dvec3(b) - glm::dvec3(a), e2 = glm::dvec3(c) - glm::dvec3(a);
+    const double l = glm::length(e1) * glm::length(e2);
     // Zero area, or so thin that its normal is meaningless (sin of the angle below 1e-6).
-    return !(l > 0.0f) || !(glm::length(glm::cross(e1, e2)) > 1e-6f * l);
+    return !(l > 0.0) || !(glm::length(glm::cross(e1, e2)) > 1e-6 * l);
+}
+
+// The unit normal of the triangle (a, b, c), in double (see isDegenerate).
+glm::dvec3 unitNormal(const Vec3& a, const Vec3& b, const Vec3& c) {
+    return glm::normalize(glm::cross(glm::dvec3(b) - glm::dvec3(a), glm::dvec3(c) - glm::dvec3(a)));
+}
+
+// Radiance, intensity and emission values above this leave no room in float for the products
+// of light transport (radiance x area x pi, Le / pdf, ...): an overflow would show up as a black
+// or Inf image long after loading.
+constexpr float kMaxEmission = 1e30f;
+
+// The largest Phong exponent: a lobe of exponent n is about 1/sqrt(n) radians wide, and float
+// directions near the mirror direction resolve cos(theta) only to ~6e-8, i.e. angles of ~3e-4
+// radians; beyond 1e7 the lobe is narrower than that (use a mirror).
+constexpr float kMaxPhongExponent = 1e7f;
+
+// Input files are read whole: a scene file, an OBJ or MTL larger than these (or a device such as
+// /dev/zero, which never ends) is refused before reading.
+constexpr uint64_t kMaxSceneBytes = uint64_t(64) << 20;
+constexpr uint64_t kMaxMeshBytes = uint64_t(1) << 30;
+
+template <class Fail>
+void checkFileSize(const std::string& path, uint64_t limit, const Fail& fail) {
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec))
+        fail("'" + path + "' is not a regular file (a folder or a device cannot be read as one)");
+    const uint64_t size = std::filesystem::file_size(path, ec);
+    if (!ec && size > limit)
+        fail("'" + path + "' has " + std::to_string(size >> 20) + " MiB; at most " + std::to_string(limit >> 20) +
+             " MiB are read");
 }
 
 Color checkColor(const Statement& st, const std::string& key, const Color& c, bool atMostOne) {
     if (c.r < 0.0f || c.g < 0.0f || c.b < 0.0f) st.fail("'" + key + "' must not be negative");
+    if (maxComponent(c) > kMaxEmission)
+        st.fail("'" + key + "' above 1e30: light transport multiplies it by areas, pdfs and cosines in float, "
+                "which would overflow (scale the scene's units instead)");
     if (atMostOne && (c.r > 1.0f || c.g > 1.0f || c.b > 1.0f))
         st.fail("'" + key + "' must be at most 1 (a surface cannot reflect more than it receives)");
     return c;
@@ -120,12 +157,16 @@ class Loader {
 public:
     Loader(Scene& scene, const std::string& path) : scene_(scene), path_(path) {}
 
-    void run(const std::string& text) {
+    void run(std::string text) {
+        // A UTF-8 byte order mark (some editors write one) is not part of the first keyword.
+        if (text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);
         std::istringstream in(text);
         std::string raw;
         int lineNo = 0;
         while (std::getline(in, raw)) {
             ++lineNo;
+            if (raw.find('\0') != std::string::npos)
+                throw InputError(path_, lineNo, "the line holds a NUL byte: is this a binary file, not a scene file?");
             if (size_t hash = raw.find('#'); hash != std::string::npos) raw.resize(hash);
             Statement st;
             st.file = path_;
@@ -196,6 +237,9 @@ private:
             m.kind = BSDFKind::Phong;
             m.exponent = st.optNumber("exponent", 0.0f);
             if (m.exponent < 0.0f) st.fail("'exponent' must not be negative");
+            if (m.exponent > kMaxPhongExponent)
+                st.fail("'exponent' above 1e7: the lobe would be narrower than float directions can resolve "
+                        "(use 'mirror' for a perfect reflector)");
         } else if (type == "mirror") {
             st.readOptions({{"albedo", 3}});
             m.kind = BSDFKind::Mirror;
@@ -222,6 +266,7 @@ private:
                 Light l;
                 l.kind = LightKind::Area;
                 l.Le = Le;
+                l.line = st.line;
                 light = static_cast<int>(scene_.lights.size());
                 scene_.lights.push_back(l);
             }
@@ -304,8 +349,7 @@ private:
         }
         // The halves (1,2,3) and (1,3,4) of a quad must face the same way; they do not if the
         // corners are not in order around the quad (a bow tie) or it is concave at corner 2 or 4.
-        if (corners == 4 && glm::dot(glm::normalize(glm::cross(v[1] - v[0], v[2] - v[0])),
-                                     glm::normalize(glm::cross(v[2] - v[0], v[3] - v[0]))) <= 0.0f)
+        if (corners == 4 && glm::dot(unitNormal(v[0], v[1], v[2]), unitNormal(v[0], v[2], v[3])) <= 0.0)
             st.fail("the quad's halves (corners 1-2-3 and 1-3-4) face opposite ways: its corners are not in order "
                     "around its edge, or it is concave at corner 2 or 4 (start at the concave corner)");
         for (int i = 1; i + 1 < corners; ++i) addTriangle({v[0], v[i], v[i + 1]}, material, light);
@@ -319,6 +363,7 @@ private:
         const Vec3 translate = st.optVec3("translate", Vec3(0.0f));
         const std::string objPath = (!file.empty() && file[0] == '/') ? file : folderOf(path_) + file;
         if (!std::ifstream(objPath)) st.fail("cannot open mesh file '" + objPath + "'");
+        checkFileSize(objPath, kMaxMeshBytes, [&](const std::string& problem) { st.fail(problem); });
         const std::string meshOf = " (mesh of " + path_ + ":" + std::to_string(st.line) + ")";
         // Our own pass first: tinyobjloader reads malformed numbers as 0 and drops short faces
         // without a word; this reports them, and gives each face its line for later messages.
@@ -425,9 +470,15 @@ private:
                     if (ec != std::errc() || end != tok[k].data() + tok[k].size() || !std::isfinite(x))
                         fail("malformed or non-finite vertex coordinate '" + tok[k] + "'");
                 }
+            } else if (tok[0] == "mtllib") {
+                for (size_t k = 1; k < tok.size(); ++k)
+                    scanMtl(folderOf(objPath) + tok[k], " (material library of " + objPath + ")" + meshOf);
             } else if (tok[0] == "f") {
                 if (tok.size() < 4)
                     fail("face with " + std::to_string(tok.size() - 1) + " vertices (a face needs at least 3)");
+                if (tok.size() - 1 > 255)   // tinyobjloader keeps a face's corner count in one byte
+                    fail("face with " + std::to_string(tok.size() - 1) +
+                         " corners: at most 255 are supported (split it into smaller faces)");
                 for (size_t k = 1; k < tok.size(); ++k) {
                     const std::string idx = tok[k].substr(0, tok[k].find('/'));
                     int i = 0;
@@ -441,12 +492,43 @@ private:
         return lines;
     }
 
+    // Checks what tinyobjloader lets pass in an MTL file: the Kd and Ke values pathspace reads
+    // must be three finite, non-negative numbers (tinyobjloader reads "abc" as 0 and accepts
+    // "nan"), Kd at most 1, Ke at most 1e30. A missing MTL file is tinyobjloader's to report.
+    static void scanMtl(const std::string& mtlPath, const std::string& meshOf) {
+        std::ifstream in(mtlPath);
+        if (!in) return;
+        checkFileSize(mtlPath, kMaxMeshBytes, [&](const std::string& problem) { throw InputError(mtlPath, 0, problem + meshOf); });
+        std::string s;
+        for (int n = 1; std::getline(in, s); ++n) {
+            if (size_t hash = s.find('#'); hash != std::string::npos) s.resize(hash);
+            std::istringstream ls(s);
+            std::vector<std::string> tok;
+            for (std::string t; ls >> t;) tok.push_back(t);
+            if (tok.empty() || (tok[0] != "Kd" && tok[0] != "Ke")) continue;
+            auto fail = [&](const std::string& problem) { throw InputError(mtlPath, n, problem + meshOf); };
+            if (tok.size() != 4) fail("'" + tok[0] + "' needs three numbers (r g b), got " + std::to_string(tok.size() - 1));
+            for (size_t k = 1; k < 4; ++k) {
+                float x = 0.0f;
+                auto [end, ec] = std::from_chars(tok[k].data(), tok[k].data() + tok[k].size(), x);
+                if (ec != std::errc() || end != tok[k].data() + tok[k].size() || !std::isfinite(x))
+                    fail("malformed or non-finite number '" + tok[k] + "' in '" + tok[0] + "'");
+                if (x < 0.0f) fail("'" + tok[0] + "' must not be negative, got " + tok[k]);
+                if (tok[0] == "Kd" && x > 1.0f)
+                    fail("'Kd' must be at most 1 (a surface cannot reflect more than it receives), got " + tok[k]);
+                if (tok[0] == "Ke" && x > kMaxEmission)
+                    fail("'Ke' above 1e30: light transport in float would overflow (scale the units instead)");
+            }
+        }
+    }
+
     void pointLight(Statement& st) {
         st.readOptions({{"position", 3}, {"intensity", 3}});
         st.require("position");
         st.require("intensity");
         Light l;
         l.kind = LightKind::Point;
+        l.line = st.line;
         l.position = st.optVec3("position", Vec3());
         l.Le = checkColor(st, "intensity", st.optVec3("intensity", Color(0.0f)), false);
         scene_.lights.push_back(l);
@@ -458,6 +540,7 @@ private:
         st.require("radiance");
         Light l;
         l.kind = LightKind::Background;
+        l.line = st.line;
         l.Le = checkColor(st, "radiance", st.optVec3("radiance", Color(0.0f)), false);
         scene_.lights.push_back(l);
         haveBackground_ = true;
@@ -494,6 +577,7 @@ Scene parseScene(const std::string& text, const std::string& path) {
 Scene loadScene(const std::string& path) {
     std::ifstream in(path);
     if (!in) throw InputError(path, 0, "cannot open scene file (does it exist?)");
+    checkFileSize(path, kMaxSceneBytes, [&](const std::string& problem) { throw InputError(path, 0, problem); });
     std::ostringstream ss;
     ss << in.rdbuf();
     return parseScene(ss.str(), path);

@@ -4,6 +4,7 @@
 #include <doctest/doctest.h>
 #include <filesystem>
 #include <fstream>
+#include <cmath>
 #include <initializer_list>
 #include <string>
 #include "errors.h"
@@ -275,4 +276,63 @@ TEST_CASE("scene errors: other values out of their range") {
     expectLine3("mesh x.obj material w scale 0", {"'scale' must be positive"});
     expectLine3("render spp 0", {"'spp' must be at least 1"});
     expectLine3("render maxdepth -1", {"'maxdepth' must not be negative"});
+}
+
+TEST_CASE("scene errors: values too large for float light transport") {
+    expectLine3("quad 0 0 0  1 0 0  1 1 0  0 1 0 emission 1e31 1 1", {"'emission' above 1e30"});
+    expectLine3("pointlight position 0 0 0 intensity 3e38 3e38 3e38", {"'intensity' above 1e30"});
+    expectLine3("background radiance 1e35 0 0", {"'radiance' above 1e30"});
+    expectLine3("material m phong albedo 0.5 0.5 0.5 exponent 5e8", {"'exponent' above 1e7", "mirror"});
+    // Below the cap, but radiance x area x pi overflows: the light's own line is named.
+    expectLine3("quad -1e5 0 -1e5  1e5 0 -1e5  1e5 0 1e5  -1e5 0 1e5 emission 1e30 1e30 1e30",
+                {"power", "overflows float"});
+}
+
+TEST_CASE("scene errors: a byte order mark is accepted, a NUL byte is reported") {
+    // Some editors start a UTF-8 file with the bytes EF BB BF: not part of the keyword.
+    CHECK_NOTHROW(parseScene("\xEF\xBB\xBF" + kHead, "bom.scene"));
+    const std::string msg = errorOf(kHead + std::string("quad 0 0 0\0 1 0 0", 17) + "\n");
+    CHECK_MESSAGE(msg.rfind("test.scene:3: ", 0) == 0, msg);
+    checkMessage(msg, {"NUL byte"});
+    CHECK_MESSAGE(msg.find('\0') == std::string::npos, "the message must not carry the NUL byte itself");
+}
+
+TEST_CASE("scene errors: huge and far-away scenes are not called degenerate") {
+    // Float squares of lengths overflow near 1e19; the checks run in double.
+    for (const char* size : {"1e15", "1e18", "1e30"}) {
+        CAPTURE(size);
+        const std::string s = size;
+        CHECK_NOTHROW(parseScene(kHead + "quad -" + s + " 0 -" + s + "  " + s + " 0 -" + s + "  " + s + " 0 " + s + "  -" +
+                                     s + " 0 " + s + " material w\n",
+                                 "huge.scene"));
+    }
+}
+
+TEST_CASE("scene errors: OBJ faces with more than 255 corners, MTL values, files that are not files") {
+    // tinyobjloader keeps a face's corner count in a byte: a 300-gon would silently lose corners.
+    std::string obj;
+    for (int i = 0; i < 300; ++i) {
+        const double a = 2.0 * 3.141592653589793 * i / 300.0;
+        obj += "v " + std::to_string(std::cos(a)) + " " + std::to_string(std::sin(a)) + " 0\n";
+    }
+    obj += "f";
+    for (int i = 1; i <= 300; ++i) obj += " " + std::to_string(i);
+    checkMessage(meshError("polygon300", obj + "\n"), {"polygon300.obj:301: ", "300 corners", "at most 255"});
+
+    const std::string tri = "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl a\nf 1 2 3\n";
+    struct Bad { const char* mtl; const char* words; };
+    for (const Bad& b : {Bad{"newmtl a\nKd nan 0 0\n", "'nan'"}, Bad{"newmtl a\nKd abc 0.5 0.5\n", "'abc'"},
+                         Bad{"newmtl a\nKd 0.5 0.5\n", "three numbers"}, Bad{"newmtl a\nKd 1.5 0 0\n", "at most 1"},
+                         Bad{"newmtl a\nKe 1e39 1 1\n", "'1e39'"}, Bad{"newmtl a\nKe 1e31 1 1\n", "above 1e30"},
+                         Bad{"newmtl a\nKe -1 2 2\n", "must not be negative"}}) {
+        CAPTURE(b.mtl);
+        writeFile("m.mtl", b.mtl);
+        checkMessage(meshError("withmtl", tri, ""), {"m.mtl:2: ", b.words, "withmtl.obj"});
+    }
+
+    // A device never ends and a folder is no file: refused before reading.
+    const std::string zero = errorOf(kHead + "mesh /dev/zero material w\n");
+    checkMessage(zero, {"test.scene:3: ", "/dev/zero", "not a regular file"});
+    std::filesystem::create_directories(scratchDir() + "/folder.obj");
+    checkMessage(errorOf(kHead + "mesh folder.obj material w\n", scratchDir() + "/test.scene"), {"not a regular file"});
 }
