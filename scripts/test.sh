@@ -13,3 +13,6 @@ cd ..
 # What CI must prove about the course: the handout holds no solution line and builds, and
 # every graded test fails on the untouched skeleton.
 bash scripts/check-skeleton.sh build
+# Every reader of outside input under libFuzzer with ASan/UBSan: the corpus of past failures
+# replayed, then a few seconds of new inputs per reader (skipped, with a note, without clang++).
+bash scripts/fuzz.sh --seconds 5

@@ -1,0 +1,9 @@
+// Fuzz target: the PFM reader (framework/image.cpp).
+#include "fuzz_input.h"
+#include "image.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+    const std::string path = psfuzz::writeScratch("image.pfm", data, size);
+    psfuzz::expectOnlyInputError([&] { (void)ps::readPFM(path); });
+    return 0;
+}
