@@ -1,5 +1,6 @@
 #include "scene.h"
 #include "errors.h"
+#include <cstdio>
 #include <sstream>
 
 namespace ps {
@@ -46,6 +47,23 @@ void Scene::finalize() {
     all.expand(camera.position());
     center = all.center();
     radius = std::max(0.5f * glm::length(all.extent()), 1e-30f);
+
+    // Float resolves a coordinate x only to ulp(x) ~ |x| 1.2e-7: a scene far from the origin
+    // loses every feature smaller than that (a light 0.1 below a ceiling, moved by 1e7, lies on
+    // it). Warn when the resolution is coarser than 1e-4 of the scene's size.
+    warnings.clear();
+    if (!prims.empty()) {
+        const float far = std::max(maxAbsComponent(bounds.lo), maxAbsComponent(bounds.hi));
+        const float ulp = std::nextafter(far, kInf) - far, size = glm::length(bounds.extent());
+        if (size > 0.0f && ulp > 1e-4f * size) {
+            char buf[320];
+            std::snprintf(buf, sizeof buf,
+                          "coordinates up to %.3g are resolved by float only to %.3g, %.2g of the scene's size %.3g: "
+                          "features smaller than that merge (move the scene closer to the origin)",
+                          double(far), double(ulp), double(ulp / size), double(size));
+            warnings.push_back(buf);
+        }
+    }
 
     // Area lights: each one's primitives, chosen by area.
     caps = Capabilities();

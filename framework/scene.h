@@ -63,6 +63,10 @@ public:
     Vec3 center;                   // bounding sphere of the geometry and the camera
     float radius = 1.0f;
     BVH bvh;
+    // What finalize noticed but did not refuse, one line each (loadScene prints them as
+    // "pathspace: warning: ..."): e.g. coordinates so far from the origin that float cannot
+    // resolve the scene's small features.
+    std::vector<std::string> warnings;
 
     // Call after filling the vectors above: builds the BVH, area lights' tables, the light
     // selection distribution, the bounding sphere and the capabilities.

@@ -1,5 +1,6 @@
 #include "scene_loader.h"
 #include <charconv>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -321,6 +322,13 @@ private:
         s.radius = st.optNumber("radius", 0.0f);
         if (s.radius < 0.0f) st.fail("negative radius " + st.options.at("radius")[0] + " (a sphere's radius must be positive)");
         if (!(s.radius > 0.0f)) st.fail("'radius' must be positive");
+        // Float resolves the sphere's points only to the spacing of its centre's coordinates: a
+        // radius of a few such steps is no sphere any more (hits and shadow rays on it are noise).
+        const float step = std::nextafter(maxAbsComponent(s.center), kInf) - maxAbsComponent(s.center);
+        if (s.radius < 16.0f * step)
+            st.fail("radius " + st.options.at("radius")[0] + " is below 16 float steps (" + std::to_string(step) +
+                    ") of its centre's coordinates: float cannot resolve such a sphere there (move it closer to "
+                    "the origin or scale the scene)");
         int material, light;
         shapeMaterial(st, material, light);
         Primitive p;
@@ -580,7 +588,9 @@ Scene loadScene(const std::string& path) {
     checkFileSize(path, kMaxSceneBytes, [&](const std::string& problem) { throw InputError(path, 0, problem); });
     std::ostringstream ss;
     ss << in.rdbuf();
-    return parseScene(ss.str(), path);
+    Scene scene = parseScene(ss.str(), path);
+    for (const std::string& w : scene.warnings) std::fprintf(stderr, "pathspace: warning: %s: %s\n", path.c_str(), w.c_str());
+    return scene;
 }
 
 }  // namespace ps

@@ -336,3 +336,19 @@ TEST_CASE("scene errors: OBJ faces with more than 255 corners, MTL values, files
     std::filesystem::create_directories(scratchDir() + "/folder.obj");
     checkMessage(errorOf(kHead + "mesh folder.obj material w\n", scratchDir() + "/test.scene"), {"not a regular file"});
 }
+
+TEST_CASE("scene errors: features below float resolution (a tiny sphere far out, a scene moved by 1e7)") {
+    // A sphere whose radius is a few float steps of its centre's coordinates: rejected.
+    expectLine3("sphere center 1 1 1 radius 1e-8 emission 1e16 1e16 1e16", {"16 float steps", "radius 1e-8"});
+    expectLine3("sphere center 1e6 0 0 radius 0.5 material w", {"float cannot resolve"});
+    CHECK_NOTHROW(parseScene(kHead + "sphere center 1 1 1 radius 1e-5 emission 1 1 1\n", "ok.scene"));
+    // The Cornell box moved by 1e7: the light 0.1 below the ceiling lands on it. Not refused
+    // (the image is still finite), but the scene says so.
+    const std::string box = "quad 0 0 0  556 0 0  556 548.8 0  0 548.8 0 material w\n";
+    const Scene near = parseScene(kHead + box, "near.scene");
+    CHECK_MESSAGE(near.warnings.empty(), "a box at the origin needs no warning");
+    std::string far = kHead + "quad 1e7 0 0  10000556 0 0  10000556 548.8 0  1e7 548.8 0 material w\n";
+    const Scene moved = parseScene(far, "moved.scene");
+    REQUIRE_MESSAGE(moved.warnings.size() == 1, "expected one warning for coordinates near 1e7");
+    CHECK_MESSAGE(moved.warnings[0].find("resolved by float only to 1") != std::string::npos, moved.warnings[0]);
+}
