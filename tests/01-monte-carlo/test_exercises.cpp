@@ -27,7 +27,9 @@ TEST_CASE("exercise: the Phong BRDF's normalisation C(n) reflects everything at 
         CHECK_MESSAGE(std::abs(c * integral - 1.0) < 1e-6,
                       "phongBRDFNormalization(" << n << "): expected C(n) with C(n) * (integral of cos^(n+1) over the "
                       "hemisphere = " << integral << ") = 1, i.e. C = " << 1.0 / integral << ", got " << c
-                      << " (ratio " << c * integral << "; (n+1)/2pi would be the sampling pdf's constant, one power "
-                      "of cos theta missing)");
+                      << " (ratio " << c * integral
+                      << (std::abs(c / ((n + 1.0) / (2.0 * 3.14159265358979323846)) - 1.0) < 1e-6
+                              ? "; that is (n+1)/2pi, the sampling pdf's constant: the reflectance has one more cos theta)"
+                              : ")"));
     }
 }
