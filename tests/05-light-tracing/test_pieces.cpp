@@ -129,7 +129,14 @@ TEST_CASE("light tracing: the adjoint BSDF keeps a particle's power through glas
             }
         }
     // Diffuse and glossy: the weight is f(wLight -> wi) |cos(theta_wi)| / pdf(wi), with the
-    // cosine of the direction the particle leaves in.
+    // cosine of the direction the particle leaves in. What an argument swap really changes here
+    // (lessons/05-light-tracing/README.md, 1.4): not f (Lambert and normalised Phong are
+    // reciprocal, so evalBSDF(m, n, wLight, wi) is the same number as evalBSDF(m, n, wi, wLight);
+    // no test can or should tell them apart), nor Phong's pdf (symmetric: it depends on
+    // dot(wi, reflect(wLight)) only), but the Lambertian's sampling pdf: cos of the SAMPLED
+    // direction / pi, computed here from the direction itself, while the swapped
+    // pdfBSDF(m, n, wi, wLight) is cos(theta_wLight) / pi. The cosine of the weight belongs to
+    // the sampled direction too.
     ps::Material diffuse;
     diffuse.kind = ps::BSDFKind::Diffuse;
     diffuse.albedo = Color(0.8f, 0.5f, 0.2f);
@@ -145,14 +152,28 @@ TEST_CASE("light tracing: the adjoint BSDF keeps a particle's power through glas
             const Vec2 u = rng.uniform2();
             ps::BSDFSample s;
             if (!ps::sampleAdjointBSDF(*m, n, wLight, u, 0.5f, s)) continue;
-            const Color expected = ps::evalBSDF(*m, n, s.wi, wLight) * (std::abs(glm::dot(n, s.wi)) / ps::pdfBSDF(*m, n, wLight, s.wi));
-            const bool ok = !s.delta && close(s.pdf, ps::pdfBSDF(*m, n, wLight, s.wi), 1e-4) && close(s.weight.r, expected.r, 1e-4) &&
+            const double cosOut = std::abs(double(glm::dot(n, s.wi))), cosIn = std::abs(double(glm::dot(n, wLight)));
+            const bool sameSide = glm::dot(n, s.wi) * glm::dot(n, wLight) > 0.0f;
+            const double pdf = m == &diffuse ? (sameSide ? cosOut / double(kPi) : 0.0)   // Eq. 1.11, of the sampled wi
+                                             : double(ps::pdfBSDF(*m, n, wLight, s.wi));
+            const Color f = ps::evalBSDF(*m, n, s.wi, wLight);
+            const Color expected = pdf > 0.0 ? f * float(cosOut / pdf) : Color(0.0f);
+            const bool ok = !s.delta && close(s.pdf, pdf, 1e-4) && close(s.weight.r, expected.r, 1e-4) &&
                             close(s.weight.g, expected.g, 1e-4) && close(s.weight.b, expected.b, 1e-4);
-            if (!ok && ++bad <= 3)
+            if (!ok && ++bad <= 3) {
+                std::string hint;
+                if (m == &diffuse && close(s.pdf, cosIn / double(kPi), 1e-4) && !close(cosIn, cosOut, 1e-3))
+                    hint = " (that pdf is cos(theta of wLight) / pi: the pdf's arguments are swapped; the Lambertian's "
+                           "sampling pdf is the cosine of the SAMPLED direction / pi, pdfBSDF(m, n, wLight, wi))";
+                else if (pdf > 0.0 && close(s.weight.r, f.r * cosIn / pdf, 1e-4) && !close(cosIn, cosOut, 1e-3))
+                    hint = " (that is the cosine of the direction the particle came from: Eq. 5.6 takes |cos| of the sampled one)";
+                else if (m == &diffuse && close(s.weight.r, diffuse.albedo.r * cosOut / cosIn, 1e-4) && !close(cosIn, cosOut, 1e-3))
+                    hint = " (albedo cos(out) / cos(in): the weight divides by the swapped pdf pdfBSDF(m, n, wi, wLight))";
                 FAIL_CHECK(std::string(m == &diffuse ? "diffuse" : "Phong (n = 20)")
-                           << ", particle from " << str(wLight) << ", sampled " << str(s.wi) << ": expected pdf "
-                           << ps::pdfBSDF(*m, n, wLight, s.wi) << " and weight f |cos(theta_wi)| / pdf = " << str(expected) << ", got pdf "
-                           << s.pdf << " and weight " << str(s.weight));
+                           << ", particle from " << str(wLight) << ", sampled " << str(s.wi) << ": expected pdf " << pdf
+                           << " and weight f |cos(theta_wi)| / pdf = " << str(expected) << ", got pdf " << s.pdf << " and weight "
+                           << str(s.weight) << hint);
+            }
         }
     CHECK_MESSAGE(bad == 0, bad << " of 400 diffuse and glossy samples have a wrong pdf or weight");
 }

@@ -1,0 +1,17 @@
+// Lesson 2 — the pen-and-paper exercise. Interface: lessons/02-direct-mis/exercises.h.
+// Equation numbers refer to lessons/02-direct-mis/README.md ("Exercise (pen and paper)").
+#include <cmath>
+#include "02-direct-mis/exercises.h"
+#include "math.h"
+#include "todo.h"
+
+namespace ps {
+
+double sphereSolidAngle(double radius, double distance) {
+    // TODO(02) Eq. 2.E1: the sphere fills a cone of half-angle theta_max, sin(theta_max) = r / d;
+    //          return the cone's solid angle, written so that it stays accurate for r << d.
+    (void)radius; (void)distance;
+    return PS_TODO("lesson 02: sphereSolidAngle (exercise)", 0.0);
+}
+
+}  // namespace ps

@@ -1,0 +1,16 @@
+// Lesson 3 — the pen-and-paper exercise. Interface: lessons/03-path-tracing/exercises.h.
+// Equation numbers refer to lessons/03-path-tracing/README.md ("Exercise (pen and paper)").
+#include <cmath>
+#include "03-path-tracing/exercises.h"
+#include "todo.h"
+
+namespace ps {
+
+int furnaceDepthForBias(double albedo, double eps) {
+    // TODO(03) Eq. 3.E1: the relative bias (L_inf - L_D) / L_inf of Eq. 3.8 as a power of a, set it
+    //          <= eps, solve for the smallest integer D (a = 0: D = 0).
+    (void)albedo; (void)eps;
+    return PS_TODO("lesson 03: furnaceDepthForBias (exercise)", 0);
+}
+
+}  // namespace ps

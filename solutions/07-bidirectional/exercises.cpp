@@ -1,0 +1,23 @@
+// Lesson 7 — the pen-and-paper exercise. Interface: lessons/07-bidirectional/exercises.h.
+// Equation numbers refer to lessons/07-bidirectional/README.md ("Exercise (pen and paper)").
+#include <algorithm>
+#include <cmath>
+#include "07-bidirectional/exercises.h"
+#include "todo.h"
+
+namespace ps {
+
+double techniqueWeightK2(const double pdf[3], int s, double b) {
+    //! TODO(07) Eq. 7.E1: Eq. 7.5 for three techniques. Divide every pdf by the largest one first,
+    //!          so that pdf^b neither overflows nor underflows.
+    //! STUB (void)pdf; (void)s; (void)b;
+    //! STUB return PS_TODO("lesson 07: techniqueWeightK2 (exercise)", 0.0);
+    //! BEGIN
+    const double m = std::max({pdf[0], pdf[1], pdf[2]});
+    double sum = 0.0;
+    for (int i = 0; i < 3; ++i) sum += std::pow(pdf[i] / m, b);
+    return std::pow(pdf[s] / m, b) / sum;
+    //! END
+}
+
+}  // namespace ps
