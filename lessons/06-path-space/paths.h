@@ -60,7 +60,8 @@ DColor contribution(const Scene& scene, const Path& x);
 // samples the path: the light subpath samples x0 ... x_{s-1}, the camera subpath x_k ...
 // x_{k-t+1}, and the deterministic edge x_{s-1} x_s joins them. 0 if the technique cannot
 // sample the path (Eq. 6.12): t = 0 (pinhole), s = 0 with a point light, a specular vertex at
-// either end of the joining edge. Russian roulette is not part of p_{s,t}. In double, as f.
+// either end of the joining edge, t = 1 with x_{k-1} the background (k = 1: a direction cannot
+// be joined to the pinhole). Lesson 7's techniqueSamples is the same rule. Russian roulette is not part of p_{s,t}. In double, as f.
 double pdfTechnique(const Scene& scene, const Path& x, int s);
 
 // ---- plumbing ----------------------------------------------------------------------------
