@@ -167,6 +167,7 @@ inline std::string describe(const JoinedPath& j) {
               : v.infinite                     ? "background"
               : v.kind == ps::VertexKind::Light ? (v.deltaPosition ? "point light" : "area light")
               : v.delta                        ? "specular"
+              : v.light >= 0                   ? "area light"
                                                : "surface");
     }
     return o.str();

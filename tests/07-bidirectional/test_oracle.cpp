@@ -65,6 +65,30 @@ sphere center 185 130 170  radius 130  material glass
 render maxdepth 7
 )";
 
+// A pool: the closed box with a flat glass surface (index 1.6) 8 cm above the floor, normal up,
+// so the floor and the feet of the walls lie "inside the glass". A sphere cannot show the
+// refraction's eta^2 Jacobian (pdfCamera vs pdfLight, Eq. 6.11): its two refractions are always
+// on the same side of every connection and their Jacobians cancel (equal chord angles); here a
+// diffuse vertex sits between two refractions, so techniques differ by (eta_L / eta_C)^2.
+const char* kPool = R"(
+camera eye 278 273 -800  target 278 273 -799  up 0 1 0  fov 39.3  resolution 16 16
+material white diffuse albedo 0.73 0.73 0.73
+material red   diffuse albedo 0.63 0.065 0.05
+material green diffuse albedo 0.14 0.45 0.091
+material chrome mirror albedo 1 1 1
+material glass  dielectric ior 1.6
+quad 552.8 0 0    0 0 0    0 0 559.2    549.6 0 559.2        material white
+quad 556 548.8 0  556 548.8 559.2  0 548.8 559.2  0 548.8 0  material white
+quad 549.6 0 559.2  0 0 559.2  0 548.8 559.2  556 548.8 559.2  material white
+quad 0 0 559.2  0 0 0  0 548.8 0  0 548.8 559.2          material green
+quad 552.8 0 0  549.6 0 559.2  556 548.8 559.2  556 548.8 0  material red
+quad 343 548.7 227  343 548.7 332  213 548.7 332  213 548.7 227  emission 17 12 4
+pointlight position 400 450 150  intensity 40000 40000 40000
+quad 549 80 1  1 80 1  1 80 558  549 80 558  material glass
+sphere center 370 100 350  radius 100  material chrome
+render maxdepth 6
+)";
+
 constexpr int kSamples = 800;   // pixel samples per scene
 constexpr double kRelTol = 1e-3, kAbsTol = 1e-6;
 
@@ -209,4 +233,5 @@ void checkScene(const char* name, const char* text, uint64_t seed) {
 TEST_CASE("MIS weights equal the balance and power heuristics of lesson 6's path pdfs, through mirror and glass, from area, point and background lights [4 pts]") {
     checkScene("open box (area, point and background light, mirror, glass 1.6)", kOpenBox, ps::testseed::seed(7101));
     checkScene("closed box (area and point light, mirror, glass 1.6)", kClosedBox, ps::testseed::seed(7102));
+    checkScene("pool (area and point light, mirror, a glass surface 1.6 over the floor)", kPool, ps::testseed::seed(7103));
 }
