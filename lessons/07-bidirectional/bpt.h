@@ -84,7 +84,8 @@ float pdfLightToward(const Scene& scene, const SubpathVertex& light, const Subpa
 // which depends on the direction of the walk: mode Importance (walking with the light, as the
 // light subpath: prev is on the light side) deltaLobe(m, n, towards prev, towards next).pdfLight;
 // mode Radiance (walking against it, as the camera subpath) deltaLobe(m, n, towards next,
-// towards prev).pdfCamera (it carries the refraction's eta^2 Jacobian); 0 if not valid.
+// towards prev).pdfCamera (it carries the refraction's eta^2 Jacobian), even if the lobe is not
+// `valid` (rounding on a very short segment; see DeltaLobe).
 // Always through convertToArea.
 float pdfScatter(const Scene& scene, const SubpathVertex* prev, const SubpathVertex& cur, const SubpathVertex& next,
                  Transport mode);

@@ -69,7 +69,10 @@ float pdfScatter(const Scene& scene, const SubpathVertex* prev, const SubpathVer
     //!          delta: the coefficient of its Dirac delta from lesson 6's deltaLobe (paths.h), NOT 0:
     //!          mode Importance (light flows from prev to next): deltaLobe(m, n, wp, wn).pdfLight;
     //!          mode Radiance (light flows from next to prev): deltaLobe(m, n, wn, wp).pdfCamera;
-    //!          0 if the lobe is not valid. Return convertToArea(pdfW, cur, next).
+    //!          (use its numbers even if lobe.valid is false: the walk itself chose this direction,
+    //!          and on a very short segment rounding of the positions can exceed deltaLobe's
+    //!          tolerance; they are 0 only if no lobe connects the two sides). Return
+    //!          convertToArea(pdfW, cur, next).
     //! STUB (void)scene; (void)prev; (void)cur; (void)next; (void)mode;
     //! STUB return PS_TODO("lesson 07: pdfScatter", 0.0f);
     //! BEGIN
@@ -83,7 +86,6 @@ float pdfScatter(const Scene& scene, const SubpathVertex* prev, const SubpathVer
         const Vec3 wp = directionTo(cur, *prev);
         if (cur.delta) {
             const DeltaLobe lobe = mode == Transport::Importance ? deltaLobe(m, cur.sp.n, wp, wn) : deltaLobe(m, cur.sp.n, wn, wp);
-            if (!lobe.valid) return 0.0f;
             pdfW = mode == Transport::Importance ? lobe.pdfLight : lobe.pdfCamera;
         } else {
             pdfW = pdfBSDF(m, cur.sp.n, wp, wn);
