@@ -14,7 +14,8 @@
 // may be lesson 6's; `ctest -L lesson-06` tells). The sum-to-1 tests (test_mis.cpp) cannot see a
 // density that is wrong in the same way in every technique; this one can: an area conversion
 // without |cos|, a light origin without the light-selection probability, balance where power is
-// asked, a specular vertex's density stored as 0 and counted as 1 (Eq. 7.7a) all fail here.
+// asked, a specular vertex's density stored as 0 and counted as 1 (Eq. 7.7a), pdfLight where
+// pdfCamera is meant (the pool), pdfBSDF's arguments swapped all fail here.
 #include <tuple>
 #include "lesson07.h"
 #include "seed.h"
@@ -126,6 +127,8 @@ std::string hint(const Case& c) {
              "(Eq. 7.7a), not 0 counted as 1;";
     h += " every area density needs |cos theta| / d^2 at the vertex it lands on (Eq. 7.3);"
          " the light's origin density includes the light-selection probability P(l) (Eq. 7.3);"
+         " pdfBSDF(m, n, towards the previous vertex, towards the next) on both subpaths (the Lambertian pdf is the"
+         " cosine of the direction sampled: swapped arguments give another number);"
          " s = 1 uses the vertex it sampled (c.sampledLight).";
     return h;
 }
