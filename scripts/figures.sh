@@ -112,6 +112,14 @@ if wanted 07; then
   cp "$work/07-pyramid-unweighted.png" "$d/cornell-pyramid-unweighted.png"
   cp "$work/07-pyramid-weighted.png" "$d/cornell-pyramid-weighted.png"
   done_fig "$d/cornell-pyramid-unweighted.png, cornell-pyramid-weighted.png"
+  # Specular vertices in the MIS (README 1.6): pt and bpt at equal samples on the caustics box,
+  # relMSE per region (the pixels that see the glass, the mirror, the white walls).
+  s="$(scene cornell-caustics 64)"
+  r="$(reference pt "$(t 150 2)" "$s")"
+  converge "$s" "$r" "$work/07-caustics" --algos pt,bpt --spp "$(t 64 2)" --seeds 2 --regions glass,chrome,white
+  cp "$work/07-caustics/equal-time.png" "$d/caustics-equal-spp.png"; cp "$work/07-caustics/regions.md" "$d/caustics-regions.md"
+  cp "$work/07-caustics/efficiency.md" "$d/caustics-efficiency.md"
+  done_fig "$d/caustics-equal-spp.png, caustics-regions.md, caustics-efficiency.md"
 fi
 
 # Every image a slide deck shows from a lesson folder must be one this script makes (so one command

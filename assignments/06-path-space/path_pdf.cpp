@@ -10,7 +10,9 @@ double pdfTechnique(const Scene& scene, const Path& x, int s) {
     //          double (a long path's pdf leaves the float range at extreme scales), for k = x.size() - 1 and t = k + 1 - s:
     //          0. Techniques that cannot sample x return 0 (Eq. 6.12): k < 1, s < 0, t < 1
     //             (t = 0 would need a ray to hit the pinhole); s = 0 with x[0] a point light;
-    //             s >= 1 and x[s-1] or x[s] specular (the joining edge cannot follow a delta).
+    //             s >= 1 and x[s-1] or x[s] specular (the joining edge cannot follow a delta);
+    //             t = 1 with x[k-1] at infinity (k = 1, s = 1: a background direction is not
+    //             a point that could be joined to the pinhole; no sampler makes that path).
     //          1. Light subpath (s >= 1), light l = x[0].sp.light, P = scene.lightSelectionProb(l):
     //             p(x0) = P * pdfLightArea(scene, l) for an area light (the same number as
     //             sampleEmission's pdfA, and sampleLight's pdf: one light pdf for s = 1 and s > 1);

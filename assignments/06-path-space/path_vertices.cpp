@@ -78,9 +78,11 @@ DeltaLobe deltaLobe(const Material& m, const Vec3& n, const Vec3& wLight, const 
     constexpr float kTolerance = 1e-3f;
     const bool sameSide = (cosL > 0.0f) == (cosC > 0.0f);
     const Vec3 ns = cosL > 0.0f ? n : -n;
+    // The numbers of the lobe the two sides select (reflection on one side, refraction across);
+    // valid only if wCamera is that lobe's direction to the tolerance.
     if (m.kind == BSDFKind::Mirror) {
-        if (!sameSide || glm::length(reflect(wLight, ns) - wCamera) > kTolerance) return d;
-        d.valid = true;
+        if (!sameSide) return d;
+        d.valid = glm::length(reflect(wLight, ns) - wCamera) <= kTolerance;
         d.fs = m.albedo / std::abs(cosC);
         d.pdfLight = d.pdfCamera = 1.0f;
         return d;
@@ -89,10 +91,9 @@ DeltaLobe deltaLobe(const Material& m, const Vec3& n, const Vec3& wLight, const 
     const float etaL = cosL > 0.0f ? 1.0f : m.ior, etaC = cosC > 0.0f ? 1.0f : m.ior;
     const float aL = std::abs(cosL), aC = std::abs(cosC);
     if (sameSide) {
-        if (glm::length(reflect(wLight, ns) - wCamera) > kTolerance) return d;
         const float etaOther = cosL > 0.0f ? m.ior : 1.0f;
         const float F = fresnelDielectric(aL, etaL, etaOther);
-        d.valid = true;
+        d.valid = glm::length(reflect(wLight, ns) - wCamera) <= kTolerance;
         d.fs = Color(F / aC);
         d.pdfLight = F;
         d.pdfCamera = fresnelDielectric(aC, etaL, etaOther);   // the same side: the same F
@@ -103,9 +104,8 @@ DeltaLobe deltaLobe(const Material& m, const Vec3& n, const Vec3& wLight, const 
     if (sin2T >= 1.0f) return d;   // total internal reflection: no refracted direction
     const float cosT = std::sqrt(1.0f - sin2T);
     const Vec3 t = glm::normalize(-eta * wLight + (eta * aL - cosT) * ns);
-    if (glm::length(t - wCamera) > kTolerance) return d;
     const float FL = fresnelDielectric(aL, etaL, etaC), FC = fresnelDielectric(aC, etaC, etaL);
-    d.valid = true;
+    d.valid = glm::length(t - wCamera) <= kTolerance;
     d.refracted = true;
     d.fs = Color((1.0f - FL) / aC);
     d.pdfLight = 1.0f - FL;

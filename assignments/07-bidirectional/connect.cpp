@@ -11,11 +11,12 @@ ReversePdfs connectionPdfs(const Scene& scene, const SubpathVertex* y, int s, co
     //          yPrev = y[s-2] (if s >= 2); leave a field 0 where its vertex does not exist:
     //          s = 0 (zEnd is the light): cameraEnd = pdfLightOrigin(zEnd),
     //                 cameraPrev = pdfLightToward(zEnd, zPrev).
-    //          s >= 1: cameraEnd = s == 1 ? pdfLightToward(yEnd, zEnd) : pdfScatter(yPrev, yEnd, zEnd);
-    //                  cameraPrev = pdfScatter(yEnd, zEnd, zPrev);
-    //                  lightEnd = pdfScatter(zPrev or null, zEnd, yEnd);
-    //                  lightPrev = pdfScatter(zEnd, yEnd, yPrev).
-    //          (pdfScatter(scene, prev pointer, cur, next).)
+    //          s >= 1: cameraEnd = s == 1 ? pdfLightToward(yEnd, zEnd) : pdfScatter(yPrev, yEnd, zEnd, Importance);
+    //                  cameraPrev = pdfScatter(yEnd, zEnd, zPrev, Importance);
+    //                  lightEnd = pdfScatter(zPrev or null, zEnd, yEnd, Radiance);
+    //                  lightPrev = pdfScatter(zEnd, yEnd, yPrev, Radiance).
+    //          (pdfScatter(scene, prev pointer, cur, next, Transport::...): Importance continues the
+    //          light subpath's walk, Radiance the camera subpath's.)
     (void)scene; (void)y; (void)s; (void)z; (void)t;
     return PS_TODO("lesson 07: connectionPdfs", ReversePdfs());
 }

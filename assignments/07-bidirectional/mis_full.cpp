@@ -18,8 +18,8 @@ float misWeightFull(const SubpathVertex* y, int s, const SubpathVertex* z, int t
     //          pL[i] (x_i sampled from the light side) and pE[i] (from the camera side):
     //          light vertex y_i: pL = pdfFwd, pE = pdfRev, but rev.lightEnd for i = s-1 and
     //          rev.lightPrev for i = s-2; camera vertex z_j: pE = pdfFwd, pL = pdfRev, but
-    //          rev.cameraEnd for j = t-1 and rev.cameraPrev for j = t-2. Replace every 0 by 1
-    //          (a delta factor common to the techniques). In double: for every s' with
+    //          rev.cameraEnd for j = t-1 and rev.cameraPrev for j = t-2. Take the numbers as they
+    //          are (a specular vertex's are its lobe's coefficients, Eq. 7.7a; a 0 is a 0). In double: for every s' with
     //          techniqueSamples(x, n, s'), p = prod_{i<s'} pL[i] * prod_{i>=s'} pE[i],
     //          q = p (balance) or p^2 (power); w = q_s / sum of q. 0 if the sum is 0.
     (void)y; (void)s; (void)z; (void)t; (void)rev; (void)h;

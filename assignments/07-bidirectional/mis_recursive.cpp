@@ -9,7 +9,6 @@ namespace ps {
 namespace {
 
 double heuristicPower(double r, Heuristic h) { return h == Heuristic::Power ? r * r : r; }
-double nonzero(float p) { return p != 0.0f ? double(p) : 1.0; }
 
 // c_j of Eq. 7.10 for vertex j of a subpath (camera subpaths start with the camera).
 [[maybe_unused]] double connectible(const SubpathVertex* path, int j) {
@@ -20,9 +19,10 @@ double nonzero(float p) { return p != 0.0f ? double(p) : 1.0; }
     return PS_TODO("lesson 07: connectible", 0.0);
 }
 
-// r_j^b with the given reverse pdf (Eq. 7.8).
+// r_j^b with the given reverse pdf (Eq. 7.8); 0 where the vertex has no forward density (only
+// ever multiplied by c_j = 0 there).
 [[maybe_unused]] double ratio(float pdfRev, const SubpathVertex& v, Heuristic h) {
-    return heuristicPower(nonzero(pdfRev) / nonzero(v.pdfFwd), h);
+    return v.pdfFwd > 0.0f ? heuristicPower(double(pdfRev) / double(v.pdfFwd), h) : 0.0;
 }
 
 // The sum over the techniques that move the connection into this subpath (Eq. 7.9), for the

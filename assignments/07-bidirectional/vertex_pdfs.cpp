@@ -31,12 +31,19 @@ float pdfLightToward(const Scene& scene, const SubpathVertex& light, const Subpa
     return PS_TODO("lesson 07: pdfLightToward", 0.0f);
 }
 
-float pdfScatter(const Scene& scene, const SubpathVertex* prev, const SubpathVertex& cur, const SubpathVertex& next) {
-    // TODO(07) Eq. 7.3: the unit direction wn = directionTo(cur, next) (bpt.h); camera:
-    //          pdfW = scene.camera.pdfDirection(wn); surface: 0 if cur.delta, else
-    //          pdfW = pdfBSDF(material, cur.sp.n, wp, wn) with wp = directionTo(cur, *prev).
-    //          Return convertToArea(pdfW, cur, next).
-    (void)scene; (void)prev; (void)cur; (void)next;
+float pdfScatter(const Scene& scene, const SubpathVertex* prev, const SubpathVertex& cur, const SubpathVertex& next,
+                 Transport mode) {
+    // TODO(07) Eq. 7.3, 7.7a: the unit direction wn = directionTo(cur, next) (bpt.h); camera:
+    //          pdfW = scene.camera.pdfDirection(wn); surface (prev not null), wp =
+    //          directionTo(cur, *prev), m its material: not delta: pdfW = pdfBSDF(m, cur.sp.n, wp, wn);
+    //          delta: the coefficient of its Dirac delta from lesson 6's deltaLobe (paths.h), NOT 0:
+    //          mode Importance (light flows from prev to next): deltaLobe(m, n, wp, wn).pdfLight;
+    //          mode Radiance (light flows from next to prev): deltaLobe(m, n, wn, wp).pdfCamera;
+    //          (use its numbers even if lobe.valid is false: the walk itself chose this direction,
+    //          and on a very short segment rounding of the positions can exceed deltaLobe's
+    //          tolerance; they are 0 only if no lobe connects the two sides). Return
+    //          convertToArea(pdfW, cur, next).
+    (void)scene; (void)prev; (void)cur; (void)next; (void)mode;
     return PS_TODO("lesson 07: pdfScatter", 0.0f);
 }
 

@@ -60,7 +60,8 @@ DColor contribution(const Scene& scene, const Path& x);
 // samples the path: the light subpath samples x0 ... x_{s-1}, the camera subpath x_k ...
 // x_{k-t+1}, and the deterministic edge x_{s-1} x_s joins them. 0 if the technique cannot
 // sample the path (Eq. 6.12): t = 0 (pinhole), s = 0 with a point light, a specular vertex at
-// either end of the joining edge. Russian roulette is not part of p_{s,t}. In double, as f.
+// either end of the joining edge, t = 1 with x_{k-1} the background (k = 1: a direction cannot
+// be joined to the pinhole). Lesson 7's techniqueSamples is the same rule. Russian roulette is not part of p_{s,t}. In double, as f.
 double pdfTechnique(const Scene& scene, const Path& x, int s);
 
 // ---- plumbing ----------------------------------------------------------------------------
@@ -85,7 +86,13 @@ Vec3 direction(const PathVertex& a, const PathVertex& b);
 // are coefficients of delta_sigma(w - wCamera), the delta in the solid angle of the outgoing
 // (light-flow) direction wCamera:
 struct DeltaLobe {
-    bool valid = false;      // wCamera is the mirror / refraction direction of wLight (to 1e-3)
+    bool valid = false;      // wCamera is the mirror / refraction direction of wLight (to 1e-3).
+                             // The numbers below are those of the lobe the two sides select
+                             // (reflection on one side, refraction across; 0 under total internal
+                             // reflection) even when valid is false: a walk that chose the
+                             // direction itself may use them (lesson 7: a segment a fraction of a
+                             // millimetre long, where a sphere touches the floor, rounds the
+                             // directions between the stored positions past the tolerance).
     bool refracted = false;
     Color fs;                // f_s |cos theta_wCamera|: the lobe's share of the power (mirror:
                              // albedo; glass: Fresnel F or 1 - F)

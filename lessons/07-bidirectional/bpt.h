@@ -10,14 +10,19 @@
 // infinity (the background), where it is per unit solid angle (Eq. 7.3). pdfFwd is the density
 // with which the vertex was sampled by its own subpath, pdfRev the density with which the other
 // direction would sample it (from the next vertex of its subpath, Eq. 7.6). Delta vertices are
-// FLAGS: a specular vertex has delta = true and the pdfs its lobe produces are stored as 0
-// (they stand for the same delta factor in every technique and cancel; the MIS code counts a 0
-// as 1 in ratios, Eq. 7.7); a point light and the pinhole have deltaPosition = true (they
-// cannot be hit by chance: no s = 0 or t = 0 technique for them).
+// FLAGS: a specular vertex has delta = true, a point light and the pinhole have deltaPosition
+// = true. The direction a specular vertex scatters to is a Dirac delta; its density is stored
+// as the COEFFICIENT of that delta (lesson 6's deltaLobe: the lobe's probability, converted to
+// area like any other pdf, Eq. 7.7a). Every technique that can sample a path carries each
+// specular vertex's delta exactly once, on the side it is sampled from, so the coefficients
+// (not the deltas) are what (7.5) compares. The pinhole is chosen with probability 1 and a point
+// light with P(l) (delta positions: coefficients again); a density that is 0 means "cannot be
+// sampled this way" and stays 0.
 #pragma once
 #include <vector>
 #include "02-direct-mis/mis.h"
 #include "05-light-tracing/lighttracer.h"
+#include "06-path-space/paths.h"
 
 namespace ps {
 
@@ -73,10 +78,17 @@ float pdfLightOrigin(const Scene& scene, const SubpathVertex& v);
 // (the disk of sampleEmission, R = scene.radius).
 float pdfLightToward(const Scene& scene, const SubpathVertex& light, const SubpathVertex& to);
 
-// Area density with which `cur` samples `next` (Eq. 7.3): cur is the camera: pdfDirection;
-// a surface: pdfBSDF(material, n, towards prev, towards next), 0 if delta; prev may be null
-// only for the camera. Always through convertToArea.
-float pdfScatter(const Scene& scene, const SubpathVertex* prev, const SubpathVertex& cur, const SubpathVertex& next);
+// Area density with which `cur` samples `next` (Eq. 7.3, 7.7a): cur is the camera:
+// pdfDirection; a surface: pdfBSDF(material, n, towards prev, towards next); prev may be null
+// only for the camera. A specular cur: the coefficient of its delta, lesson 6's deltaLobe,
+// which depends on the direction of the walk: mode Importance (walking with the light, as the
+// light subpath: prev is on the light side) deltaLobe(m, n, towards prev, towards next).pdfLight;
+// mode Radiance (walking against it, as the camera subpath) deltaLobe(m, n, towards next,
+// towards prev).pdfCamera (it carries the refraction's eta^2 Jacobian), even if the lobe is not
+// `valid` (rounding on a very short segment; see DeltaLobe).
+// Always through convertToArea.
+float pdfScatter(const Scene& scene, const SubpathVertex* prev, const SubpathVertex& cur, const SubpathVertex& next,
+                 Transport mode);
 
 // ---- subpaths (light_subpath.cpp, camera_subpath.cpp), Eq. 7.1 ----
 
@@ -132,13 +144,13 @@ bool techniqueSamples(const SubpathVertex* x, int n, int sPrime);
 // w_{s,t} from the full list p_0 .. p_n of the joined path's techniques (Eq. 7.5-7.7): build
 // x_0 .. x_{n-1} (y then z reversed), with pL[i] (density from the light side) and pE[i] (from
 // the camera side) from pdfFwd/pdfRev and the connection's rev; p_s' = prod_{i<s'} pL[i]
-// prod_{i>=s'} pE[i] (0 counted as 1), and w = p_s^b / sum over sampling techniques of p_s'^b.
+// prod_{i>=s'} pE[i] (the stored numbers as they are: no 0 is replaced), and w = p_s^b / sum over sampling techniques of p_s'^b.
 // y: s vertices (s = 1: &c.sampledLight), z: t vertices.
 float misWeightFull(const SubpathVertex* y, int s, const SubpathVertex* z, int t, const ReversePdfs& rev, Heuristic h);
 
 // The recursive partial sum (Eq. 7.9) for vertex i of a subpath, once path[i-2].pdfRev is
 // known: B_0 = B_1 = 0, B_i = r_{i-2}^b (c_{i-2} + B_{i-1}), r_j = pdfRev/pdfFwd of path[j]
-// (0 counted as 1), c_j whether the connection may sit just before path[j] (Eq. 7.10).
+// (0 if pdfFwd is 0), c_j whether the connection may sit just before path[j] (Eq. 7.10).
 // Light subpaths: c_0 = not deltaPosition; camera subpaths: c_0 = 0. Stores it in path[i].misSum.
 void updateMisSum(Subpath& path, size_t i, Heuristic h);
 

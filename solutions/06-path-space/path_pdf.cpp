@@ -10,7 +10,9 @@ double pdfTechnique(const Scene& scene, const Path& x, int s) {
     //!          double (a long path's pdf leaves the float range at extreme scales), for k = x.size() - 1 and t = k + 1 - s:
     //!          0. Techniques that cannot sample x return 0 (Eq. 6.12): k < 1, s < 0, t < 1
     //!             (t = 0 would need a ray to hit the pinhole); s = 0 with x[0] a point light;
-    //!             s >= 1 and x[s-1] or x[s] specular (the joining edge cannot follow a delta).
+    //!             s >= 1 and x[s-1] or x[s] specular (the joining edge cannot follow a delta);
+    //!             t = 1 with x[k-1] at infinity (k = 1, s = 1: a background direction is not
+    //!             a point that could be joined to the pinhole; no sampler makes that path).
     //!          1. Light subpath (s >= 1), light l = x[0].sp.light, P = scene.lightSelectionProb(l):
     //!             p(x0) = P * pdfLightArea(scene, l) for an area light (the same number as
     //!             sampleEmission's pdfA, and sampleLight's pdf: one light pdf for s = 1 and s > 1);
@@ -41,6 +43,7 @@ double pdfTechnique(const Scene& scene, const Path& x, int s) {
     if (k < 1 || s < 0 || t < 1) return 0.0;
     if (s == 0 && (!x[0].onLight || x[0].pointLight)) return 0.0;
     if (s >= 1 && (x[size_t(s) - 1].specular || x[size_t(s)].specular)) return 0.0;
+    if (t == 1 && x[size_t(k) - 1].infinite) return 0.0;   // the background joined straight to the pinhole
     double p = 1.0;
     // The light subpath x0 ... x_{s-1} (Eq. 6.8).
     if (s >= 1) {

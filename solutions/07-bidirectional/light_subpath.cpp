@@ -16,11 +16,12 @@ void lightSubpath(const Scene& scene, Rng& rng, int maxDepth, Heuristic h, Subpa
     //!          3. beta = start.beta, throughput = 1, ray = start.ray; for bounces = 1 .. maxDepth:
     //!             a. scene.intersect(ray, sp), stop on a miss. Append y_i: kind Surface, sp,
     //!                beta, delta = material.isDelta(); pdfFwd = pdfLightToward(y_0, y_1) for
-    //!                i = 1, else pdfScatter(scene, &y_{i-2}, y_{i-1}, y_i): the density of the
-    //!                direction sampled at y_{i-1}, evaluated from the vertices' positions with the
-    //!                same function the MIS weights use (0 after a delta vertex).
-    //!             b. If i >= 2: y_{i-2}.pdfRev = pdfScatter(scene, &y_i, y_{i-1}, y_{i-2})
-    //!                (0 if y_{i-1} is delta). Then updateMisSum(path, i, h).
+    //!                i = 1, else pdfScatter(scene, &y_{i-2}, y_{i-1}, y_i, Transport::Importance):
+    //!                the density of the direction sampled at y_{i-1}, evaluated from the vertices'
+    //!                positions with the same function the MIS weights use (after a delta vertex:
+    //!                its lobe's coefficient, Eq. 7.7a).
+    //!             b. If i >= 2: y_{i-2}.pdfRev = pdfScatter(scene, &y_i, y_{i-1}, y_{i-2},
+    //!                Transport::Radiance) (the camera's way). Then updateMisSum(path, i, h).
     //!             c. Stop if bounces == maxDepth. sampleAdjointBSDF(m, sp.n, -ray.d,
     //!                rng.uniform2(), rng.uniform(), s); stop if false; beta and throughput *= s.weight, stop if
     //!                black; Russian roulette with survivalProbability(throughput, bounces)
@@ -62,10 +63,10 @@ void lightSubpath(const Scene& scene, Rng& rng, int maxDepth, Heuristic h, Subpa
         v.light = sp.light;
         const SubpathVertex& prev = path.back();
         if (bounces == 1) v.pdfFwd = pdfLightToward(scene, prev, v);
-        else v.pdfFwd = pdfScatter(scene, &path[path.size() - 2], prev, v);
+        else v.pdfFwd = pdfScatter(scene, &path[path.size() - 2], prev, v, Transport::Importance);
         path.push_back(v);
         const size_t i = path.size() - 1;
-        if (i >= 2) path[i - 2].pdfRev = pdfScatter(scene, &path[i], path[i - 1], path[i - 2]);
+        if (i >= 2) path[i - 2].pdfRev = pdfScatter(scene, &path[i], path[i - 1], path[i - 2], Transport::Radiance);
         updateMisSum(path, i, h);
 
         if (bounces == maxDepth) break;

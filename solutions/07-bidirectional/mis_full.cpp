@@ -24,8 +24,8 @@ float misWeightFull(const SubpathVertex* y, int s, const SubpathVertex* z, int t
     //!          pL[i] (x_i sampled from the light side) and pE[i] (from the camera side):
     //!          light vertex y_i: pL = pdfFwd, pE = pdfRev, but rev.lightEnd for i = s-1 and
     //!          rev.lightPrev for i = s-2; camera vertex z_j: pE = pdfFwd, pL = pdfRev, but
-    //!          rev.cameraEnd for j = t-1 and rev.cameraPrev for j = t-2. Replace every 0 by 1
-    //!          (a delta factor common to the techniques). In double: for every s' with
+    //!          rev.cameraEnd for j = t-1 and rev.cameraPrev for j = t-2. Take the numbers as they
+    //!          are (a specular vertex's are its lobe's coefficients, Eq. 7.7a; a 0 is a 0). In double: for every s' with
     //!          techniqueSamples(x, n, s'), p = prod_{i<s'} pL[i] * prod_{i>=s'} pE[i],
     //!          q = p (balance) or p^2 (power); w = q_s / sum of q. 0 if the sum is 0.
     //! STUB (void)y; (void)s; (void)z; (void)t; (void)rev; (void)h;
@@ -34,17 +34,16 @@ float misWeightFull(const SubpathVertex* y, int s, const SubpathVertex* z, int t
     const int n = s + t;
     std::vector<SubpathVertex> x(static_cast<size_t>(n));
     std::vector<double> pL(static_cast<size_t>(n)), pE(static_cast<size_t>(n));
-    const auto one = [](float p) { return p != 0.0f ? double(p) : 1.0; };
     for (int i = 0; i < s; ++i) {
         x[size_t(i)] = y[i];
-        pL[size_t(i)] = one(y[i].pdfFwd);
-        pE[size_t(i)] = one(i == s - 1 ? rev.lightEnd : i == s - 2 ? rev.lightPrev : y[i].pdfRev);
+        pL[size_t(i)] = y[i].pdfFwd;
+        pE[size_t(i)] = i == s - 1 ? rev.lightEnd : i == s - 2 ? rev.lightPrev : y[i].pdfRev;
     }
     for (int j = 0; j < t; ++j) {
         const size_t i = size_t(s + t - 1 - j);
         x[i] = z[j];
-        pE[i] = one(z[j].pdfFwd);
-        pL[i] = one(j == t - 1 ? rev.cameraEnd : j == t - 2 ? rev.cameraPrev : z[j].pdfRev);
+        pE[i] = z[j].pdfFwd;
+        pL[i] = j == t - 1 ? rev.cameraEnd : j == t - 2 ? rev.cameraPrev : z[j].pdfRev;
     }
     const double beta = h == Heuristic::Power ? 2.0 : 1.0;
     double sum = 0.0, mine = 0.0;

@@ -61,12 +61,19 @@ float pdfLightToward(const Scene& scene, const SubpathVertex& light, const Subpa
     //! END
 }
 
-float pdfScatter(const Scene& scene, const SubpathVertex* prev, const SubpathVertex& cur, const SubpathVertex& next) {
-    //! TODO(07) Eq. 7.3: the unit direction wn = directionTo(cur, next) (bpt.h); camera:
-    //!          pdfW = scene.camera.pdfDirection(wn); surface: 0 if cur.delta, else
-    //!          pdfW = pdfBSDF(material, cur.sp.n, wp, wn) with wp = directionTo(cur, *prev).
-    //!          Return convertToArea(pdfW, cur, next).
-    //! STUB (void)scene; (void)prev; (void)cur; (void)next;
+float pdfScatter(const Scene& scene, const SubpathVertex* prev, const SubpathVertex& cur, const SubpathVertex& next,
+                 Transport mode) {
+    //! TODO(07) Eq. 7.3, 7.7a: the unit direction wn = directionTo(cur, next) (bpt.h); camera:
+    //!          pdfW = scene.camera.pdfDirection(wn); surface (prev not null), wp =
+    //!          directionTo(cur, *prev), m its material: not delta: pdfW = pdfBSDF(m, cur.sp.n, wp, wn);
+    //!          delta: the coefficient of its Dirac delta from lesson 6's deltaLobe (paths.h), NOT 0:
+    //!          mode Importance (light flows from prev to next): deltaLobe(m, n, wp, wn).pdfLight;
+    //!          mode Radiance (light flows from next to prev): deltaLobe(m, n, wn, wp).pdfCamera;
+    //!          (use its numbers even if lobe.valid is false: the walk itself chose this direction,
+    //!          and on a very short segment rounding of the positions can exceed deltaLobe's
+    //!          tolerance; they are 0 only if no lobe connects the two sides). Return
+    //!          convertToArea(pdfW, cur, next).
+    //! STUB (void)scene; (void)prev; (void)cur; (void)next; (void)mode;
     //! STUB return PS_TODO("lesson 07: pdfScatter", 0.0f);
     //! BEGIN
     const Vec3 wn = directionTo(cur, next);
@@ -74,8 +81,15 @@ float pdfScatter(const Scene& scene, const SubpathVertex* prev, const SubpathVer
     if (cur.kind == VertexKind::Camera) {
         pdfW = scene.camera.pdfDirection(wn);
     } else {
-        if (cur.delta || prev == nullptr) return 0.0f;
-        pdfW = pdfBSDF(scene.materials[size_t(cur.sp.material)], cur.sp.n, directionTo(cur, *prev), wn);
+        if (prev == nullptr) return 0.0f;
+        const Material& m = scene.materials[size_t(cur.sp.material)];
+        const Vec3 wp = directionTo(cur, *prev);
+        if (cur.delta) {
+            const DeltaLobe lobe = mode == Transport::Importance ? deltaLobe(m, cur.sp.n, wp, wn) : deltaLobe(m, cur.sp.n, wn, wp);
+            pdfW = mode == Transport::Importance ? lobe.pdfLight : lobe.pdfCamera;
+        } else {
+            pdfW = pdfBSDF(m, cur.sp.n, wp, wn);
+        }
     }
     return convertToArea(pdfW, cur, next);
     //! END

@@ -74,7 +74,8 @@ TEST_CASE("path space: f(x) of longer paths: a glossy bounce and a mirror's delt
     const DVec3 up(0, 1, 0), down(0, -1, 0), back(0, 0, -1), fwd = d3(scene.camera.forward());
     const DVec3 p0 = d3(x0.sp.p), pw = d3(wall.sp.p), pf = d3(floor.sp.p), pc = d3(cam.sp.p);
     {
-        // light -> wall (Phong) -> floor -> pinhole: the Phong lobe is not symmetric in its arguments.
+        // light -> wall (Phong) -> floor -> pinhole. (Phong's f is symmetric in its arguments: the
+        // argument order is graded by the refraction paths below, whose delta coefficient is not.)
         const ps::Path x = {x0, wall, floor, cam};
         const double fs = phong(0.6, 4, back, glm::normalize(pf - pw), glm::normalize(p0 - pw));
         const double g = G(p0, down, false, pw, back, false) * fs * G(pw, back, false, pf, up, false) * 0.5 / kPi *

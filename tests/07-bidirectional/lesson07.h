@@ -93,13 +93,19 @@ inline JoinedPath join(const SubpathVertex* y, int s, const SubpathVertex* z, in
     return j;
 }
 
-// Whether technique s' can sample the joined path (the test's own copy of Eq. 7.7).
+// Whether technique s' can sample the joined path (the test's own copy of Eq. 7.7), and its
+// density p_s' = prod_{i<s'} pL[i] prod_{i>=s'} pE[i] (Eq. 7.7) is not 0: a float density that
+// underflows to 0 (a Phong lobe of exponent 50 far from its peak gives pdfs near 1e-41) means
+// that technique cannot have made the path; its weight is not part of the sum.
 inline bool samples(const JoinedPath& j, int sp) {
     const int n = int(j.x.size());
     if (sp >= n) return false;
-    if (sp == 0) return !j.x[0].deltaPosition;
-    if (j.x[size_t(sp - 1)].delta || j.x[size_t(sp)].delta) return false;
-    return !(sp == 1 && n == 2 && j.x[0].infinite);
+    if (sp == 0 && j.x[0].deltaPosition) return false;
+    if (sp > 0 && (j.x[size_t(sp - 1)].delta || j.x[size_t(sp)].delta)) return false;
+    if (sp == 1 && n == 2 && j.x[0].infinite) return false;
+    double p = 1.0;
+    for (int i = 0; i < n; ++i) p *= double(i < sp ? j.pL[size_t(i)] : j.pE[size_t(i)]);
+    return p > 0.0;
 }
 
 // The subpaths of technique s' of the joined path, as the subpath functions would have built
@@ -161,6 +167,7 @@ inline std::string describe(const JoinedPath& j) {
               : v.infinite                     ? "background"
               : v.kind == ps::VertexKind::Light ? (v.deltaPosition ? "point light" : "area light")
               : v.delta                        ? "specular"
+              : v.light >= 0                   ? "area light"
                                                : "surface");
     }
     return o.str();
