@@ -45,8 +45,11 @@ function(pathspace_lesson_is_student NN OUT)
   set(${OUT} ${_is} PARENT_SCOPE)
 endfunction()
 
-# pathspace_lesson_sources(NAME OUT): the .cpp files of lesson NAME (e.g. 01-monte-carlo),
-# from the student's folder or the reference, as chosen above.
+# pathspace_lesson_sources(NAME OUT): the .cpp files of lesson NAME (e.g. 01-monte-carlo): the
+# lesson's own plumbing, lessons/NAME/*.cpp (integrator registration, task loops: the same for
+# everyone), and the pieces the student writes, from the student's folder or the reference
+# (solutions/NAME/*.cpp), as chosen above. A file in the student's folder with the name of a
+# plumbing file (a submission made from an older handout) is left out: the lesson's wins.
 function(pathspace_lesson_sources NAME OUT)
   string(SUBSTRING ${NAME} 0 2 _nn)
   pathspace_lesson_is_student(${_nn} _student)
@@ -57,10 +60,20 @@ function(pathspace_lesson_sources NAME OUT)
     set(_dir ${PROJECT_SOURCE_DIR}/solutions/${NAME})
     set(_from "reference")
   endif()
-  file(GLOB _src CONFIGURE_DEPENDS ${_dir}/*.cpp)
-  if(NOT _src)
+  file(GLOB _pieces CONFIGURE_DEPENDS ${_dir}/*.cpp)
+  if(NOT _pieces)
     message(FATAL_ERROR "lesson ${NAME}: no .cpp files in ${_dir}")
   endif()
+  file(GLOB _plumbing CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/lessons/${NAME}/*.cpp)
+  set(_src ${_plumbing})
+  foreach(_f ${_pieces})
+    get_filename_component(_base ${_f} NAME)
+    if(EXISTS ${PROJECT_SOURCE_DIR}/lessons/${NAME}/${_base})
+      message(STATUS "lesson ${NAME}: ${_f} left out (lessons/${NAME}/${_base} is the lesson's own)")
+    else()
+      list(APPEND _src ${_f})
+    endif()
+  endforeach()
   message(STATUS "lesson ${NAME}: ${_from}")
   set(${OUT} ${_src} PARENT_SCOPE)
 endfunction()

@@ -59,4 +59,17 @@ private:
     std::vector<std::vector<std::pair<uint32_t, Color>>> lists_;
 };
 
+// Where a light path's contributions go: one task's list of the iteration's splat buffer
+// (framework/tasks.h), with the factor 1/N of the N light paths of the iteration (lesson 5,
+// Eq. 5.4). Without a buffer the splats are dropped (scale still says 1/N).
+struct SplatTarget {
+    SplatBuffer* buffer = nullptr;
+    size_t task = 0;
+    SampleStats* stats = nullptr;
+    float scale = 1.0f;   // 1 / (light paths per iteration)
+    void add(const Vec2& raster, const Color& c) const {
+        if (buffer) buffer->splat(task, raster, c * scale, *stats);
+    }
+};
+
 }  // namespace ps

@@ -2,31 +2,16 @@
 #include "errors.h"
 #include <algorithm>
 #include "eyelight.h"
+#include "tasks.h"
 
 namespace ps {
 
 void PixelIntegrator::renderIteration(const Scene& scene, uint32_t iteration, uint64_t seed, Image& out,
                                       SampleStats& stats) {
-    const int w = out.width, h = out.height;
-    uint64_t nan = 0, inf = 0, rays = 0;
-#pragma omp parallel reduction(+ : nan, inf, rays)
-    {
-        SampleStats local;
-#pragma omp for schedule(dynamic, 64)
-        for (int pixel = 0; pixel < w * h; ++pixel) {
-            // The pixel's random numbers depend on (seed, iteration, pixel) only.
-            Rng rng = taskRng(seed, iteration, static_cast<uint32_t>(pixel));
-            const Vec2 raster(static_cast<float>(pixel % w) + rng.uniform(),
-                              static_cast<float>(pixel / w) + rng.uniform());
-            out.pixels[pixel] = checkSample(Li(scene, scene.camera.generateRay(raster), rng), local);
-        }
-        nan += local.nan;
-        inf += local.inf;
-        rays += takeRayCount();
-    }
-    stats.nan += nan;
-    stats.inf += inf;
-    stats.rays += rays;
+    renderPixelTasks(seed, iteration, out, stats, false, [&](int pixel, Rng& rng, Task&) {
+        const Vec2 raster = jitteredRaster(pixel, out.width, rng);
+        return Li(scene, scene.camera.generateRay(raster), rng);
+    });
 }
 
 namespace {

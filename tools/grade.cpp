@@ -8,7 +8,10 @@
 // already exists (`ctest --output-junit FILE`). CI uses it to prove that the reference scores
 // full marks and the untouched skeleton scores 0 (--expect: exit 1, naming the tests, if not).
 //
-// DIR holds lesson folders like assignments/ does (NN-name/*.cpp); default: assignments/.
+// DIR holds lesson folders like assignments/ does (NN-name/*.cpp); default: assignments/. A
+// submission holds only the student's pieces: each lesson's plumbing (integrator registration,
+// task loops) is compiled from lessons/NN-name/*.cpp, and a submitted file with the name of one
+// of those is left out (cmake/lessons.cmake), so a student cannot change how a lesson is run.
 // For each lesson: configure and build in OUT/build-NN, run its graded tests (CTest label
 // lesson-NN) with a per-test timeout, read CTest's JUnit report. A test's points are in its
 // name ("... [3 pts]", else 1). A lesson that does not build scores 0 on every test; a test

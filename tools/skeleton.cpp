@@ -9,6 +9,9 @@
 //     ... the solution ...                                               <- removed
 //     //! END
 //
+// A solution .cpp file without any marker is refused: with nothing for the student to write it
+// is the lesson's plumbing, which lives in lessons/NN-name/ (cmake/lessons.cmake).
+//
 // usage:
 //   skeleton generate SOLUTIONS ASSIGNMENTS   write every assignment file from its solution
 //   skeleton check    SOLUTIONS ASSIGNMENTS   exit 1 if any assignment file is out of sync
@@ -116,6 +119,11 @@ int generate(const fs::path& sol, const fs::path& asg, bool checkOnly) {
     for (const fs::path& rel : filesBelow(sol)) {
         expected.insert(rel);
         const std::string text = makeAssignment(sol / rel, nullptr);
+        // A file with nothing for the student to write is the lesson's plumbing: it is compiled
+        // from lessons/NN-name/ (cmake/lessons.cmake), so the student's folder holds only pieces.
+        if (rel.extension() == ".cpp" && text == readText(sol / rel))
+            throw Failure((sol / rel).string() + ": no //! marker, nothing for the student to write: plumbing belongs in "
+                          "lessons/" + rel.parent_path().string() + "/ (cmake/lessons.cmake compiles it from there)");
         const fs::path target = asg / rel;
         if (fs::exists(target) && readText(target) == text) continue;
         if (checkOnly) {

@@ -51,20 +51,10 @@ CameraConnection connectToCamera(const Scene& scene, const SurfacePoint& y, bool
 // u picks the direction, uLobe reflection or refraction. False for an invalid sample.
 bool sampleAdjointBSDF(const Material& m, const Vec3& n, const Vec3& wLight, const Vec2& u, float uLobe, BSDFSample& s);
 
-// Where a light path's contributions go (plumbing): one task's list of the iteration's splat
-// buffer, with the factor 1/N of the N light paths of the iteration (Eq. 5.4).
-struct SplatTarget {
-    SplatBuffer* buffer = nullptr;
-    size_t task = 0;
-    SampleStats* stats = nullptr;
-    float scale = 1.0f;   // 1 / (light paths per iteration)
-    void add(const Vec2& raster, const Color& c) const { buffer->splat(task, raster, c * scale, *stats); }
-};
-
 // One light path (Eq. 5.1-5.4): start it (startLightPath with rng.uniform(), rng.uniform2(),
 // rng.uniform2()), connect y0 and every non-specular vertex to the camera and add each
-// connection's contribution through out.add(raster, value), scatter with sampleAdjointBSDF,
-// Russian roulette as in lesson 3, at most maxDepth bounces.
+// connection's contribution through out.add(raster, value) (a SplatTarget, framework/film.h),
+// scatter with sampleAdjointBSDF, Russian roulette as in lesson 3, at most maxDepth bounces.
 void traceLightPath(const Scene& scene, Rng& rng, int maxDepth, const SplatTarget& out);
 
 }  // namespace ps

@@ -5,12 +5,11 @@
 // number of threads). The render command knows path-s0 ... path-s4 (s fixed) and path-t1
 // (s = k, light tracing), with k = maxdepth + 1.
 #include "06-path-space/paths.h"
+#include "tasks.h"
 
 namespace ps {
 
 namespace {
-
-constexpr int kPathsPerTask = 64;
 
 struct TechniqueIntegrator : Integrator {
     int k, s;   // k < 0: maxdepth + 1; s < 0: s = k (t = 1)
@@ -20,33 +19,12 @@ struct TechniqueIntegrator : Integrator {
                          SampleStats& stats) override {
         const int length = k >= 0 ? k : scene.settings.maxDepth + 1;
         const int lightVertices = s >= 0 ? s : length;
-        const int paths = out.width * out.height;
-        const int tasks = (paths + kPathsPerTask - 1) / kPathsPerTask;
-        SplatBuffer splats(out.width, out.height, static_cast<size_t>(tasks));
-        const float scale = 1.0f / static_cast<float>(paths);
-        uint64_t nan = 0, inf = 0, rays = 0;
-#pragma omp parallel reduction(+ : nan, inf, rays)
-        {
-            SampleStats local;
-#pragma omp for schedule(dynamic, 1)
-            for (int task = 0; task < tasks; ++task) {
-                const int end = std::min(paths, (task + 1) * kPathsPerTask);
-                for (int path = task * kPathsPerTask; path < end; ++path) {
-                    Rng rng = taskRng(seed, iteration, static_cast<uint32_t>(path));
-                    const TechniqueSample ts = sampleTechnique(scene, length, lightVertices, rng);
-                    if (!ts.valid) continue;
-                    const Color c = techniqueEstimate(scene, ts, lightVertices);
-                    if (!isBlack(c)) splats.splat(size_t(task), ts.raster, c * scale, local);
-                }
-            }
-            nan += local.nan;
-            inf += local.inf;
-            rays += takeRayCount();
-        }
-        splats.resolve(out);
-        stats.nan += nan;
-        stats.inf += inf;
-        stats.rays += rays;
+        renderLightPathTasks(seed, iteration, out, stats, [&](int, Rng& rng, Task& task) {
+            const TechniqueSample ts = sampleTechnique(scene, length, lightVertices, rng);
+            if (!ts.valid) return;
+            const Color c = techniqueEstimate(scene, ts, lightVertices);
+            if (!isBlack(c)) task.splat.add(ts.raster, c);
+        });
     }
 };
 

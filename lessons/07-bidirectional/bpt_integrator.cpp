@@ -7,16 +7,17 @@
 // light subpath (random numbers from taskRng(seed, iteration, pixel), whichever thread runs
 // it), then every technique (s, t) (Eq. 7.2). t >= 2 goes to the pixel, t = 1 is splatted with
 // the factor 1 / (width * height) of lesson 5 (Eq. 5.4) into a SplatBuffer whose lists are
-// added in a fixed order: the image does not depend on the number of threads.
+// added in a fixed order: the image does not depend on the number of threads (the framework's
+// task loop, framework/tasks.h).
 //
 // Left out where the scene shows it cannot contribute (Eq. 7.12, exact): see bptLeftOut.
 #include <omp.h>
 #include "07-bidirectional/bpt.h"
+#include "tasks.h"
 
 namespace ps {
 
 namespace {
-constexpr int kPixelsPerTask = 64;
 
 struct Pruning {
     bool s0 = false;          // no light can be hit (point lights only)
@@ -93,33 +94,10 @@ struct BptBase : Integrator {
 
     void renderIteration(const Scene& scene, uint32_t iteration, uint64_t seed, Image& out,
                          SampleStats& stats) override {
-        const int w = out.width, h = out.height, pixels = w * h;
-        const int tasks = (pixels + kPixelsPerTask - 1) / kPixelsPerTask;
-        SplatBuffer splats(w, h, static_cast<size_t>(tasks));
-        const float scale = 1.0f / static_cast<float>(pixels);
-        uint64_t nan = 0, inf = 0, rays = 0;
-#pragma omp parallel reduction(+ : nan, inf, rays)
-        {
-            SampleStats local;
-#pragma omp for schedule(dynamic, 1)
-            for (int task = 0; task < tasks; ++task) {
-                const SplatTarget target{&splats, static_cast<size_t>(task), &local, scale};
-                const int end = std::min(pixels, (task + 1) * kPixelsPerTask);
-                for (int pixel = task * kPixelsPerTask; pixel < end; ++pixel) {
-                    Rng rng = taskRng(seed, iteration, static_cast<uint32_t>(pixel));
-                    const Vec2 raster(static_cast<float>(pixel % w) + rng.uniform(),
-                                      static_cast<float>(pixel / w) + rng.uniform());
-                    out.pixels[size_t(pixel)] = checkSample(bptSample(scene, raster, rng, opt, target, nullptr), local);
-                }
-            }
-            nan += local.nan;
-            inf += local.inf;
-            rays += takeRayCount();
-        }
-        splats.resolve(out);
-        stats.nan += nan;
-        stats.inf += inf;
-        stats.rays += rays;
+        renderPixelTasks(seed, iteration, out, stats, true, [&](int pixel, Rng& rng, Task& task) {
+            const Vec2 raster = jitteredRaster(pixel, out.width, rng);
+            return bptSample(scene, raster, rng, opt, task.splat, nullptr);
+        });
     }
 };
 
@@ -179,44 +157,27 @@ TechniqueImages emptyTechniques(int maxLength, int w, int h) {
 TechniqueImages renderTechniques(const Scene& scene, int maxLength, int spp, uint64_t seed, int threads,
                                  const BptOptions& opt) {
     const int w = scene.camera.width(), h = scene.camera.height(), pixels = w * h;
-    const int tasks = (pixels + kPixelsPerTask - 1) / kPixelsPerTask;
-    if (threads < 1) threads = omp_get_max_threads();
+    if (threads > 0) omp_set_num_threads(threads);
     Scene limited = scene;
     limited.settings.maxDepth = std::min(scene.settings.maxDepth, maxLength - 1);
-    const float scale = 1.0f / static_cast<float>(pixels);
     TechniqueImages out = emptyTechniques(maxLength, w, h);
-    std::vector<std::vector<ImageRecorder::Splat>> lists(static_cast<size_t>(tasks));
-    std::vector<SampleStats> taskStats(static_cast<size_t>(tasks));
+    std::vector<std::vector<ImageRecorder::Splat>> lists(static_cast<size_t>(taskCount(pixels)));
     for (int it = 0; it < spp; ++it) {
-#pragma omp parallel num_threads(threads)
-        {
-            SplatBuffer dummy(w, h, 1);   // bptSample's own t = 1 splats (the weighted image): unused here
-            Image scratch(w, h);
-#pragma omp for schedule(dynamic, 1)
-            for (int task = 0; task < tasks; ++task) {
-                ImageRecorder recorder;
-                recorder.images = &out;
-                recorder.splats = &lists[size_t(task)];
-                recorder.stats = &taskStats[size_t(task)];
-                recorder.splats->clear();
-                SampleStats ignored;
-                const SplatTarget target{&dummy, 0, &ignored, scale};
-                const int end = std::min(pixels, (task + 1) * kPixelsPerTask);
-                for (int pixel = task * kPixelsPerTask; pixel < end; ++pixel) {
-                    Rng rng = taskRng(seed, uint32_t(it), static_cast<uint32_t>(pixel));
-                    const Vec2 raster(static_cast<float>(pixel % w) + rng.uniform(), static_cast<float>(pixel / w) + rng.uniform());
-                    bptSample(limited, raster, rng, opt, target, &recorder);
-                }
-                dummy.resolve(scratch);   // empties the list
-            }
-        }
-        for (const auto& list : lists)   // t = 1, in task order
+        // No SplatBuffer: bptSample's own t = 1 splats (the weighted image) are not wanted here.
+        runTasks(pixels, seed, uint32_t(it), nullptr, 1.0f / static_cast<float>(pixels), out.stats,
+                 [&](int pixel, Rng& rng, Task& task) {
+                     ImageRecorder recorder;
+                     recorder.images = &out;
+                     recorder.splats = &lists[task.index];
+                     recorder.stats = &task.stats;
+                     const Vec2 raster = jitteredRaster(pixel, w, rng);
+                     bptSample(limited, raster, rng, opt, task.splat, &recorder);
+                 });
+        for (auto& list : lists) {   // t = 1, in task order
             for (const ImageRecorder::Splat& sp : list)
                 ImageRecorder::accumulate(out, sp.technique, sp.x, sp.y, sp.unweighted, sp.weighted);
-    }
-    for (const SampleStats& st : taskStats) {
-        out.stats.nan += st.nan;
-        out.stats.inf += st.inf;
+            list.clear();
+        }
     }
     out.spp = spp;
     const float inv = 1.0f / static_cast<float>(spp);

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include "04-measurement/measurement.h"
 #include "errors.h"
+#include "tasks.h"
 
 namespace ps {
 
@@ -51,36 +52,21 @@ struct Measure : Integrator {
     void renderIteration(const Scene& scene, uint32_t iteration, uint64_t seed, Image& out,
                          SampleStats& stats) override {
         const Camera& camera = scene.camera;
-        const int w = out.width, h = out.height;
-        uint64_t nan = 0, inf = 0, rays = 0;
-#pragma omp parallel reduction(+ : nan, inf, rays)
-        {
-            SampleStats local;
-#pragma omp for schedule(dynamic, 64)
-            for (int pixel = 0; pixel < w * h; ++pixel) {
-                const int px = pixel % w, py = pixel / w;
-                Rng rng = taskRng(seed, iteration, static_cast<uint32_t>(pixel));
-                // The cone around the pixel's centre direction that holds its four corners, 1 %
-                // wider: 1 - cos(angle between unit a and b) = |a - b|^2 / 2, without rounding.
-                const Vec3 axis = camera.generateRay(Vec2(px + 0.5f, py + 0.5f)).d;
-                float oneMinusCosMax = 0.0f;
-                for (int c = 0; c < 4; ++c) {
-                    const Vec3 corner = camera.generateRay(Vec2(float(px + (c & 1)), float(py + (c >> 1)))).d;
-                    oneMinusCosMax = std::max(oneMinusCosMax, 0.5f * glm::dot(axis - corner, axis - corner));
-                }
-                oneMinusCosMax = std::min(2.0f, 1.02f * oneMinusCosMax);
-                const float pdf = 1.0f / (2.0f * kPi * oneMinusCosMax);
-                const Vec3 dir = sampleCone(rng.uniform2(), oneMinusCosMax, axis);
-                out.pixels[pixel] = checkSample(
-                    pixelMeasurementSample(scene, px, py, dir, pdf, rng, scene.settings.maxDepth), local);
+        renderPixelTasks(seed, iteration, out, stats, false, [&](int pixel, Rng& rng, Task&) {
+            const int px = pixel % out.width, py = pixel / out.width;
+            // The cone around the pixel's centre direction that holds its four corners, 1 %
+            // wider: 1 - cos(angle between unit a and b) = |a - b|^2 / 2, without rounding.
+            const Vec3 axis = camera.generateRay(Vec2(px + 0.5f, py + 0.5f)).d;
+            float oneMinusCosMax = 0.0f;
+            for (int c = 0; c < 4; ++c) {
+                const Vec3 corner = camera.generateRay(Vec2(float(px + (c & 1)), float(py + (c >> 1)))).d;
+                oneMinusCosMax = std::max(oneMinusCosMax, 0.5f * glm::dot(axis - corner, axis - corner));
             }
-            nan += local.nan;
-            inf += local.inf;
-            rays += takeRayCount();
-        }
-        stats.nan += nan;
-        stats.inf += inf;
-        stats.rays += rays;
+            oneMinusCosMax = std::min(2.0f, 1.02f * oneMinusCosMax);
+            const float pdf = 1.0f / (2.0f * kPi * oneMinusCosMax);
+            const Vec3 dir = sampleCone(rng.uniform2(), oneMinusCosMax, axis);
+            return pixelMeasurementSample(scene, px, py, dir, pdf, rng, scene.settings.maxDepth);
+        });
     }
 };
 

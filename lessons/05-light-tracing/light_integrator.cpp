@@ -3,18 +3,18 @@
 // camera rays) in fixed batches; each batch has its own list in a SplatBuffer, and the lists
 // are added in batch order, so the image does not depend on the number of threads. Every
 // splat carries the factor 1/N of Eq. 5.4. The random numbers of path i of iteration k come
-// from taskRng(seed, k, i), whichever thread traces it.
+// from taskRng(seed, k, i), whichever thread traces it (the framework's task loop,
+// framework/tasks.h).
 //
 // Left out where the scene shows it cannot contribute (exact: the image's expectation is the
 // same): in a scene whose surfaces are all specular (or black) no vertex after the light can be
 // connected to the pinhole (Eq. 5.9), so the paths end at the light (maxDepth 0).
 #include "05-light-tracing/lighttracer.h"
+#include "tasks.h"
 
 namespace ps {
 
 namespace {
-
-constexpr int kPathsPerTask = 64;
 
 struct LightTracer : Integrator {
     // True if no surface can send light towards the camera: every material is specular, or
@@ -34,32 +34,9 @@ struct LightTracer : Integrator {
 
     void renderIteration(const Scene& scene, uint32_t iteration, uint64_t seed, Image& out,
                          SampleStats& stats) override {
-        const int paths = out.width * out.height;
-        const int tasks = (paths + kPathsPerTask - 1) / kPathsPerTask;
-        SplatBuffer splats(out.width, out.height, static_cast<size_t>(tasks));
-        const float scale = 1.0f / static_cast<float>(paths);
         const int maxDepth = onlyLightVertices(scene) ? 0 : scene.settings.maxDepth;
-        uint64_t nan = 0, inf = 0, rays = 0;
-#pragma omp parallel reduction(+ : nan, inf, rays)
-        {
-            SampleStats local;
-#pragma omp for schedule(dynamic, 1)
-            for (int task = 0; task < tasks; ++task) {
-                const SplatTarget target{&splats, static_cast<size_t>(task), &local, scale};
-                const int end = std::min(paths, (task + 1) * kPathsPerTask);
-                for (int path = task * kPathsPerTask; path < end; ++path) {
-                    Rng rng = taskRng(seed, iteration, static_cast<uint32_t>(path));
-                    traceLightPath(scene, rng, maxDepth, target);
-                }
-            }
-            nan += local.nan;
-            inf += local.inf;
-            rays += takeRayCount();
-        }
-        splats.resolve(out);
-        stats.nan += nan;
-        stats.inf += inf;
-        stats.rays += rays;
+        renderLightPathTasks(seed, iteration, out, stats,
+                             [&](int, Rng& rng, Task& task) { traceLightPath(scene, rng, maxDepth, task.splat); });
     }
 };
 
