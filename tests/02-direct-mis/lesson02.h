@@ -14,6 +14,7 @@
 #include "metrics.h"
 #include "render.h"
 #include "scene_loader.h"
+#include "render_helpers.h"
 #include "statistics.h"
 #include "lesson_files.h"
 
@@ -44,26 +45,9 @@ inline const std::vector<std::string>& estimators() {
     return names;
 }
 
-struct Render {
-    ps::Image mean, variance;
-    ps::SampleStats stats;
-    std::string algo;
-};
-
-// Renders spp iterations of the named integrator with a fixed seed, on ONE thread: the test
-// images are tiny (a few thousand pixels per iteration), and with two threads the render loop's
-// synchronisation after every iteration costs more than the work itself, badly so when CTest
-// runs two tests at once (ctest -j2) or the machine is busy. The image does not depend on the
-// thread count.
-inline Render render(const ps::Scene& scene, const std::string& algo, int spp, uint64_t seed) {
-    std::unique_ptr<ps::Integrator> integrator = ps::makeIntegrator(algo);
-    ps::RenderOptions opt;
-    opt.spp = spp;
-    opt.seed = seed;
-    opt.threads = 1;
-    const ps::RenderResult r = ps::render(scene, *integrator, opt);
-    return {r.film.mean(), r.film.varianceOfMean(), r.stats, algo};
-}
+// Renders on ONE thread (tests/support/render_helpers.h says why).
+using ps::testrender::Render;
+using ps::testrender::render;
 
 // Every test render must be free of NaN and Inf samples.
 #define LESSON02_CHECK_FINITE(r)                                                                   \
@@ -75,7 +59,7 @@ inline ps::Image readData(const std::string& name) {
     return ps::readPFM(sourcePath("tests/02-direct-mis/data/" + name));
 }
 
-inline double sum(const Color& c) { return double(c.r) + double(c.g) + double(c.b); }
+using ps::testrender::sum;
 
 inline std::string str(const Vec3& v) {
     std::ostringstream s;

@@ -13,6 +13,7 @@
 #include "image.h"
 #include "render.h"
 #include "scene_loader.h"
+#include "render_helpers.h"
 #include "statistics.h"
 #include "lesson_files.h"
 
@@ -59,7 +60,7 @@ inline std::string str(const Vec3& v) {
     s << "(" << v.x << ", " << v.y << ", " << v.z << ")";
     return s.str();
 }
-inline double sum(const Color& c) { return double(c.r) + double(c.g) + double(c.b); }
+using ps::testrender::sum;
 
 // A closed furnace with diffuse albedo a and emission Le (grey): the camera at the centre of a
 // closed enclosure whose walls emit Le inwards and reflect with albedo a. The cube is
@@ -119,21 +120,8 @@ inline Samples sampleLi(const ps::Scene& scene, const Estimator& e, int maxDepth
     return s;
 }
 
-struct Render {
-    ps::Image mean, variance;
-    ps::SampleStats stats;
-    std::string algo;
-};
-// Renders spp iterations of the named integrator with a fixed seed, on one thread (tiny test
-// images: see lesson02.h). The image does not depend on the thread count.
-inline Render render(const ps::Scene& scene, const std::string& algo, int spp, uint64_t seed) {
-    std::unique_ptr<ps::Integrator> integrator = ps::makeIntegrator(algo);
-    ps::RenderOptions opt;
-    opt.spp = spp;
-    opt.seed = seed;
-    opt.threads = 1;
-    const ps::RenderResult r = ps::render(scene, *integrator, opt);
-    return {r.film.mean(), r.film.varianceOfMean(), r.stats, algo};
-}
+// Renders on one thread (tiny test images: tests/support/render_helpers.h).
+using ps::testrender::Render;
+using ps::testrender::render;
 
 }  // namespace lesson03

@@ -14,6 +14,7 @@
 #include "lesson_files.h"
 #include "image.h"
 #include "scene_loader.h"
+#include "render_helpers.h"
 #include "statistics.h"
 
 namespace lesson04 {
@@ -114,6 +115,6 @@ inline glm::dvec3 sampleCone(double u1, double u2, double oneMinusCosMax, const 
     return glm::normalize(sinTheta * std::cos(phi) * s + sinTheta * std::sin(phi) * t + (1.0 - oneMinusCos) * axis);
 }
 
-inline double sum(const Color& c) { return double(c.r) + double(c.g) + double(c.b); }
+using ps::testrender::sum;
 
 }  // namespace lesson04

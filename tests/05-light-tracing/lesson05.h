@@ -14,6 +14,7 @@
 #include "image.h"
 #include "render.h"
 #include "scene_loader.h"
+#include "render_helpers.h"
 #include "statistics.h"
 
 namespace lesson05 {
@@ -38,26 +39,14 @@ using ps::fmt::str;
 constexpr int kStatisticalTests = 11;
 inline double alpha() { return ps::stats::sidak(0.01, kStatisticalTests); }
 
-struct Render {
-    ps::Image mean, variance;
-    ps::SampleStats stats;
-};
+using ps::testrender::Render;
+// Lesson 5's renders run on two threads unless a test says otherwise.
 inline Render render(const ps::Scene& scene, const std::string& algo, int iterations, uint64_t seed, int threads = 2) {
-    std::unique_ptr<ps::Integrator> integrator = ps::makeIntegrator(algo);
-    ps::RenderOptions opt;
-    opt.spp = iterations;
-    opt.seed = seed;
-    opt.threads = threads;
-    const ps::RenderResult r = ps::render(scene, *integrator, opt);
-    return {r.film.mean(), r.film.varianceOfMean(), r.stats};
+    return ps::testrender::render(scene, algo, iterations, seed, threads);
 }
 
-inline double sum(const Color& c) { return double(c.r) + double(c.g) + double(c.b); }
-inline double total(const ps::Image& img) {
-    double t = 0.0;
-    for (const Color& c : img.pixels) t += sum(c);
-    return t;
-}
+using ps::testrender::sum;
+using ps::testrender::total;
 
 // The pixels of img where mask is true, as a one-row image (for a z-test on part of an image).
 inline ps::Image select(const ps::Image& img, const std::vector<bool>& mask) {

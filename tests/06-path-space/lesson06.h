@@ -15,6 +15,7 @@
 #include "image.h"
 #include "render.h"
 #include "scene_loader.h"
+#include "render_helpers.h"
 #include "statistics.h"
 
 namespace lesson06 {
@@ -123,11 +124,8 @@ inline std::string describe(const ps::Path& x) {
     return s.str();
 }
 
-inline double sum(const Color& c) { return double(c.r) + double(c.g) + double(c.b); }
-inline double total(const ps::Image& img) {
-    double t = 0.0;
-    for (const Color& c : img.pixels) t += sum(c);
-    return t;
-}
+using ps::testrender::Render;
+using ps::testrender::sum;
+using ps::testrender::total;
 
 }  // namespace lesson06

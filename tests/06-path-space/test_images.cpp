@@ -24,10 +24,6 @@ const ps::Scene& gapBox() {
     return s;
 }
 
-struct Render {
-    ps::Image mean, variance;
-    ps::SampleStats stats;
-};
 const Render& technique(int k, int s) {
     static std::map<std::pair<int, int>, Render> cache;
     auto it = cache.find({k, s});

@@ -14,6 +14,7 @@
 #include "image.h"
 #include "render.h"
 #include "scene_loader.h"
+#include "render_helpers.h"
 #include "statistics.h"
 
 namespace lesson07 {
@@ -40,26 +41,11 @@ using ps::fmt::str;
 constexpr int kStatisticalTests = 16;
 inline double alpha() { return ps::stats::sidak(0.01, kStatisticalTests); }
 
-struct Render {
-    ps::Image mean, variance;
-    ps::SampleStats stats;
-};
-inline Render render(const ps::Scene& scene, const std::string& algo, int iterations, uint64_t seed, int threads = 1) {
-    std::unique_ptr<ps::Integrator> integrator = ps::makeIntegrator(algo);
-    ps::RenderOptions opt;
-    opt.spp = iterations;
-    opt.seed = seed;
-    opt.threads = threads;
-    const ps::RenderResult r = ps::render(scene, *integrator, opt);
-    return {r.film.mean(), r.film.varianceOfMean(), r.stats};
-}
+using ps::testrender::Render;
+using ps::testrender::render;
 
-inline double sum(const Color& c) { return double(c.r) + double(c.g) + double(c.b); }
-inline double total(const ps::Image& img) {
-    double t = 0.0;
-    for (const Color& c : img.pixels) t += sum(c);
-    return t;
-}
+using ps::testrender::sum;
+using ps::testrender::total;
 
 // ---- a joined path, split at every technique (the test's own bookkeeping, Eq. 7.5-7.7) ----
 
