@@ -4,11 +4,11 @@
 // and main.cpp only looks the name up. `pathspace --help` and `pathspace help COMMAND` are built
 // from the same entries, so a new command is documented as soon as it exists.
 #pragma once
-#include <charconv>
 #include <ostream>
 #include <stdexcept>
 #include <string>
 #include <vector>
+#include "numbers.h"
 
 namespace ps {
 
@@ -46,9 +46,7 @@ struct UsageError : std::runtime_error {
 template <class T>
 T parseNumber(const std::string& opt, const std::string& s) {
     T v{};
-    auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
-    if (ec != std::errc() || end != s.data() + s.size())
-        throw UsageError("option " + opt + " needs a number, got '" + s + "'");
+    if (parseWhole(s, v) != std::errc()) throw UsageError("option " + opt + " needs a number, got '" + s + "'");
     return v;
 }
 
