@@ -1,6 +1,7 @@
 // pathspace info SCENE: what a scene contains and which capabilities it needs.
 #include <iostream>
 #include "command.h"
+#include "report/converge.h"
 #include "scene_loader.h"
 
 namespace ps {
@@ -15,6 +16,9 @@ int runInfo(const std::vector<std::string>& args) {
               << scene.bvh.depth() << "\n  " << scene.caps.describe() << "\n  defaults: spp "
               << scene.settings.spp << ", maxdepth " << scene.settings.maxDepth << ", algo " << scene.settings.algo
               << "\n";
+    for (const PointLightPixel& p : pointLightsInView(scene))
+        std::cout << "  point light " << p.light << " is seen directly in pixel (" << p.x << ", " << p.y
+                  << "): only light tracing and BPT draw it; converge leaves it out of the errors\n";
     return 0;
 }
 
