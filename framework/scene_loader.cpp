@@ -7,6 +7,7 @@
 #include <sstream>
 #include <tiny_obj_loader.h>
 #include "errors.h"
+#include "numbers.h"
 
 namespace ps {
 
@@ -29,11 +30,10 @@ struct Statement {
     }
     static float toFloat(const Statement& st, const std::string& tok, const std::string& what) {
         float v = 0.0f;
-        auto [end, ec] = std::from_chars(tok.data(), tok.data() + tok.size(), v);
+        const std::errc ec = parseWhole(tok, v);
         if (ec == std::errc::result_out_of_range)
             st.fail("number '" + tok + "' for " + what + " is out of range (beyond float)");
-        if (ec != std::errc() || end != tok.data() + tok.size())
-            st.fail("malformed number '" + tok + "' for " + what);
+        if (ec != std::errc()) st.fail("malformed number '" + tok + "' for " + what);
         if (!std::isfinite(v)) st.fail("'" + tok + "' for " + what + " is not a finite number");
         return v;
     }
@@ -474,8 +474,7 @@ private:
                 if (tok.size() < 4) fail("vertex with " + std::to_string(tok.size() - 1) + " coordinates (needs x y z)");
                 for (size_t k = 1; k < 4; ++k) {
                     float x = 0.0f;
-                    auto [end, ec] = std::from_chars(tok[k].data(), tok[k].data() + tok[k].size(), x);
-                    if (ec != std::errc() || end != tok[k].data() + tok[k].size() || !std::isfinite(x))
+                    if (parseWhole(tok[k], x) != std::errc() || !std::isfinite(x))
                         fail("malformed or non-finite vertex coordinate '" + tok[k] + "'");
                 }
             } else if (tok[0] == "mtllib") {

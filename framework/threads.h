@@ -12,7 +12,8 @@ namespace ps {
 // Call first thing in main(argc, argv). libgomp reads OMP_WAIT_POLICY once, when the program
 // is loaded, so setting it now is too late for this process: if the environment does not set
 // it, the program runs itself again with OMP_WAIT_POLICY=PASSIVE (the same arguments; on
-// failure it simply goes on). Set OMP_WAIT_POLICY yourself to choose otherwise.
+// failure it simply goes on). Set OMP_WAIT_POLICY yourself to choose otherwise. Linux only (it
+// runs /proc/self/exe); elsewhere it does nothing.
 void preferPassiveWaiting(char** argv);
 
 }  // namespace ps

@@ -2,7 +2,12 @@
 // mean and variance, deterministic splatting.
 #include <doctest/doctest.h>
 #include <omp.h>
+#if defined(_WIN32)
+#include <process.h>
+#define getpid _getpid
+#else
 #include <unistd.h>
+#endif
 #include <cmath>
 #include <cstring>
 #include <filesystem>

@@ -3,7 +3,13 @@
 // record wall time and the error against a reference, and the report is a CSV, a log-log SVG
 // plot of relMSE against seconds with a slope -1 guide, a Markdown efficiency table, and the
 // equal-time images side by side. Optionally (--regions) the error of each region of the
-// image: the pixels that see a given material.
+// image: the pixels that see a given material. The `converge` command's module
+// (app/commands/converge.cpp), not part of the renderer.
+//
+// A point light seen directly through the pinhole is a finite measurement (W_e I / d^2 lands in
+// one pixel): light tracing and BPT draw that pixel, a path tracer cannot (both ends of the path
+// are delta positions, no camera technique reaches it). Every comparison leaves such pixels out
+// of every algorithm's error (MSE, relMSE, trimmed relMSE, regions) and says so.
 #pragma once
 #include <string>
 #include <vector>
@@ -21,8 +27,23 @@ struct Regions {
 
 // Throws InputError for a material the scene does not have (the message lists those it has).
 Regions materialRegions(const Scene& scene, const std::vector<std::string>& materials);
-// relMSE (eps = 0.01) over the pixels of each region (0 for a region without pixels).
-std::vector<double> regionRelMse(const Image& img, const Image& ref, const Regions& regions);
+// relMSE (eps = 0.01) over the pixels of each region (0 for a region without pixels), without
+// the pixels marked in leftOut (per pixel, row by row; empty: none).
+std::vector<double> regionRelMse(const Image& img, const Image& ref, const Regions& regions,
+                                 const std::vector<bool>& leftOut = {});
+
+// A pixel in which point light `light` (its index among the scene's point lights, in file order)
+// is seen directly: it projects inside the image and nothing lies between it and the pinhole.
+struct PointLightPixel {
+    int x = 0, y = 0;
+    int light = 0;
+};
+std::vector<PointLightPixel> pointLightsInView(const Scene& scene);
+// "pixel (x, y) sees point light N directly: a path tracer cannot sample that path (both ends
+// delta positions); left out of the error of every algorithm"
+std::string describe(const PointLightPixel& p);
+// Per pixel, row by row: true for the pixels above (empty if there are none).
+std::vector<bool> leftOutMask(const Scene& scene, const std::vector<PointLightPixel>& pixels);
 
 struct ConvergeOptions {
     std::vector<std::string> algos;
@@ -48,11 +69,15 @@ struct ConvergenceReport {
     std::vector<ConvergencePoint> points;   // in the order they were taken
     std::vector<Image> finalImages;         // per algorithm, seed 0, at the end of the budget
     double referenceVariance = 0.0;         // mean variance of the reference's pixels (0 if unknown)
+    std::vector<PointLightPixel> leftOut;   // pixels left out of every error (pointLightsInView)
 };
 
 ConvergenceReport runConvergence(const Scene& scene, const Image& reference, const ConvergeOptions& opt);
 
-// "scene,algorithm,seed,spp,seconds,mse,relmse,relmse_trim,nan,inf" and one row per point.
+ConvergenceReport runConvergence(const Scene& scene, const Image& reference, const ConvergeOptions& opt);
+
+// "scene,algorithm,seed,spp,seconds,mse,relmse,relmse_trim,nan,inf" and one row per point,
+// after one line "# describe(pixel)" per pixel left out of the errors, if any.
 std::string convergenceCsv(const std::string& sceneName, const ConvergenceReport& report);
 // Log-log plot of relMSE (eps = 0.01) against seconds, the mean over seeds per algorithm.
 std::string convergencePlotSvg(const std::string& title, const ConvergenceReport& report);

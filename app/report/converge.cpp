@@ -34,11 +34,12 @@ Regions materialRegions(const Scene& scene, const std::vector<std::string>& mate
     return r;
 }
 
-std::vector<double> regionRelMse(const Image& img, const Image& ref, const Regions& regions) {
+std::vector<double> regionRelMse(const Image& img, const Image& ref, const Regions& regions,
+                                 const std::vector<bool>& leftOut) {
     std::vector<double> sum(regions.names.size(), 0.0), count(regions.names.size(), 0.0);
     for (size_t i = 0; i < img.pixels.size() && i < regions.ofPixel.size(); ++i) {
         const int k = regions.ofPixel[i];
-        if (k < 0) continue;
+        if (k < 0 || (i < leftOut.size() && leftOut[i])) continue;
         for (int c = 0; c < 3; ++c) {
             const double x = img.pixels[i][c], r = ref.pixels[i][c];
             sum[k] += (x - r) * (x - r) / (r * r + kRelMseEpsilon);
@@ -49,8 +50,45 @@ std::vector<double> regionRelMse(const Image& img, const Image& ref, const Regio
     return sum;
 }
 
+std::vector<PointLightPixel> pointLightsInView(const Scene& scene) {
+    std::vector<PointLightPixel> out;
+    const Camera& camera = scene.camera;
+    int index = 0;
+    for (const Light& light : scene.lights) {
+        if (light.kind != LightKind::Point) continue;
+        const int n = index++;
+        Vec2 raster;
+        if (!camera.rasterPosition(light.position, raster)) continue;   // behind or outside the image
+        SurfacePoint at;   // not on a surface: no offset, no triangle to skip
+        at.p = light.position;
+        if (scene.occluded(scene.spawnRayTo(at, camera.position()))) continue;
+        PointLightPixel p;
+        p.x = std::min(static_cast<int>(std::floor(raster.x)), camera.width() - 1);
+        p.y = std::min(static_cast<int>(std::floor(raster.y)), camera.height() - 1);
+        p.light = n;
+        out.push_back(p);
+    }
+    return out;
+}
+
+std::string describe(const PointLightPixel& p) {
+    return "pixel (" + std::to_string(p.x) + ", " + std::to_string(p.y) + ") sees point light " +
+           std::to_string(p.light) +
+           " directly: a path tracer cannot sample that path (both ends delta positions); left out of the error "
+           "of every algorithm";
+}
+
+std::vector<bool> leftOutMask(const Scene& scene, const std::vector<PointLightPixel>& pixels) {
+    if (pixels.empty()) return {};
+    std::vector<bool> mask(size_t(scene.camera.width()) * scene.camera.height(), false);
+    for (const PointLightPixel& p : pixels) mask[size_t(p.y) * scene.camera.width() + p.x] = true;
+    return mask;
+}
+
 ConvergenceReport runConvergence(const Scene& scene, const Image& reference, const ConvergeOptions& opt) {
     ConvergenceReport report;
+    report.leftOut = pointLightsInView(scene);
+    const std::vector<bool> leftOut = leftOutMask(scene, report.leftOut);
     for (const std::string& algo : opt.algos) {
         for (int seed = 0; seed < opt.seeds; ++seed) {
             auto integrator = makeIntegrator(algo);
@@ -67,8 +105,8 @@ ConvergenceReport runConvergence(const Scene& scene, const Image& reference, con
                 p.spp = spp;
                 p.seconds = seconds;
                 const Image mean = film.mean();
-                p.error = computeError(mean, reference);
-                if (!opt.regions.names.empty()) p.regionRelMse = regionRelMse(mean, reference, opt.regions);
+                p.error = computeError(mean, reference, leftOut);
+                if (!opt.regions.names.empty()) p.regionRelMse = regionRelMse(mean, reference, opt.regions, leftOut);
                 p.nan = stats.nan;
                 p.inf = stats.inf;
                 report.points.push_back(p);
@@ -83,6 +121,7 @@ ConvergenceReport runConvergence(const Scene& scene, const Image& reference, con
 
 std::string convergenceCsv(const std::string& sceneName, const ConvergenceReport& report) {
     std::ostringstream os;
+    for (const PointLightPixel& p : report.leftOut) os << "# " << describe(p) << "\n";
     os << "scene,algorithm,seed,spp,seconds,mse,relmse,relmse_trim,nan,inf\n";
     char line[512];
     for (const ConvergencePoint& p : report.points) {

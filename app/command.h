@@ -1,0 +1,72 @@
+// The program's commands register themselves the way integrators do (framework/integrator.h):
+// each command's file says, at namespace scope,
+//   PS_REGISTER_COMMAND(render, 10, "render SCENE [options]", "render a scene file", kUsage, true, run);
+// and main.cpp only looks the name up. `pathspace --help` and `pathspace help COMMAND` are built
+// from the same entries, so a new command is documented as soon as it exists.
+#pragma once
+#include <ostream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+#include "numbers.h"
+
+namespace ps {
+
+class Integrator;
+class Scene;
+
+struct Command {
+    std::string name;       // what the user types: pathspace NAME ...
+    int order = 0;          // place in `pathspace --help` (smaller first)
+    std::string synopsis;   // "render SCENE [options]"
+    std::string summary;    // one line: what it does
+    std::string usage;      // its options, one per line or two, ending in a newline
+    bool takesAlgorithms = false;   // its help lists the registered integrators
+    int (*run)(const std::vector<std::string>& args) = nullptr;   // exit status
+};
+
+// Adds a command; returns true. Use PS_REGISTER_COMMAND.
+bool registerCommand(const Command& command);
+// The commands, in `order`.
+std::vector<Command> commandList();
+// nullptr for a name no command has.
+const Command* findCommand(const std::string& name);
+
+#define PS_REGISTER_COMMAND(id, order, synopsis, summary, usage, takesAlgorithms, run) \
+    static const bool psCommand_##id =                                                 \
+        ::ps::registerCommand({#id, order, synopsis, summary, usage, takesAlgorithms, run})
+
+// A bad command line: main prints "pathspace: MESSAGE (run 'pathspace --help' for usage)" and
+// exits with status 2. (Bad input files throw InputError instead: status 1.)
+struct UsageError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+// The whole value of option opt as a number, else UsageError "option OPT needs a number, got 'S'".
+template <class T>
+T parseNumber(const std::string& opt, const std::string& s) {
+    T v{};
+    if (parseWhole(s, v) != std::errc()) throw UsageError("option " + opt + " needs a number, got '" + s + "'");
+    return v;
+}
+
+// stem("dir/a.scene") = "dir/a", baseName("dir/a.scene") = "a.scene", splitList("a,b,,c") = {a, b, c}.
+std::string stem(const std::string& path);
+std::string baseName(const std::string& path);
+std::vector<std::string> splitList(const std::string& s);
+
+// One line "pathspace: ALGO leaves out ..." on stderr per piece of work the integrator leaves
+// out on this scene (Integrator::leftOut).
+void printLeftOut(const std::string& algo, const Integrator& integrator, const Scene& scene);
+// "algorithms:" and one line per registered integrator: name and description.
+void listAlgorithms(std::ostream& os);
+// Whether standard error is a terminal (the default of --progress).
+bool stderrIsTerminal();
+
+// The whole help (`pathspace --help`): every command's synopsis and summary, then every
+// command's options, the algorithms and the exit status.
+std::string programHelp();
+// One command's help (`pathspace help NAME`, `pathspace NAME --help`).
+std::string commandHelp(const Command& command);
+
+}  // namespace ps

@@ -1,0 +1,177 @@
+// pathspace converge SCENE --algos A,B,... (--time SECONDS | --spp N) [options]: error against run
+// time of several algorithms (the report itself: app/report/converge.h).
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include "command.h"
+#include "errors.h"
+#include "image.h"
+#include "integrator.h"
+#include "report/converge.h"
+#include "scene_loader.h"
+
+namespace ps {
+namespace {
+
+const char* const kUsage = R"(converge options:
+  --algos A,B,...    the algorithms to compare (required)
+  --time SECONDS     time budget of each algorithm (and seed)
+  --spp N            samples per pixel of each algorithm (and seed): equal samples instead
+                     of equal time (with --time too: whichever comes first); one is required
+  --reference REF    the reference image (.pfm); without it one is rendered first with
+                     --ref-algo (default: the first algorithm) for --ref-time seconds
+                     (default: 10 x --time; required without --time) and written to
+                     DIR/reference.pfm
+  --regions M1,M2,...  also the relMSE of each region of the image: region Mk holds the pixels
+                     whose centre ray first hits a surface of material Mk (a 'material' name
+                     of the scene file); printed and written to DIR/regions.md
+  --seeds K          independent runs per algorithm, averaged in the plot and table (default 1)
+  --out DIR          where the report goes (default: converge-SCENE); it holds
+                     convergence.csv, convergence.svg (log-log relMSE against seconds with a
+                     slope -1 guide), efficiency.md, equal-time.png (the algorithms' images at
+                     the end of the budget, left to right in --algos order, then the reference)
+  --threads T, --maxdepth D, --no-prune, --progress/--no-progress   as for render
+A pixel in which a point light is seen directly is left out of every algorithm's error (a path
+tracer cannot sample that path: both ends are delta positions); the report says which.
+)";
+
+int runConverge(const std::vector<std::string>& args) {
+    std::string scenePath, reference, refAlgo, outDir;
+    std::vector<std::string> regionNames;
+    ConvergeOptions opt;
+    opt.seconds = 0.0;
+    opt.progress = stderrIsTerminal();
+    double refSeconds = 0.0;
+    int maxDepth = -1;
+    bool prune = true;
+    for (size_t i = 0; i < args.size(); ++i) {
+        const std::string& a = args[i];
+        auto value = [&]() -> std::string {
+            if (i + 1 >= args.size()) throw UsageError("option " + a + " needs a value");
+            return args[++i];
+        };
+        auto positive = [&](double v) {
+            if (!(v > 0.0) || !std::isfinite(v)) throw UsageError(a + " must be a positive number");
+            return v;
+        };
+        if (a == "--algos") opt.algos = splitList(value());
+        else if (a == "--time") opt.seconds = positive(parseNumber<double>(a, value()));
+        else if (a == "--spp") opt.spp = static_cast<int>(positive(parseNumber<int>(a, value())));
+        else if (a == "--regions") regionNames = splitList(value());
+        else if (a == "--reference") reference = value();
+        else if (a == "--ref-algo") refAlgo = value();
+        else if (a == "--ref-time") refSeconds = positive(parseNumber<double>(a, value()));
+        else if (a == "--seeds") opt.seeds = static_cast<int>(positive(parseNumber<int>(a, value())));
+        else if (a == "--threads") opt.threads = static_cast<int>(positive(parseNumber<int>(a, value())));
+        else if (a == "--maxdepth") { maxDepth = parseNumber<int>(a, value()); if (maxDepth < 0) throw UsageError("--maxdepth must not be negative"); }
+        else if (a == "--out") outDir = value();
+        else if (a == "--progress") opt.progress = true;
+        else if (a == "--no-progress") opt.progress = false;
+        else if (a == "--no-prune") prune = false;
+        else if (!a.empty() && a[0] == '-') throw UsageError("unknown option '" + a + "'");
+        else if (scenePath.empty()) scenePath = a;
+        else throw UsageError("more than one scene given ('" + scenePath + "' and '" + a + "')");
+    }
+    if (scenePath.empty()) throw UsageError("'converge' needs a scene file");
+    if (opt.algos.empty()) throw UsageError("'converge' needs --algos A,B,...");
+    if (opt.seconds == 0.0 && opt.spp == 0) throw UsageError("'converge' needs --time SECONDS or --spp N");
+    if (opt.seconds == 0.0 && reference.empty() && refSeconds == 0.0)
+        throw UsageError("'converge' without --time needs --reference REF or --ref-time SECONDS");
+    for (const std::string& a : opt.algos) makeIntegrator(a);   // unknown names fail now, not later
+    Scene scene = loadScene(scenePath);
+    if (maxDepth >= 0) scene.settings.maxDepth = maxDepth;
+    if (!regionNames.empty()) {
+        try {
+            opt.regions = materialRegions(scene, regionNames);
+        } catch (const InputError& e) {
+            throw InputError(scenePath, 0, e.what());
+        }
+    }
+    scene.settings.prune = prune;
+    for (const std::string& a : opt.algos) printLeftOut(a, *makeIntegrator(a), scene);
+    const std::vector<PointLightPixel> leftOut = pointLightsInView(scene);
+    for (const PointLightPixel& p : leftOut) std::cerr << "pathspace: " << describe(p) << "\n";
+    const std::string name = stem(baseName(scenePath));
+    if (outDir.empty()) outDir = "converge-" + name;
+    std::error_code ec;
+    std::filesystem::create_directories(outDir, ec);
+    if (!std::filesystem::is_directory(outDir, ec)) throw InputError(outDir, 0, "cannot create the output folder");
+
+    Image ref, refVariance;
+    if (!reference.empty()) {
+        ref = readImage(reference);
+        if (ref.width != scene.camera.width() || ref.height != scene.camera.height())
+            throw InputError(reference, 0, "reference size differs from the scene's resolution");
+    } else {
+        if (refAlgo.empty()) refAlgo = opt.algos[0];
+        auto integrator = makeIntegrator(refAlgo);
+        RenderOptions ro;
+        ro.seconds = refSeconds > 0.0 ? refSeconds : 10.0 * opt.seconds;
+        ro.seed = 1000003;   // independent of the compared runs (seeds 0 .. K-1)
+        ro.threads = opt.threads;
+        ro.progress = opt.progress;
+        std::cerr << "pathspace: rendering the reference with " << refAlgo << " for " << ro.seconds << " s\n";
+        const RenderResult r = render(scene, *integrator, ro);
+        ref = r.film.mean();
+        refVariance = r.film.varianceOfMean();
+        writePFM(outDir + "/reference.pfm", ref);
+        writePFM(outDir + "/reference-variance.pfm", refVariance);
+        std::cout << "pathspace: reference: " << summaryLine(r) << "\n";
+    }
+
+    const ConvergenceReport report = runConvergence(scene, ref, opt);
+    std::ofstream(outDir + "/convergence.csv") << convergenceCsv(name, report);
+    std::ofstream(outDir + "/convergence.svg")
+        << convergencePlotSvg(name + ": relMSE against render time (" + std::to_string(opt.seeds) + " seed(s))", report);
+    const std::string table = efficiencyTable(report);
+    std::ostringstream budget;
+    if (opt.seconds > 0.0) budget << opt.seconds << " s";
+    if (opt.spp > 0) budget << (opt.seconds > 0.0 ? " or " : "") << opt.spp << " spp";
+    std::ofstream md(outDir + "/efficiency.md");
+    md << "Efficiency on " << name << " at " << budget.str() << " per algorithm (relMSE with eps = 0.01):\n\n" << table;
+    if (!report.leftOut.empty()) md << "\n";
+    for (const PointLightPixel& p : report.leftOut) md << "Note: " << describe(p) << ".\n";
+    md.close();
+    std::vector<Image> images = report.finalImages;
+    images.push_back(ref);
+    const Image strip = sideBySide(images);
+    writePNG(outDir + "/equal-time.png", strip);
+    writePFM(outDir + "/equal-time.pfm", strip);
+    std::cout << table;
+    if (!regionNames.empty()) {
+        const std::string regions = regionTable(report, opt.regions);
+        std::ofstream(outDir + "/regions.md") << "relMSE (eps = 0.01) of each region of " << name
+                                              << " (the pixels that see each material) at the end of the run:\n\n"
+                                              << regions;
+        std::cout << "\n" << regions;
+    }
+    // A reference must be much better than what it judges (../shared/notes/testing.md).
+    if (!refVariance.pixels.empty()) {
+        const std::vector<bool> mask = leftOutMask(scene, report.leftOut);
+        double var = 0.0, count = 0.0, smallest = 1e300;
+        for (size_t i = 0; i < refVariance.pixels.size(); ++i) {
+            if (i < mask.size() && mask[i]) continue;
+            const auto& c = refVariance.pixels[i];
+            var += (double(c.r) + c.g + c.b) / 3.0;
+            count += 1.0;
+        }
+        var /= std::max(count, 1.0);
+        for (const auto& p : report.points) smallest = std::min(smallest, p.error.mse);
+        if (smallest > 0.0 && var > 0.03 * smallest)
+            std::cerr << "pathspace: warning: the reference's own variance (" << var << ") is more than 3 % of the "
+                      << "smallest MSE reported (" << smallest << "): give it more time (--ref-time)\n";
+    }
+    std::cout << "pathspace: wrote " << outDir << "/{convergence.csv,convergence.svg,efficiency.md,equal-time.png"
+              << (regionNames.empty() ? "" : ",regions.md") << "}\n";
+    return 0;
+}
+
+}  // namespace
+
+PS_REGISTER_COMMAND(converge, 20, "converge SCENE --algos A,B,... (--time SECONDS | --spp N) [options]",
+                    "error against run time of several algorithms", kUsage, true, runConverge);
+
+}  // namespace ps

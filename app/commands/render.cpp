@@ -1,0 +1,133 @@
+// pathspace render SCENE [options]: one image with one integrator, progressively (framework/render.h).
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include "command.h"
+#include "errors.h"
+#include "image.h"
+#include "integrator.h"
+#include "render.h"
+#include "scene_loader.h"
+
+namespace ps {
+namespace {
+
+const char* const kUsage = R"(render options:
+  --algo NAME        integrator (default: the scene's 'render algo', else eyelight)
+  --spp N            iterations (samples per pixel) to render (default: the scene's)
+  --time SECONDS     stop after this much render time instead (with --spp: whichever first)
+  --maxdepth D       maximum number of bounces, 0 = emission seen directly (default: the scene's)
+  --seed S           random seed (default 0); the same seed gives the same image
+  --threads T        worker threads (default: all cores); the image does not depend on it
+  --out FILE         output image, .png, .pfm or .hdr (default: SCENE's name + .png);
+                     a .pfm with the exact values is always written next to a .png or .hdr
+  --variance FILE    also write the per-pixel variance of the mean as a .pfm
+  --reference REF    a reference image (.pfm or .hdr): log error against run time
+  --csv FILE         where that log goes (default: the output's name + .csv)
+  --no-prune         do not leave out work the scene cannot use (integrators print what
+                     they leave out; pruning is exact, this switch is there to check it)
+  --progress / --no-progress   progress bar on stderr (default: when stderr is a terminal)
+)";
+
+int runRender(const std::vector<std::string>& args) {
+    std::string scenePath, algo, out, reference, csvPath, variancePath;
+    int spp = 0, threads = 0, maxDepth = -1;
+    double seconds = 0.0;
+    uint64_t seed = 0;
+    bool progress = stderrIsTerminal(), prune = true;
+    for (size_t i = 0; i < args.size(); ++i) {
+        const std::string& a = args[i];
+        auto value = [&]() -> std::string {
+            if (i + 1 >= args.size()) throw UsageError("option " + a + " needs a value");
+            return args[++i];
+        };
+        if (a == "--algo") algo = value();
+        else if (a == "--spp") { spp = parseNumber<int>(a, value()); if (spp < 1) throw UsageError("--spp must be at least 1"); }
+        else if (a == "--time") {
+            seconds = parseNumber<double>(a, value());
+            if (!(seconds > 0.0) || !std::isfinite(seconds)) throw UsageError("--time must be a positive number of seconds");
+        }
+        else if (a == "--maxdepth") { maxDepth = parseNumber<int>(a, value()); if (maxDepth < 0) throw UsageError("--maxdepth must not be negative"); }
+        else if (a == "--seed") seed = parseNumber<uint64_t>(a, value());
+        else if (a == "--threads") { threads = parseNumber<int>(a, value()); if (threads < 1) throw UsageError("--threads must be at least 1"); }
+        else if (a == "--out") out = value();
+        else if (a == "--reference") reference = value();
+        else if (a == "--csv") csvPath = value();
+        else if (a == "--variance") variancePath = value();
+        else if (a == "--progress") progress = true;
+        else if (a == "--no-progress") progress = false;
+        else if (a == "--no-prune") prune = false;
+        else if (!a.empty() && a[0] == '-') throw UsageError("unknown option '" + a + "'");
+        else if (scenePath.empty()) scenePath = a;
+        else throw UsageError("more than one scene given ('" + scenePath + "' and '" + a + "')");
+    }
+    if (scenePath.empty()) throw UsageError("'render' needs a scene file");
+
+    Scene scene = loadScene(scenePath);
+    if (maxDepth >= 0) scene.settings.maxDepth = maxDepth;
+    scene.settings.prune = prune;
+    std::unique_ptr<Integrator> integrator;
+    if (algo.empty()) {
+        algo = scene.settings.algo;
+        try {
+            integrator = makeIntegrator(algo);
+        } catch (const InputError& e) {   // name the scene line that asked for it
+            throw InputError(scenePath, scene.settings.algoLine, e.what());
+        }
+    } else {
+        integrator = makeIntegrator(algo);
+    }
+    if (spp == 0 && seconds == 0.0) spp = scene.settings.spp;
+    if (out.empty()) out = stem(baseName(scenePath)) + ".png";
+
+    Image ref;
+    std::ofstream csv;
+    RenderOptions opt;
+    opt.spp = spp;
+    opt.seconds = seconds;
+    opt.seed = seed;
+    opt.threads = threads;
+    opt.progress = progress;
+    if (!reference.empty()) {
+        ref = readImage(reference);
+        if (ref.width != scene.camera.width() || ref.height != scene.camera.height())
+            throw InputError(reference, 0, "reference is " + std::to_string(ref.width) + "x" +
+                                               std::to_string(ref.height) + " but the scene renders " +
+                                               std::to_string(scene.camera.width()) + "x" +
+                                               std::to_string(scene.camera.height()));
+        if (csvPath.empty()) csvPath = stem(out) + ".csv";
+        csv.open(csvPath);
+        if (!csv) throw InputError(csvPath, 0, "cannot open for writing");
+        opt.reference = &ref;
+        opt.csv = &csv;
+    }
+    std::cerr << "pathspace: " << scenePath << " (" << scene.caps.describe() << "), algo " << algo << "\n";
+    printLeftOut(algo, *integrator, scene);
+
+    const RenderResult res = ps::render(scene, *integrator, opt);
+    const Image img = res.film.mean();
+    writeImage(out, img);
+    std::string written = out;
+    if (stem(out) + ".pfm" != out) {
+        writePFM(stem(out) + ".pfm", img);
+        written += ", " + stem(out) + ".pfm";
+    }
+    if (!variancePath.empty()) {
+        writePFM(variancePath, res.film.varianceOfMean());
+        written += ", " + variancePath;
+    }
+    if (opt.csv) written += ", " + csvPath;
+    std::cout << "pathspace: " << summaryLine(res) << "; wrote " << written << "\n";
+    if (res.stats.bad() > 0)
+        std::cerr << "pathspace: warning: " << res.stats.bad()
+                  << " samples were NaN or Inf; they were left out of the image (see the counts above)\n";
+    return 0;
+}
+
+}  // namespace
+
+PS_REGISTER_COMMAND(render, 10, "render SCENE [options]", "render a scene file (see scenes/README.md)", kUsage, true,
+                    runRender);
+
+}  // namespace ps
