@@ -54,9 +54,9 @@ fi
 export CHROME_PATH
 # Never let puppeteer fetch a browser of its own (marp-cli only uses puppeteer-core, this is a guard).
 export PUPPETEER_SKIP_DOWNLOAD=1 PUPPETEER_SKIP_CHROMIUM_DOWNLOAD=1
-marp="$src/slides/node_modules/.bin/marp"
+marp() { "$src/slides/node_modules/.bin/marp" --config-file "$src/slides/.marprc.yml" "$@"; }
 stamp="$src/slides/node_modules/.package-lock.json"
-if [ ! -x "$marp" ] || [ "$src/slides/package-lock.json" -nt "$stamp" ]; then
+if [ ! -x "$src/slides/node_modules/.bin/marp" ] || [ "$src/slides/package-lock.json" -nt "$stamp" ]; then
   echo "slides: npm ci (slides/package-lock.json)" >&2
   (cd "$src/slides" && npm ci --no-audit --no-fund --loglevel=error >/dev/null)
 fi
@@ -88,9 +88,9 @@ t0=$SECONDS
 if [ "$checkonly" = 0 ]; then
   mkdir -p "$out/figures"
   cp -R "$work/figures/." "$out/figures/"
-  "$marp" --no-stdin --quiet --input-dir "$work/md" --output "$out" 2>/dev/null
+  marp --no-stdin --quiet --input-dir "$work/md" --output "$out" 2>/dev/null
   if [ "$pdf" = 1 ]; then
-    "$marp" --no-stdin --quiet --allow-local-files --pdf --input-dir "$work/md" --output "$out" 2>/dev/null
+    marp --no-stdin --quiet --allow-local-files --pdf --input-dir "$work/md" --output "$out" 2>/dev/null
   fi
 fi
 
@@ -99,7 +99,7 @@ fi
 # section's scrollHeight (content + bottom padding) or scrollWidth larger than the section. The
 # bare template shows every slide at once; one page loads every deck in an iframe, measures every
 # section and writes the numbers into its DOM, which headless chromium prints (one browser start).
-"$marp" --no-stdin --quiet --template bare --input-dir "$work/md" --output "$work/check" 2>/dev/null
+marp --no-stdin --quiet --template bare --input-dir "$work/md" --output "$work/check" 2>/dev/null
 {
   for d in "${decks[@]}"; do echo "<iframe src=\"$d.html\" title=\"$d\" width=\"1280\" height=\"720\"></iframe>"; done
   cat <<'EOF'
