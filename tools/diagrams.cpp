@@ -1,5 +1,5 @@
 // diagrams: the figures a lecturer draws on the board, one or more per lesson, written as SVG by code
-// (labelled, viewBox-based, text at least 16 units high). scripts/figures.sh runs it; the lesson READMEs
+// (labelled, viewBox-based, text at least 18 units high, about 15 px in a slide). scripts/figures.sh runs it; the lesson READMEs
 // and slides show the SVGs it writes into lessons/NN-name/.
 //
 //   diagrams [LESSONS_DIR]     writes LESSONS_DIR/NN-name/*.svg (default: lessons; folders are created)
@@ -297,14 +297,14 @@ void box(Svg& s, double l, double t, double r, double b, double lightL, double l
 Svg neePath() {
     Svg s(1000, 565);
     box(s, 150, 40, 950, 440, 400, 560, true);
-    s.polygon({{520, 440}, {640, 440}, {640, 370}, {520, 370}}, "#dddddd", kInk, 1, 2);  // a block
+    s.polygon({{520, 440}, {660, 440}, {660, 370}, {520, 370}}, "#dddddd", kInk, 1, 2);  // a block
     P eye{40, 250}, x1{300, 440}, x2{950, 160}, x3{680, 440};
     s.circle(eye, 10, kCamera);
     s.text(eye + P{0, -22}, "camera", "middle", 18, kCamera);
     s.arrow(eye, x1, kInk, 3);
     s.arrow(x1, x2, kInk, 3);
     s.arrow(x2, x3, kInk, 3);
-    s.arrow(x3, lerp(x3, {560, 150}, 0.6), kInk, 3);
+    s.arrow(x3, lerp(x3, {760, 170}, 0.6), kInk, 3);
     P y1{540, 40}, y2{470, 40}, y3{420, 40};
     s.line(x1, y1, kLight, 2.5, "10 7");
     s.line(x2, y2, kLight, 2.5, "10 7");
@@ -326,8 +326,8 @@ Svg neePath() {
     s.line({480, 490}, {530, 490}, kLight, 2.5, "10 7");
     s.text({540, 497}, "shadow ray to a sampled light point (NEE)", "start", 18);
     s.text({40, 528}, "every vertex adds L_e f G V / p_{light}; a BSDF ray that hits the light counts at depth 0 (pt-nee)",
-           "start", 17, kGrey);
-    s.text({40, 552}, "or with an MIS weight (pt)", "start", 17, kGrey);
+           "start", 18, kGrey);
+    s.text({40, 552}, "or with an MIS weight (pt)", "start", 18, kGrey);
     return s;
 }
 
@@ -370,7 +370,7 @@ Svg pinholeWe() {
     s.text(o + P{W / 2 + 8, -Hh + 4}, "1", "start", 18);
     s.text(o + P{W / 2 + 40, -Hh + 30}, "cos⁴θ", "start", 20, kCamera);
     s.text(o + P{W / 2, 28}, "position s on the image plane", "middle", 18);
-    s.text(o + P{W - 6, -50}, "0.09 at tan θ = 1.5", "end", 16, kGrey);
+    s.text(o + P{W - 6, -50}, "0.09 at tan θ = 1.5", "end", 18, kGrey);
     return s;
 }
 
