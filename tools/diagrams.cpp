@@ -163,20 +163,20 @@ void normal(Svg& s, P p, P n, const std::string& label = "") {
 // Lesson 0: a ray hits a triangle; the hit point's barycentric coordinates are area ratios.
 Svg rayTriangle() {
     Svg s(960, 530);
-    P v0{420, 380}, v1{860, 390}, v2{660, 50};
-    double u = 0.32, v = 0.36;
-    P p = (1 - u - v) * v0 + u * v1 + v * v2;
-    s.polygon({p, v2, v0}, "#f4c27a", "none", 0.6);  // opposite v1: weight u
-    s.polygon({p, v0, v1}, "#9cc3f0", "none", 0.6);  // opposite v2: weight v
-    s.polygon({p, v1, v2}, "#a7dcb9", "none", 0.6);  // opposite v0: weight 1 - u - v
-    s.polygon({v0, v1, v2}, "none", kInk, 1, 3);
-    for (P q : {v0, v1, v2}) s.line(p, q, kGrey, 1.5, "6 5");
-    s.text((1.0 / 3) * (p + v2 + v0) + P{-8, 8}, "u", "middle", 24, kInk, true);
-    s.text((1.0 / 3) * (p + v0 + v1) + P{0, 8}, "v", "middle", 24, kInk, true);
-    s.text((1.0 / 3) * (p + v1 + v2) + P{10, 8}, "1−u−v", "middle", 20, kInk, true);
-    s.text(v0 + P{-14, 24}, "v_0", "end", 22);
-    s.text(v1 + P{14, 24}, "v_1", "start", 22);
-    s.text(v2 + P{0, -16}, "v_2", "middle", 22);
+    P p0{420, 380}, p1{860, 390}, p2{660, 50};  // the names of lessons/00 README, section 3
+    double b1 = 0.32, b2 = 0.36;
+    P p = (1 - b1 - b2) * p0 + b1 * p1 + b2 * p2;
+    s.polygon({p, p2, p0}, "#f4c27a", "none", 0.6);  // opposite p1: b1
+    s.polygon({p, p0, p1}, "#9cc3f0", "none", 0.6);  // opposite p2: b2
+    s.polygon({p, p1, p2}, "#a7dcb9", "none", 0.6);  // opposite p0: b0
+    s.polygon({p0, p1, p2}, "none", kInk, 1, 3);
+    for (P q : {p0, p1, p2}) s.line(p, q, kGrey, 1.5, "6 5");
+    s.text((1.0 / 3) * (p + p2 + p0) + P{-8, 8}, "b_1", "middle", 24, kInk, true);
+    s.text((1.0 / 3) * (p + p0 + p1) + P{0, 8}, "b_2", "middle", 24, kInk, true);
+    s.text((1.0 / 3) * (p + p1 + p2) + P{10, 8}, "b_0", "middle", 24, kInk, true);
+    s.text(p0 + P{-14, 24}, "p_0", "end", 22);
+    s.text(p1 + P{14, 24}, "p_1", "start", 22);
+    s.text(p2 + P{0, -16}, "p_2", "middle", 22);
     P o{70, 120};
     s.dot(o, kCamera);
     s.text(o + P{0, -18}, "o", "middle", 22, kCamera, true);
@@ -186,9 +186,9 @@ Svg rayTriangle() {
     s.text(lerp(o, p, 0.55) + P{10, -14}, "t", "middle", 22, kCamera, true);
     s.dot(p, kRed, 7);
     s.text(p + P{16, -8}, "p", "start", 22, kRed, true);
-    s.text({30, 450}, "p = o + t d = (1−u−v) v_0 + u v_1 + v v_2", "start", 20);
-    s.text({30, 480}, "hit ⇔ u ≥ 0, v ≥ 0, u + v ≤ 1 and 0 < t < t_{max}", "start", 20);
-    s.text({30, 515}, "each weight = area of the sub-triangle opposite its vertex / area of the triangle", "start", 18,
+    s.text({30, 450}, "p = o + t d = b_0 p_0 + b_1 p_1 + b_2 p_2,   b_0 = 1 − b_1 − b_2", "start", 20);
+    s.text({30, 480}, "hit ⇔ b_0 ≥ 0, b_1 ≥ 0, b_2 ≥ 0 and 0 < t < t_{max}", "start", 20);
+    s.text({30, 515}, "b_i = area of the sub-triangle opposite p_i / area of the triangle", "start", 18,
            kGrey);
     return s;
 }
@@ -315,7 +315,7 @@ Svg neePath() {
     s.line(hit + P{-10, -10}, hit + P{10, 10}, kRed, 4);
     s.line(hit + P{-10, 10}, hit + P{10, -10}, kRed, 4);
     s.text(hit + P{-20, -22}, "blocked: adds 0", "end", 18, kRed);
-    int i = 1;
+    int i = 0;  // x_0 is the camera ray's hit, as in (3.6)
     for (P x : {x1, x2, x3}) {
         s.dot(x, kInk, 7);
         s.text(x + (x.x > 900 ? P{-18, 34} : P{-16, 32}), "x_" + std::to_string(i++), "middle", 22, kInk, true);
