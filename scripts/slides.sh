@@ -149,7 +149,7 @@ if [ "$bad" != 0 ]; then
   echo "slides: some slides overflow (split, shorten, or make the math smaller)" >&2; exit 1
 fi
 if [ "$checkonly" = 1 ]; then
-  echo "slides: ${#decks[@]} decks ($nslides slides) checked, no slide overflows ($((SECONDS - t0)) s)"
+  echo "slides: ${#decks[@]} deck(s), $nslides slides checked, no slide overflows ($((SECONDS - t0)) s)"
 else
-  echo "slides: ${#decks[@]} decks in $out ($([ "$pdf" = 1 ] && echo 'HTML + PDF' || echo HTML)), no slide overflows ($((SECONDS - t0)) s)"
+  echo "slides: ${#decks[@]} deck(s) in $out ($([ "$pdf" = 1 ] && echo 'HTML + PDF' || echo HTML)), no slide overflows ($((SECONDS - t0)) s)"
 fi
