@@ -49,6 +49,7 @@ reference() { local r="$work/ref-$RANDOM.pfm"; "$ps" render "$3" --algo "$1" --t
 converge() { local s="$1" r="$2" o="$3"; shift 3; "$ps" converge "$s" --reference "$r" --out "$o" --no-progress "$@" > "$o.log"; }
 n=0
 done_fig() { n=$((n + 1)); echo "figures: wrote $1"; }
+cmake --build "$build" --target diagrams >/dev/null && "$build/diagrams" "${out:-$src/lessons}"  # blackboard SVGs, every lesson
 
 # Lesson 2: Veach's plates, 16 spp of each estimator and the reference (lessons/02 README, section 5).
 if wanted 02; then
