@@ -5,6 +5,8 @@
 #   bash scripts/mutants.sh [NN ...]         (default: every tests/mutants/NN.txt)
 #   MUTANTS_DIR=DIR   scratch folder (default build/mutants; the copy and its build live there)
 #   MUTANTS_JOBS=N    ctest/cmake parallelism (default 2)
+#   MUTANTS_FULL=1    run all of the lesson's graded tests for each mutant and list every one that
+#                     fails (default: stop at the first failure, which is enough to catch it)
 # The repository is never modified: the mutants are applied to DIR/submission, a copy of
 # solutions/, built as a submission (-DPATHSPACE_STUDENT=all -DPATHSPACE_ASSIGNMENTS_DIR=...),
 # incrementally (one object file and the lesson's test program per mutant).
@@ -67,6 +69,8 @@ if [ ! -f "$bld/CMakeCache.txt" ]; then
         { echo "mutants: configure failed, see $scratch/configure.log" >&2; exit 1; }
 fi
 
+stop="--stop-on-failure"
+[ "${MUTANTS_FULL:-0}" = 1 ] && stop=""
 status=0
 summary=()
 for NN in "${lessons[@]}"; do
@@ -96,9 +100,9 @@ for NN in "${lessons[@]}"; do
         elif ! cmake --build "$bld" -j"$jobs" --target "$target" > "$scratch/mutant-$id.log" 2>&1; then
             result="NOBUILD"; failed="does not compile: $scratch/mutant-$id.log"
         else
-            (cd "$bld" && ctest -L "lesson-$NN\$" -j"$jobs" --timeout 120 > "$scratch/mutant-$id.log" 2>&1)
-            failed=$(sed -n '/tests FAILED:/,$ s/^[[:space:]]*[0-9]* - \(.*\) ([^()]*)$/\1/p' \
-                "$scratch/mutant-$id.log" | sed 's/ \[[0-9]* pts*\]$//' | paste -sd ';' -)
+            (cd "$bld" && ctest -L "lesson-$NN\$" -j"$jobs" --timeout 120 $stop > "$scratch/mutant-$id.log" 2>&1)
+            failed=$(grep -v '(Not Run)$' "$scratch/mutant-$id.log" | sed -n '/tests FAILED:/,$ s/^[[:space:]]*[0-9]* - \(.*\) ([^()]*)$/\1/p' \
+                | sed 's/ \[[0-9]* pts*\]$//' | paste -sd ';' -)
             if [ -n "$failed" ]; then result="yes"; caught=$((caught + 1)); else result="no"; fi
         fi
         restore
