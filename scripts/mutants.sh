@@ -5,6 +5,7 @@
 #   bash scripts/mutants.sh [NN ...]         (default: every tests/mutants/NN.txt)
 #   MUTANTS_DIR=DIR   scratch folder (default build/mutants; the copy and its build live there)
 #   MUTANTS_JOBS=N    ctest/cmake parallelism (default 2)
+#   MUTANTS_ONLY="ID ..."  run only these mutants (e.g. "02-h 02-k")
 #   MUTANTS_FULL=1    run all of the lesson's graded tests for each mutant and list every one that
 #                     fails (default: stop at the first failure, which is enough to catch it)
 # The repository is never modified: the mutants are applied to DIR/submission, a copy of
@@ -117,7 +118,8 @@ for NN in "${lessons[@]}"; do
             "@ "*) read -r _ id file <<< "$line"; desc=""; orig="" ;;
             ": "*) desc="${line#: }" ;;
             "- "*) orig="${line#- }" ;;
-            "+ "* | "+") repl="${line#+}"; repl="${repl# }"; run_one ;;
+            "+ "* | "+") repl="${line#+}"; repl="${repl# }"
+                         if [ -z "${MUTANTS_ONLY:-}" ] || [[ " $MUTANTS_ONLY " == *" $id "* ]]; then run_one; fi ;;
         esac
     done < "$cat"
     summary+=("$(printf 'lesson %s: %d mutants, %d caught' "$NN" "$total" "$caught")")
