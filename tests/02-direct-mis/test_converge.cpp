@@ -5,6 +5,7 @@
 // 3072 pixel channels at the Sidak level of alpha() over the channels, and at least 99.75 % of
 // them must pass.
 #include "lesson02.h"
+#include "seed.h"
 
 using namespace lesson02;
 
@@ -15,7 +16,7 @@ constexpr int kSpp = 8192;   // a few thousand samples: every estimator's pixel 
 void checkConverges(const std::string& algo, uint64_t seed) {
     const ps::Scene scene = ps::loadScene(sourcePath("tests/02-direct-mis/data/plates-moderate.scene"));
     const ps::Image ref = readData("plates-moderate.pfm"), refVar = readData("plates-moderate-variance.pfm");
-    const Render r = render(scene, algo, kSpp, seed);
+    const Render r = render(scene, algo, kSpp, ps::testseed::seed(seed));
     LESSON02_CHECK_FINITE(r);
     const ps::stats::ZTestResult z = ps::stats::zTestImages(r.mean, r.variance, ref, refVar, alpha());
     CHECK_MESSAGE(z.passed, algo << " on the moderate plates (32 x 32, " << kSpp << " spp, seed " << seed

@@ -3,6 +3,7 @@
 // lights (Eq. 2.13): t-tests at level alpha() (lesson02.h) with a power check.
 #include <cmath>
 #include "lesson02.h"
+#include "seed.h"
 
 using namespace lesson02;
 
@@ -68,7 +69,7 @@ Samples sampleLi(const ps::Scene& scene, const std::string& algo, const Vec3& x,
     Samples s;
     const ps::Ray ray = rayTo(x);
     for (int i = 0; i < n; ++i) {
-        ps::Rng rng = ps::taskRng(seed, 0, uint32_t(i));
+        ps::Rng rng = ps::taskRng(ps::testseed::seed(seed), 0, uint32_t(i));
         const Color c = pixel->Li(scene, ray, rng);
         if (!ps::isFinite(c)) { ++s.bad; continue; }
         s.w.add(sum(c));
@@ -134,7 +135,7 @@ TEST_CASE("direct: light and BSDF samples carry f Le cos / pdf and the pdfs of b
     ps::SurfacePoint sp;
     REQUIRE(scene.intersect(r, sp));
     const Vec3 wo = -camera.d;
-    ps::Rng rng(25);
+    ps::Rng rng(ps::testseed::seed(25));
     int failures = 0, checked[2] = {0, 0};
     for (int technique = 0; technique < 2; ++technique)
         for (int i = 0; i < 2000; ++i) {
@@ -198,7 +199,7 @@ TEST_CASE("direct: multi-sample and one-sample MIS weight each sample by the heu
     // data/plates-moderate.scene, where both techniques often reach the same light.
     const ps::Scene scene = ps::loadScene(sourcePath("tests/02-direct-mis/data/plates-moderate.scene"));
     const float c = ps::kOneSampleLightProbability;
-    ps::Rng rng(26);
+    ps::Rng rng(ps::testseed::seed(26));
     const ps::Heuristic heuristics[] = {ps::Heuristic::Balance, ps::Heuristic::Power, ps::Heuristic::Maximum};
     const char* names[] = {"balance", "power", "maximum"};
     int failures = 0, both = 0;

@@ -4,6 +4,7 @@
 // section 4 has the command). Per-pixel z-test at level alpha() (lesson03.h): each of the 3072
 // pixel channels at the Sidak level of alpha() over the channels, at least 99.75 % must pass.
 #include "lesson03.h"
+#include "seed.h"
 
 using namespace lesson03;
 
@@ -13,7 +14,7 @@ void checkCornell(const std::string& algo, int spp, uint64_t seed) {
     const ps::Scene scene = loadSceneAt("scenes/cornell-box.scene", 32, 32);
     const ps::Image ref = ps::readPFM(sourcePath("tests/03-path-tracing/data/cornell-box-32.pfm"));
     const ps::Image refVar = ps::readPFM(sourcePath("tests/03-path-tracing/data/cornell-box-32-variance.pfm"));
-    const Render r = render(scene, algo, spp, seed);
+    const Render r = render(scene, algo, spp, ps::testseed::seed(seed));
     CHECK_MESSAGE(r.stats.bad() == 0, algo << " on the Cornell box: expected 0 NaN and 0 Inf samples, got " << r.stats.nan
                                            << " NaN and " << r.stats.inf << " Inf");
     const ps::stats::ZTestResult z = ps::stats::zTestImages(r.mean, r.variance, ref, refVar, alpha());
@@ -47,7 +48,7 @@ TEST_CASE("path tracing: no NaN or Inf in any scene of scenes/ [1 pt]") {
                              "mesh-example"}) {
         const ps::Scene scene = loadSceneAt("scenes/" + file + ".scene", 16, 16);
         for (const std::string algo : {"pt-bsdf", "pt-nee", "pt"}) {
-            const Render r = render(scene, algo, 16, 511);
+            const Render r = render(scene, algo, 16, ps::testseed::seed(511));
             double total = 0.0;
             for (const Color& c : r.mean.pixels) total += sum(c);
             const bool lit = algo != "pt-bsdf";

@@ -6,6 +6,7 @@
 // right only if every particle is divided by the probability of its light.
 // t-tests at level alpha() (lesson04.h) with a power check (standard error <= 0.5 % of the flux).
 #include "lesson04.h"
+#include "seed.h"
 
 using namespace lesson04;
 
@@ -24,7 +25,7 @@ FluxResult measureFlux(const ps::Scene& scene, int n, uint64_t seed) {
     const ps::Region S = ps::regionWithMaterial(scene, "sensor");
     FluxResult r;
     for (int i = 0; i < n; ++i) {
-        ps::Rng rng = ps::taskRng(seed, 0, uint32_t(i));
+        ps::Rng rng = ps::taskRng(ps::testseed::seed(seed), 0, uint32_t(i));
         const Color c = ps::fluxParticle(scene, S, rng);
         if (!ps::isFinite(c)) { ++r.bad; continue; }
         r.w.add(sum(c));

@@ -5,6 +5,7 @@
 // cornell-box-32.pfm and its variance: 262144 spp of pt, lessons/03-path-tracing/README.md has
 // the command). The radiance along the sampled directions comes from lesson 3's LiMIS.
 #include "lesson04.h"
+#include "seed.h"
 
 using namespace lesson04;
 
@@ -31,7 +32,7 @@ void checkPixel(int px, int py, int n, uint64_t seed) {
     ps::stats::Welford w;
     int bad = 0, inside = 0;
     for (int i = 0; i < n; ++i) {
-        ps::Rng rng = ps::taskRng(seed, 0, uint32_t(i));
+        ps::Rng rng = ps::taskRng(ps::testseed::seed(seed), 0, uint32_t(i));
         const double u1 = rng.uniformDouble(), u2 = rng.uniformDouble();
         const Vec3 dir(sampleCone(u1, u2, oneMinusCosMax, axis));
         const Color s = ps::pixelMeasurementSample(scene, px, py, dir, float(pdf), rng, scene.settings.maxDepth);

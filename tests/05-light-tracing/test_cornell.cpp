@@ -7,6 +7,7 @@
 // (lesson05.h): each pixel channel at the Sidak level of alpha() over the channels, at least
 // 99.75 % must pass.
 #include "lesson05.h"
+#include "seed.h"
 
 using namespace lesson05;
 
@@ -16,7 +17,7 @@ constexpr int kIterations = 2000;   // of 1024 light paths each
 constexpr uint64_t kSeed = 5101;
 
 const Render& cornellLT() {
-    static const Render r = render(loadSceneAt("scenes/cornell-box.scene", 32, 32), "lt", kIterations, kSeed);
+    static const Render r = render(loadSceneAt("scenes/cornell-box.scene", 32, 32), "lt", kIterations, ps::testseed::seed(kSeed));
     return r;
 }
 ps::Image reference() { return ps::readPFM(sourcePath("tests/03-path-tracing/data/cornell-box-32.pfm")); }

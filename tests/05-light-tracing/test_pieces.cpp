@@ -2,6 +2,7 @@
 // (Eq. 5.2), the connection to the camera (Eq. 5.5), the adjoint BSDF (Eq. 5.6-5.8), and an
 // image that does not depend on the number of threads.
 #include "lesson05.h"
+#include "seed.h"
 
 using namespace lesson05;
 
@@ -24,7 +25,7 @@ TEST_CASE("light tracing: the particle leaving a light carries Le |cos| / (P p_A
     const ps::Scene scene = ps::parseScene(kTwoLights, "two lights (test_pieces.cpp)");
     int checked[2] = {0, 0};
     for (int i = 0; i < 64; ++i) {
-        ps::Rng rng = ps::taskRng(5501, 0, uint32_t(i));
+        ps::Rng rng = ps::taskRng(ps::testseed::seed(5501), 0, uint32_t(i));
         const float uLight = rng.uniform();
         const Vec2 uPos = rng.uniform2(), uDir = rng.uniform2();
         const ps::LightPathStart s = ps::startLightPath(scene, uLight, uPos, uDir);
@@ -147,7 +148,7 @@ TEST_CASE("light tracing: the adjoint BSDF keeps a particle's power through glas
     int bad = 0;
     for (const ps::Material* m : {&diffuse, &phong})
         for (int i = 0; i < 200; ++i) {
-            ps::Rng rng = ps::taskRng(5601, 0, uint32_t(i));
+            ps::Rng rng = ps::taskRng(ps::testseed::seed(5601), 0, uint32_t(i));
             const Vec3 wLight = ps::sampleUniformSphere(rng.uniform2());
             const Vec2 u = rng.uniform2();
             ps::BSDFSample s;
@@ -182,7 +183,7 @@ TEST_CASE("light tracing: the image does not depend on the number of threads [1 
     // Light paths splat all over the image; through the SplatBuffer the sum is the same, in the
     // same order, whatever thread traced a path: 1 and 2 threads give identical bits.
     const ps::Scene scene = loadSceneAt("scenes/cornell-box.scene", 16, 16);
-    const Render one = render(scene, "lt", 6, 5701, 1), two = render(scene, "lt", 6, 5701, 2);
+    const Render one = render(scene, "lt", 6, ps::testseed::seed(5701), 1), two = render(scene, "lt", 6, ps::testseed::seed(5701), 2);
     size_t differ = 0;
     for (size_t i = 0; i < one.mean.pixels.size(); ++i) differ += one.mean.pixels[i] != two.mean.pixels[i];
     CHECK_MESSAGE(total(one.mean) > 0.0, "lt on the Cornell box (16 x 16, 6 iterations): expected an image that is not black");

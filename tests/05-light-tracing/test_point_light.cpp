@@ -5,6 +5,7 @@
 // are its iterations (each an independent estimate of the whole image): t-test of the mean over
 // the 16 x 16 pixels, at level alpha() (lesson05.h), standard error <= 0.5 % of L.
 #include "lesson05.h"
+#include "seed.h"
 
 using namespace lesson05;
 
@@ -26,7 +27,7 @@ TEST_CASE("light tracing: a point light in a sphere gives the analytic radiance 
         ps::Image it(16, 16);
         for (int k = 0; k < kIterations; ++k) {
             std::fill(it.pixels.begin(), it.pixels.end(), Color(0.0f));
-            lt->renderIteration(scene, uint32_t(k), seed, it, stats);
+            lt->renderIteration(scene, uint32_t(k), ps::testseed::seed(seed), it, stats);
             w.add(total(it) / (3.0 * 256.0));
         }
         ++seed;

@@ -14,6 +14,7 @@
 // variances; the commands are in lessons/05-light-tracing/README.md section 4. z-tests at level
 // alpha() (lesson05.h).
 #include "lesson05.h"
+#include "seed.h"
 
 using namespace lesson05;
 
@@ -54,7 +55,7 @@ TEST_CASE("light tracing: glass and mirror spheres seen directly are black, the 
     const ps::Image ref = ps::readPFM(sourcePath("tests/05-light-tracing/data/cornell-spheres-32.pfm"));
     const ps::Image refVar = ps::readPFM(sourcePath("tests/05-light-tracing/data/cornell-spheres-32-variance.pfm"));
     constexpr int kIterations = 1500;
-    const Render r = render(scene, "lt", kIterations, 5201);
+    const Render r = render(scene, "lt", kIterations, ps::testseed::seed(5201));
     CHECK_MESSAGE(r.stats.bad() == 0, "lt on cornell-spheres: expected 0 NaN and 0 Inf samples, got " << r.stats.nan << " NaN and "
                                                                                                      << r.stats.inf << " Inf");
     const SpecularCoverage cov = specularCoverage(scene);
@@ -106,7 +107,7 @@ TEST_CASE("light tracing: a lamp inside a glass globe: the power of particles le
     const ps::Image ref = ps::readPFM(sourcePath("tests/05-light-tracing/data/glass-lamp-8.pfm"));
     const ps::Image refVar = ps::readPFM(sourcePath("tests/05-light-tracing/data/glass-lamp-8-variance.pfm"));
     constexpr int kIterations = 4000;
-    const Render r = render(scene, "lt", kIterations, 5301);
+    const Render r = render(scene, "lt", kIterations, ps::testseed::seed(5301));
     CHECK_MESSAGE(r.stats.bad() == 0, "lt on glass-lamp: expected 0 NaN and 0 Inf samples, got " << r.stats.nan << " NaN and "
                                                                                                  << r.stats.inf << " Inf");
     const double ratio = total(r.mean) / total(ref);
