@@ -8,8 +8,8 @@ namespace ps {
 double pdfTechnique(const Scene& scene, const Path& x, int s) {
     // TODO(06) Eq. 6.7-6.10: p_{s,t}(x) = p(light subpath x0 .. x_{s-1}) * p(camera subpath x_k .. x_s),
     //          each vertex's density converted to area at it (pdfSolidAngleToArea); the joining
-    //          edge is free. x0: P(l) times pdfLightArea (area), 1 (point), pdfBackgroundDirection
-    //          (background); x1 from x0 as sampleEmission (the background: 1 / (pi R^2) |cos|);
+    //          edge is free. x0 and x1 as startLightPath samples them: P(l) and pdfEmission's
+    //          pdfA, pdfW (the background's x0 is a direction: pdfW; its x1 the disk point: pdfA |cos|);
     //          then pdfBSDF, or deltaLobe's pdfLight / pdfCamera at a specular vertex (Eq. 6.11).
     //          Pitfalls: 0 for what cannot be sampled (Eq. 6.12: t < 1, s = 0 at a point light, a
     //          specular end of the joining edge, t = 1 with x_{k-1} the background); in double;

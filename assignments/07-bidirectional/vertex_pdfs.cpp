@@ -7,18 +7,17 @@
 namespace ps {
 
 float pdfLightOrigin(const Scene& scene, const PathVertex& v) {
-    // TODO(07) Eq. 7.3: the density of the light vertex itself, P(l) times the position's
-    //          density (area light: 1 / area; background: per unit solid angle; point light:
-    //          the delta's coefficient 1). Pitfall: forgetting P(l), and 0 if v is on no light.
+    // TODO(07) Eq. 7.3: the density of the light vertex itself, as startLightPath samples it:
+    //          P(l) times pdfEmission's pdfA (the background's vertex is a direction: its pdfW).
+    //          Pitfall: forgetting P(l); 0 if v is on no light.
     (void)scene; (void)v;
     return PS_TODO("lesson 07: pdfLightOrigin", 0.0f);
 }
 
 float pdfLightToward(const Scene& scene, const PathVertex& light, const PathVertex& to) {
-    // TODO(07) Eq. 7.3: the area density at `to` of sampleEmission's direction (area light:
-    //          cosine, point light: uniform sphere, both through lesson 6's pdfSolidAngleToArea);
-    //          the background's parallel rays come from a disk: 1 / (pi R^2), R = scene.radius,
-    //          times |cos theta_to| on a surface. Pitfall: an area light emits nothing behind it.
+    // TODO(07) Eq. 7.3: the area density at `to` of sampleEmission's direction: pdfEmission's
+    //          pdfW through lesson 6's pdfSolidAngleToArea; the background's parallel rays come from
+    //          a disk: its pdfA times |cos theta_to| on a surface. Pitfall: 0 on no light.
     (void)scene; (void)light; (void)to;
     return PS_TODO("lesson 07: pdfLightToward", 0.0f);
 }

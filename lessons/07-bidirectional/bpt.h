@@ -35,15 +35,16 @@ using Subpath = std::vector<PathVertex>;
 
 // ---- vertex pdfs (vertex_pdfs.cpp), one function for sampling and for MIS (Eq. 7.3) ----
 
-// Density of choosing the light vertex v itself (Eq. 7.3): P(l) / area for an area light,
-// P(l) for a point light, P(l) * pdfBackgroundDirection() for the background (solid angle).
+// Density of choosing the light vertex v itself (Eq. 7.3), from pdfEmission (framework/light.h):
+// P(l) / area for an area light, P(l) for a point light, P(l) * pdfBackgroundDirection() for the
+// background (solid angle).
 // v.sp.light is the light's index; v may be a camera-path vertex that hit an emitter.
 float pdfLightOrigin(const Scene& scene, const PathVertex& v);
 
 // Area density with which the light at `light` emits towards `to` (the light subpath's second
-// vertex, Eq. 7.3): area light: cos(theta) / pi about its normal (0 behind it), point light:
-// 1 / (4 pi), both converted with pdfSolidAngleToArea; background: 1 / (pi R^2) * |cos theta_to|
-// (the disk of sampleEmission, R = scene.radius).
+// vertex, Eq. 7.3), from pdfEmission: area light: cos(theta) / pi about its normal (0 behind
+// it), point light: 1 / (4 pi), both converted with pdfSolidAngleToArea; background:
+// 1 / (pi R^2) * |cos theta_to| (the disk of sampleEmission, R = scene.radius).
 float pdfLightToward(const Scene& scene, const PathVertex& light, const PathVertex& to);
 
 // Area density with which `cur` samples `next` (Eq. 7.3, 7.7a): cur is the pinhole:

@@ -7,37 +7,29 @@
 namespace ps {
 
 float pdfLightOrigin(const Scene& scene, const PathVertex& v) {
-    //! TODO(07) Eq. 7.3: the density of the light vertex itself, P(l) times the position's
-    //!          density (area light: 1 / area; background: per unit solid angle; point light:
-    //!          the delta's coefficient 1). Pitfall: forgetting P(l), and 0 if v is on no light.
+    //! TODO(07) Eq. 7.3: the density of the light vertex itself, as startLightPath samples it:
+    //!          P(l) times pdfEmission's pdfA (the background's vertex is a direction: its pdfW).
+    //!          Pitfall: forgetting P(l); 0 if v is on no light.
     //! STUB (void)scene; (void)v;
     //! STUB return PS_TODO("lesson 07: pdfLightOrigin", 0.0f);
     //! BEGIN
     if (v.sp.light < 0) return 0.0f;
-    const float P = scene.lightSelectionProb(v.sp.light);
-    const Light& light = scene.lights[size_t(v.sp.light)];
-    if (light.isInfinite()) return P * pdfBackgroundDirection();
-    if (light.isDelta()) return P;
-    return P * pdfLightArea(scene, v.sp.light);
+    const EmissionPdf e = pdfEmission(scene, v.sp.light, v.sp.n, v.sp.n);   // pdfA does not depend on the direction
+    return scene.lightSelectionProb(v.sp.light) * (v.infinite ? e.pdfW : e.pdfA);
     //! END
 }
 
 float pdfLightToward(const Scene& scene, const PathVertex& light, const PathVertex& to) {
-    //! TODO(07) Eq. 7.3: the area density at `to` of sampleEmission's direction (area light:
-    //!          cosine, point light: uniform sphere, both through lesson 6's pdfSolidAngleToArea);
-    //!          the background's parallel rays come from a disk: 1 / (pi R^2), R = scene.radius,
-    //!          times |cos theta_to| on a surface. Pitfall: an area light emits nothing behind it.
+    //! TODO(07) Eq. 7.3: the area density at `to` of sampleEmission's direction: pdfEmission's
+    //!          pdfW through lesson 6's pdfSolidAngleToArea; the background's parallel rays come from
+    //!          a disk: its pdfA times |cos theta_to| on a surface. Pitfall: 0 on no light.
     //! STUB (void)scene; (void)light; (void)to;
     //! STUB return PS_TODO("lesson 07: pdfLightToward", 0.0f);
     //! BEGIN
-    if (light.infinite) {
-        float pdf = 1.0f / (kPi * scene.radius * scene.radius);
-        if (to.onSurface()) pdf *= std::abs(glm::dot(to.sp.n, light.sp.n));
-        return pdf;
-    }
-    if (light.pointLight) return pdfSolidAngleToArea(uniformSpherePdf(), light, to);
-    const float cosL = glm::dot(light.sp.n, direction(light, to));
-    return cosL > 0.0f ? pdfSolidAngleToArea(cosL * kInvPi, light, to) : 0.0f;
+    if (light.sp.light < 0) return 0.0f;
+    const EmissionPdf e = pdfEmission(scene, light.sp.light, light.sp.n, direction(light, to));
+    if (light.infinite) return to.onSurface() ? e.pdfA * std::abs(glm::dot(to.sp.n, light.sp.n)) : e.pdfA;
+    return pdfSolidAngleToArea(e.pdfW, light, to);
     //! END
 }
 
