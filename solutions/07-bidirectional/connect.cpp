@@ -38,10 +38,12 @@ Connection connect(const Scene& scene, const Subpath& light, const Subpath& came
     //! TODO(07) Eq. 7.2, 7.4: the unweighted contribution C*_{s,t} = beta_y f_y G f_z beta_z with
     //!          lesson 6's geometryTerm, for s = 0 (z_{t-1} emits), t = 1 (connectToCamera), s = 1
     //!          (a fresh sampleLight into c.sampledLight, pdfFwd = pdfLightOrigin, beta = 1 / pdfFwd)
-    //!          and s, t >= 2, each after its shadow ray; then rev = connectionPdfs.
-    //!          Pitfalls: f_x = evalBSDF(m, n, camera-side direction, light-side direction); no
-    //!          connection at a specular or background endpoint; the background y_0 has sp.n
-    //!          towards the background (ls.wi).
+    //!          and s, t >= 2, each after its shadow ray (s = 1: as lesson 2's next-event
+    //!          estimation); valid = not black and unoccluded; then rev = connectionPdfs.
+    //!          Pitfalls: f_x = evalBSDF(m, n, camera-side direction, light-side direction); s >= 1
+    //!          never joins at a specular or background endpoint; t = 1 sets c.sampledLight =
+    //!          light[0] too (the MIS reads y from it whenever s = 1); the background y_0's sp.n
+    //!          points towards the background (ls.wi).
     //! STUB (void)scene; (void)light; (void)camera; (void)s; (void)t; (void)uLight; (void)uPos;
     //! STUB return PS_TODO("lesson 07: connect", Connection());
     //! BEGIN
