@@ -1,4 +1,5 @@
 #include "light.h"
+#include <algorithm>
 #include "scene.h"
 
 namespace ps {
@@ -109,6 +110,26 @@ EmissionSample sampleEmission(const Scene& scene, int l, const Vec2& uPos, const
     }
     }
     return e;
+}
+
+EmissionPdf pdfEmission(const Scene& scene, int l, const Vec3& n, const Vec3& dir) {
+    const Light& light = scene.lights[l];
+    EmissionPdf p;
+    switch (light.kind) {
+    case LightKind::Area:
+        p.pdfA = pdfLightArea(scene, l);
+        p.pdfW = std::max(0.0f, glm::dot(n, dir)) * kInvPi;
+        break;
+    case LightKind::Point:
+        p.pdfA = 1.0f;
+        p.pdfW = uniformSpherePdf();
+        break;
+    case LightKind::Background:
+        p.pdfA = 1.0f / (kPi * scene.radius * scene.radius);
+        p.pdfW = pdfBackgroundDirection();
+        break;
+    }
+    return p;
 }
 
 float lightPower(const Scene& scene, int l) {

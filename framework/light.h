@@ -58,6 +58,17 @@ struct EmissionSample {
 };
 EmissionSample sampleEmission(const Scene& scene, int l, const Vec2& uPos, const Vec2& uDir);
 
+// The densities sampleEmission samples with (its pdfA and pdfW), for light l, an origin with
+// normal n and the unit direction dir: area light pdfA = 1 / area, pdfW = max(0, dot(n, dir)) / pi;
+// point light 1 (a delta position) and 1 / (4 pi); background pdfA = 1 / (pi R^2) (the disk of
+// radius R = scene.radius facing dir) and pdfW = pdfBackgroundDirection(). Without the
+// light-selection probability (Scene::lightSelectionProb). pdfA does not depend on n or dir.
+struct EmissionPdf {
+    float pdfA = 0.0f;
+    float pdfW = 0.0f;
+};
+EmissionPdf pdfEmission(const Scene& scene, int l, const Vec3& n, const Vec3& dir);
+
 // Emitted power, used to select lights proportionally to it.
 float lightPower(const Scene& scene, int l);
 

@@ -6,13 +6,9 @@
 namespace ps {
 
 float pdfSolidAngleToArea(float pdfW, const PathVertex& from, const PathVertex& to) {
-    // TODO(06) The Jacobian d omega / dA of Eq. 6.6: a direction sampled at `from` with
-    //          density pdfW (per unit solid angle) hits `to` with density pdfW |cos theta_to| / d^2
-    //          per unit area at `to`, where d = |to - from| and cos theta_to = dot(to.sp.n, w),
-    //          w the unit direction between them.
-    //          - `to` infinite: its measure is solid angle; return pdfW unchanged.
-    //          - `to` a point light or the pinhole (no surface there): no cosine, pdfW / d^2.
-    //          - d = 0: return 0.
+    // TODO(06) Eq. 6.6: pdfW |cos theta_to| / d^2, the density per unit area at `to`.
+    //          Pitfalls: no cosine at a point light or the pinhole; an infinite `to` keeps pdfW
+    //          (its measure is solid angle); d = 0 gives 0.
     (void)pdfW; (void)from; (void)to;
     return PS_TODO("lesson 06: pdfSolidAngleToArea", 0.0f);
 }

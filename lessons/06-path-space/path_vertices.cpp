@@ -46,28 +46,25 @@ PathVertex cameraVertex(const Scene& scene) {
 Vec3 direction(const PathVertex& a, const PathVertex& b) {
     if (b.infinite) return b.sp.n;
     if (a.infinite) return -a.sp.n;
-    return glm::normalize(b.sp.p - a.sp.p);
+    const Vec3 d = b.sp.p - a.sp.p;
+    return glm::dot(d, d) > 0.0f ? glm::normalize(d) : Vec3(0.0f);
 }
-
-namespace {
-bool isPoint(const PathVertex& v) { return v.pointLight || v.pinhole; }
-}  // namespace
 
 bool visible(const Scene& scene, const PathVertex& a, const PathVertex& b) {
     if (a.infinite && b.infinite) return false;
     if (a.infinite || b.infinite) {
         const PathVertex& f = a.infinite ? b : a;
         const Vec3 d = a.infinite ? a.sp.n : b.sp.n;
-        const Ray r = isPoint(f) ? Ray(f.sp.p, d) : scene.spawnRay(f.sp, d);
+        const Ray r = f.deltaPosition() ? Ray(f.sp.p, d) : scene.spawnRay(f.sp, d);
         return !scene.occluded(r);
     }
-    if (isPoint(a) && isPoint(b)) {
+    if (a.deltaPosition() && b.deltaPosition()) {
         const Vec3 d = b.sp.p - a.sp.p;
         const float len = glm::length(d);
         return len > 0.0f && !scene.occluded(Ray(a.sp.p, d / len, len * (1.0f - 0x1p-20f)));
     }
-    if (isPoint(b)) return !scene.occluded(scene.spawnRayTo(a.sp, b.sp.p));
-    if (isPoint(a)) return !scene.occluded(scene.spawnRayTo(b.sp, a.sp.p));
+    if (b.deltaPosition()) return !scene.occluded(scene.spawnRayTo(a.sp, b.sp.p));
+    if (a.deltaPosition()) return !scene.occluded(scene.spawnRayTo(b.sp, a.sp.p));
     return !scene.occluded(scene.spawnRayTo(a.sp, b.sp));
 }
 

@@ -18,17 +18,30 @@
 
 namespace ps {
 
-// One vertex of a path. Delta vertices are FLAGS, never huge numbers (Eq. 6.11).
+// One vertex of a path, and of lesson 7's subpaths (the same type: a subpath is a Path too).
+// Delta vertices are FLAGS, never huge numbers (Eq. 6.11).
 struct PathVertex {
-    SurfacePoint sp;          // position sp.p; unit normal sp.n (see below); material, light
-    bool onLight = false;     // x0: a point of light sp.light (area, point or background)
-    bool pointLight = false;  // x0 is a point light: a delta position, no surface, no cosine
-    bool pinhole = false;     // xk, the pinhole camera: a delta position; sp.n = camera.forward()
+    SurfacePoint sp;          // position sp.p; unit normal sp.n (see below); material; sp.light:
+                              // the light the vertex lies on (-1: none)
+    bool onLight = false;     // on light sp.light: x0 (area, point or background), or a surface
+                              // that emits (a camera ray may hit it)
+    bool pointLight = false;  // a point light: a delta position, no surface, no cosine
+    bool pinhole = false;     // the pinhole camera: a delta position; sp.n = camera.forward()
     bool specular = false;    // a surface whose material is delta (mirror, glass)
-    bool infinite = false;    // x0 is the background: not a point but a direction; sp.n is the
-                              // unit direction from x1 towards the background, sp.p is unused
+    bool infinite = false;    // the background: not a point but a direction; sp.n is the unit
+                              // direction from x1 towards the background, sp.p is unused
+    // Lesson 7's bookkeeping along a subpath (lesson 6 leaves it at 0; Eq. 7.1, 7.3, 7.6, 7.9):
+    Color beta = Color(0.0f);  // throughput of the subpath up to and including this vertex
+    float pdfFwd = 0.0f;       // density of the vertex under its own subpath's sampling
+    float pdfRev = 0.0f;       // density of the vertex sampled from the other direction
+    double misSum = 0.0;       // recursive MIS: the partial sum B_i of Eq. 7.9
+
     const Vec3& p() const { return sp.p; }
     const Vec3& n() const { return sp.n; }
+    // A delta position (point light or pinhole): no ray can hit it.
+    bool deltaPosition() const { return pointLight || pinhole; }
+    // The vertex lies on a surface with normal sp.n (cosines count there).
+    bool onSurface() const { return !pointLight && !pinhole && !infinite; }
 };
 // x[0] on a light, ..., x[k] the pinhole: path length k = x.size() - 1.
 using Path = std::vector<PathVertex>;
@@ -78,7 +91,9 @@ PathVertex cameraVertex(const Scene& scene);
 // from the finite end along the direction escapes the scene).
 bool visible(const Scene& scene, const PathVertex& a, const PathVertex& b);
 
-// Unit direction from a towards b (for an infinite b: b.sp.n; for an infinite a: -a.sp.n).
+// Unit direction from a towards b (for an infinite b: b.sp.n; for an infinite a: -a.sp.n); the
+// zero vector if the two points coincide (a point light on a surface: every BSDF and pdf of it
+// is then 0, never NaN).
 Vec3 direction(const PathVertex& a, const PathVertex& b);
 
 // The Dirac delta of a specular vertex with normal n, for light arriving from wLight and

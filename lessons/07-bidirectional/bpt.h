@@ -6,18 +6,22 @@
 // solutions/07-bidirectional/*.cpp (reference) or assignments/07-bidirectional/*.cpp (yours);
 // lessons/07-bidirectional/README.md derives every formula (Eq. 7.1-7.12).
 //
+// One vertex type: lesson 6's PathVertex (06-path-space/paths.h), with its flags (onLight,
+// pointLight, pinhole, specular, infinite; the background's sp.n points from the scene towards
+// the background) and the subpath fields beta, pdfFwd, pdfRev, misSum; the light a vertex lies on
+// is sp.light. Lesson 6's pieces do the geometry here too: direction, geometryTerm,
+// pdfSolidAngleToArea (Eq. 6.6 = 7.3's conversion), deltaLobe, and surfaceVertex, cameraVertex,
+// backgroundVertex build the vertices.
+//
 // Conventions. Every pdf of a vertex is per unit AREA at that vertex, except at a vertex at
 // infinity (the background), where it is per unit solid angle (Eq. 7.3). pdfFwd is the density
 // with which the vertex was sampled by its own subpath, pdfRev the density with which the other
-// direction would sample it (from the next vertex of its subpath, Eq. 7.6). Delta vertices are
-// FLAGS: a specular vertex has delta = true, a point light and the pinhole have deltaPosition
-// = true. The direction a specular vertex scatters to is a Dirac delta; its density is stored
-// as the COEFFICIENT of that delta (lesson 6's deltaLobe: the lobe's probability, converted to
-// area like any other pdf, Eq. 7.7a). Every technique that can sample a path carries each
-// specular vertex's delta exactly once, on the side it is sampled from, so the coefficients
-// (not the deltas) are what (7.5) compares. The pinhole is chosen with probability 1 and a point
-// light with P(l) (delta positions: coefficients again); a density that is 0 means "cannot be
-// sampled this way" and stays 0.
+// direction would sample it (from the next vertex of its subpath, Eq. 7.6). A specular vertex's
+// scattered direction is a Dirac delta; its density is the COEFFICIENT of that delta (deltaLobe's
+// lobe probability, converted to area like any other pdf, Eq. 7.7a). Every technique that can
+// sample a path carries each specular delta exactly once, so the coefficients are what (7.5)
+// compares. The pinhole is chosen with probability 1 and a point light with P(l) (delta
+// positions: coefficients again); a density that is 0 means "cannot be sampled this way".
 #pragma once
 #include <vector>
 #include "02-direct-mis/mis.h"
@@ -26,68 +30,33 @@
 
 namespace ps {
 
-enum class VertexKind : uint8_t { Camera, Light, Surface };
-
-struct SubpathVertex {
-    VertexKind kind = VertexKind::Surface;
-    SurfacePoint sp;           // position, normal, material, light; infinite: sp.n is the
-                               // direction the light travels (into the scene), sp.p unused
-    Color beta = Color(0.0f);  // throughput of the subpath up to and including this vertex (Eq. 7.1):
-                               // camera z_i: product of f |cos| / pdf; light y_i: Le-side product
-                               // (y_0: 1 / pdfFwd; the emitted radiance is evaluated at the connection)
-    float pdfFwd = 0.0f;       // density of this vertex under its own subpath's sampling (Eq. 7.3)
-    float pdfRev = 0.0f;       // density of this vertex sampled from the other direction (Eq. 7.6)
-    bool delta = false;        // specular surface: no connection at this vertex
-    bool deltaPosition = false;// point light or pinhole: cannot be hit by a random ray
-    bool infinite = false;     // the background, a vertex at infinity
-    int light = -1;            // kind Light (or a camera vertex on an emitter): index into scene.lights
-    double misSum = 0.0;       // recursive MIS (Eq. 7.9): B_i, the partial sum of the techniques
-                               // that move the connection at least two vertices into this subpath
-
-    // The vertex lies on a surface with normal sp.n (cosines count there).
-    bool onSurface() const {
-        return kind == VertexKind::Surface || (kind == VertexKind::Light && !deltaPosition && !infinite);
-    }
-};
-using Subpath = std::vector<SubpathVertex>;
-
-// Unit direction from `from` towards `to` (-to.sp.n if `to` is at infinity); the zero vector if
-// the two points coincide (a point light on a surface: every BSDF and pdf of it is then 0, never NaN).
-inline Vec3 directionTo(const SubpathVertex& from, const SubpathVertex& to) {
-    if (to.infinite) return -to.sp.n;
-    const Vec3 d = to.sp.p - from.sp.p;
-    const float d2 = glm::dot(d, d);
-    return d2 > 0.0f ? d / std::sqrt(d2) : Vec3(0.0f);
-}
+// A subpath: y_0 (on a light) .. y_{s-1}, or z_0 (the pinhole) .. z_{t-1} (Eq. 7.1).
+using Subpath = std::vector<PathVertex>;
 
 // ---- vertex pdfs (vertex_pdfs.cpp), one function for sampling and for MIS (Eq. 7.3) ----
 
-// Solid-angle density pdfW of the direction from `from` towards `to`, turned into a density per
-// unit area at `to`: pdfW |cos theta_to| / d^2 (no cosine if `to` is not on a surface; unchanged
-// if `to` is at infinity). 0 when d is 0.
-float convertToArea(float pdfW, const SubpathVertex& from, const SubpathVertex& to);
-
-// Density of choosing the light vertex v itself (Eq. 7.3): P(l) / area for an area light,
-// P(l) for a point light, P(l) * pdfBackgroundDirection() for the background (solid angle).
-// v.light is the light's index; v may be a camera-path vertex that hit an emitter.
-float pdfLightOrigin(const Scene& scene, const SubpathVertex& v);
+// Density of choosing the light vertex v itself (Eq. 7.3), from pdfEmission (framework/light.h):
+// P(l) / area for an area light, P(l) for a point light, P(l) * pdfBackgroundDirection() for the
+// background (solid angle).
+// v.sp.light is the light's index; v may be a camera-path vertex that hit an emitter.
+float pdfLightOrigin(const Scene& scene, const PathVertex& v);
 
 // Area density with which the light at `light` emits towards `to` (the light subpath's second
-// vertex, Eq. 7.3): area light: cos(theta) / pi about its normal (0 behind it), point light:
-// 1 / (4 pi), both converted with convertToArea; background: 1 / (pi R^2) * |cos theta_to|
-// (the disk of sampleEmission, R = scene.radius).
-float pdfLightToward(const Scene& scene, const SubpathVertex& light, const SubpathVertex& to);
+// vertex, Eq. 7.3), from pdfEmission: area light: cos(theta) / pi about its normal (0 behind
+// it), point light: 1 / (4 pi), both converted with pdfSolidAngleToArea; background:
+// 1 / (pi R^2) * |cos theta_to| (the disk of sampleEmission, R = scene.radius).
+float pdfLightToward(const Scene& scene, const PathVertex& light, const PathVertex& to);
 
-// Area density with which `cur` samples `next` (Eq. 7.3, 7.7a): cur is the camera:
-// pdfDirection; a surface: pdfBSDF(material, n, towards prev, towards next); prev may be null
+// Area density with which `cur` samples `next` (Eq. 7.3, 7.7a): cur is the pinhole:
+// camera.pdfDirection; a surface: pdfBSDF(material, n, towards prev, towards next); prev may be null
 // only for the camera. A specular cur: the coefficient of its delta, lesson 6's deltaLobe,
 // which depends on the direction of the walk: mode Importance (walking with the light, as the
 // light subpath: prev is on the light side) deltaLobe(m, n, towards prev, towards next).pdfLight;
 // mode Radiance (walking against it, as the camera subpath) deltaLobe(m, n, towards next,
 // towards prev).pdfCamera (it carries the refraction's eta^2 Jacobian), even if the lobe is not
 // `valid` (rounding on a very short segment; see DeltaLobe).
-// Always through convertToArea.
-float pdfScatter(const Scene& scene, const SubpathVertex* prev, const SubpathVertex& cur, const SubpathVertex& next,
+// Always through pdfSolidAngleToArea.
+float pdfScatter(const Scene& scene, const PathVertex* prev, const PathVertex& cur, const PathVertex& next,
                  Transport mode);
 
 // ---- subpaths (light_subpath.cpp, camera_subpath.cpp), Eq. 7.1 ----
@@ -114,13 +83,13 @@ struct ReversePdfs {
     float cameraPrev = 0.0f;  // z_{t-2} sampled from z_{t-1} (s = 0: pdfLightToward)
 };
 // y points to the s light vertices, z to the t camera vertices (s + t >= 2, t >= 1).
-ReversePdfs connectionPdfs(const Scene& scene, const SubpathVertex* y, int s, const SubpathVertex* z, int t);
+ReversePdfs connectionPdfs(const Scene& scene, const PathVertex* y, int s, const PathVertex* z, int t);
 
 struct Connection {
     bool valid = false;
     Color value = Color(0.0f);  // unweighted contribution C*_{s,t} (Eq. 7.4); t = 1: to splat
     Vec2 raster;                // t = 1: where the light vertex lands on the image
-    SubpathVertex sampledLight;    // s = 1: the light vertex sampled for this connection (it
+    PathVertex sampledLight;    // s = 1: the light vertex sampled for this connection (it
                                 // replaces the light subpath's y_0, Eq. 7.2)
     ReversePdfs rev;
 };
@@ -128,34 +97,34 @@ struct Connection {
 // Technique (s, t) for the given subpaths (s <= light.size(), t <= camera.size(), t >= 1):
 // s = 0: z_{t-1} is on an emitter or at infinity; s = 1: a new light sample (uLight, uPos from
 // the caller) towards z_{t-1}; t = 1: y_{s-1} to the pinhole (connectToCamera); otherwise
-// both endpoints' BSDFs and the geometry term, after a visibility test. Not valid when a
-// connected endpoint is delta or nothing arrives.
+// both endpoints' BSDFs and lesson 6's geometryTerm, after a visibility test. Not valid when a
+// connected endpoint is specular or nothing arrives.
 Connection connect(const Scene& scene, const Subpath& light, const Subpath& camera, int s, int t, float uLight,
                    const Vec2& uPos);
 
 // ---- MIS weights (mis_full.cpp, mis_recursive.cpp), Eq. 7.5-7.10 ----
 
 // Whether technique s' of a full path of n vertices x_0 .. x_{n-1} (x_0 on the light, x_{n-1}
-// the camera) can sample it (Eq. 7.7): t' = n - s' >= 1; s' = 0 needs x_0 not deltaPosition;
-// otherwise x_{s'-1} and x_{s'} both non-delta, and not a background vertex joined straight to
+// the camera) can sample it (Eq. 7.7): t' = n - s' >= 1; s' = 0 needs x_0 not a point light;
+// otherwise x_{s'-1} and x_{s'} both non-specular, and not a background vertex joined straight to
 // the camera (s' = 1, t' = 1, x_0 infinite).
-bool techniqueSamples(const SubpathVertex* x, int n, int sPrime);
+bool techniqueSamples(const PathVertex* x, int n, int sPrime);
 
 // w_{s,t} from the full list p_0 .. p_n of the joined path's techniques (Eq. 7.5-7.7): build
 // x_0 .. x_{n-1} (y then z reversed), with pL[i] (density from the light side) and pE[i] (from
 // the camera side) from pdfFwd/pdfRev and the connection's rev; p_s' = prod_{i<s'} pL[i]
 // prod_{i>=s'} pE[i] (the stored numbers as they are: no 0 is replaced), and w = p_s^b / sum over sampling techniques of p_s'^b.
 // y: s vertices (s = 1: &c.sampledLight), z: t vertices.
-float misWeightFull(const SubpathVertex* y, int s, const SubpathVertex* z, int t, const ReversePdfs& rev, Heuristic h);
+float misWeightFull(const PathVertex* y, int s, const PathVertex* z, int t, const ReversePdfs& rev, Heuristic h);
 
 // The recursive partial sum (Eq. 7.9) for vertex i of a subpath, once path[i-2].pdfRev is
 // known: B_0 = B_1 = 0, B_i = r_{i-2}^b (c_{i-2} + B_{i-1}), r_j = pdfRev/pdfFwd of path[j]
 // (0 if pdfFwd is 0), c_j whether the connection may sit just before path[j] (Eq. 7.10).
-// Light subpaths: c_0 = not deltaPosition; camera subpaths: c_0 = 0. Stores it in path[i].misSum.
+// Light subpaths: c_0 = not a point light; camera subpaths: c_0 = 0. Stores it in path[i].misSum.
 void updateMisSum(Subpath& path, size_t i, Heuristic h);
 
 // The same weight as misWeightFull with O(1) work (Eq. 7.8-7.10), from the endpoints' misSum.
-float misWeightRecursive(const SubpathVertex* y, int s, const SubpathVertex* z, int t, const ReversePdfs& rev, Heuristic h);
+float misWeightRecursive(const PathVertex* y, int s, const PathVertex* z, int t, const ReversePdfs& rev, Heuristic h);
 
 // ---- the integrator (plumbing, bpt_integrator.cpp) ----
 

@@ -59,9 +59,9 @@ Color bptSample(const Scene& scene, const Vec2& raster, Rng& rng, const BptOptio
             if (t == 1 && s == 0) continue;
             if (s > nLight && !(s == 1 && t >= 2)) continue;   // s = 1 samples its own light vertex
             if (s == 0 && prune.s0) continue;
-            if (prune.deltaEnds && t >= 2 && camera[size_t(t - 1)].delta) continue;
-            if (prune.deltaEnds && s >= 2 && light[size_t(s - 1)].delta) continue;
-            if (prune.deltaEnds && t == 1 && light[size_t(s - 1)].delta) continue;
+            if (prune.deltaEnds && t >= 2 && camera[size_t(t - 1)].specular) continue;
+            if (prune.deltaEnds && s >= 2 && light[size_t(s - 1)].specular) continue;
+            if (prune.deltaEnds && t == 1 && light[size_t(s - 1)].specular) continue;
             float uLight = 0.0f;
             Vec2 uPos(0.0f);
             if (s == 1 && t >= 2) {
@@ -70,7 +70,7 @@ Color bptSample(const Scene& scene, const Vec2& raster, Rng& rng, const BptOptio
             }
             const Connection c = connect(scene, light, camera, s, t, uLight, uPos);
             if (!c.valid) continue;
-            const SubpathVertex* y = s == 1 ? &c.sampledLight : light.data();
+            const PathVertex* y = s == 1 ? &c.sampledLight : light.data();
             const float w = opt.recursive ? misWeightRecursive(y, s, camera.data(), t, c.rev, opt.heuristic)
                                           : misWeightFull(y, s, camera.data(), t, c.rev, opt.heuristic);
             const Color weighted = c.value * w;

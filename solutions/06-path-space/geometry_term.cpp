@@ -6,14 +6,10 @@
 namespace ps {
 
 float geometryTerm(const PathVertex& a, const PathVertex& b) {
-    //! TODO(06) G(a, b) = |cos theta_a| |cos theta_b| / d^2 without visibility (Eq. 6.4, 6.5):
-    //!          1. Both infinite: 0. One infinite (say a): w = a.sp.n (the direction from b
-    //!             towards the background); G = |cos theta_b| = |dot(b.sp.n, w)|, no 1/d^2
-    //!             (and no cosine at all if b is a point light).
-    //!          2. Otherwise d = b.p() - a.p(), d2 = dot(d, d) (0 if d2 is 0), w = d / sqrt(d2);
-    //!             cos theta_a = |dot(a.sp.n, w)|, cos theta_b = |dot(b.sp.n, w)|, but 1 at a
-    //!             point light (no surface). The pinhole has its cosine: its sp.n is
-    //!             camera.forward(). G = cos theta_a cos theta_b / d2.
+    //! TODO(06) Eq. 6.4, 6.5: G(a, b) = |cos theta_a| |cos theta_b| / d^2, no visibility.
+    //!          Pitfalls: no cosine at a point light (the pinhole has one, to camera.forward()); an
+    //!          infinite end has no cosine and no 1/d^2 (sp.n is the direction towards it); both
+    //!          infinite or d = 0: 0.
     //! STUB (void)a; (void)b;
     //! STUB return PS_TODO("lesson 06: geometryTerm", 0.0f);
     //! BEGIN

@@ -5,34 +5,31 @@
 
 namespace ps {
 
-bool techniqueSamples(const SubpathVertex* x, int n, int sPrime) {
-    //! TODO(07) Eq. 7.7: false if sPrime >= n (t' = 0: the pinhole cannot be hit); s' = 0:
-    //!          !x[0].deltaPosition; otherwise x[s'-1] and x[s'] must both be non-delta, and
-    //!          not (s' == 1 && n == 2 && x[0].infinite).
+bool techniqueSamples(const PathVertex* x, int n, int sPrime) {
+    //! TODO(07) Eq. 7.7 / 7.12: whether technique s' can make the joined path x_0 .. x_{n-1}.
+    //!          Pitfalls: t' = 0 never (the pinhole cannot be hit), s' = 0 not with a point light,
+    //!          no edge at a specular vertex, and not the background joined straight to the pinhole.
     //! STUB (void)x; (void)n; (void)sPrime;
     //! STUB return PS_TODO("lesson 07: techniqueSamples", false);
     //! BEGIN
     if (sPrime < 0 || sPrime >= n) return false;
-    if (sPrime == 0) return !x[0].deltaPosition;
-    if (x[sPrime - 1].delta || x[sPrime].delta) return false;
+    if (sPrime == 0) return !x[0].pointLight;
+    if (x[sPrime - 1].specular || x[sPrime].specular) return false;
     return !(sPrime == 1 && n == 2 && x[0].infinite);
     //! END
 }
 
-float misWeightFull(const SubpathVertex* y, int s, const SubpathVertex* z, int t, const ReversePdfs& rev, Heuristic h) {
-    //! TODO(07) Eq. 7.5-7.7. n = s + t; x[i] = y[i] for i < s, x[s + j] = z[t - 1 - j];
-    //!          pL[i] (x_i sampled from the light side) and pE[i] (from the camera side):
-    //!          light vertex y_i: pL = pdfFwd, pE = pdfRev, but rev.lightEnd for i = s-1 and
-    //!          rev.lightPrev for i = s-2; camera vertex z_j: pE = pdfFwd, pL = pdfRev, but
-    //!          rev.cameraEnd for j = t-1 and rev.cameraPrev for j = t-2. Take the numbers as they
-    //!          are (a specular vertex's are its lobe's coefficients, Eq. 7.7a; a 0 is a 0). In double: for every s' with
-    //!          techniqueSamples(x, n, s'), p = prod_{i<s'} pL[i] * prod_{i>=s'} pE[i],
-    //!          q = p (balance) or p^2 (power); w = q_s / sum of q. 0 if the sum is 0.
+float misWeightFull(const PathVertex* y, int s, const PathVertex* z, int t, const ReversePdfs& rev, Heuristic h) {
+    //! TODO(07) Eq. 7.5-7.7: w_{s,t} = p_s^b / sum_{s'} p_{s'}^b over the techniques that can make
+    //!          the joined path x = y_0 .. y_{s-1} z_{t-1} .. z_0, with p_{s'} the product of the
+    //!          light-side densities of x_0 .. x_{s'-1} and the camera-side ones of the rest
+    //!          (pdfFwd / pdfRev, replaced by rev's four numbers next to the connection).
+    //!          Pitfalls: in double; a 0 stays 0 (no "0 counted as 1"); 0 if the sum is 0.
     //! STUB (void)y; (void)s; (void)z; (void)t; (void)rev; (void)h;
     //! STUB return PS_TODO("lesson 07: misWeightFull", 0.0f);
     //! BEGIN
     const int n = s + t;
-    std::vector<SubpathVertex> x(static_cast<size_t>(n));
+    std::vector<PathVertex> x(static_cast<size_t>(n));
     std::vector<double> pL(static_cast<size_t>(n)), pE(static_cast<size_t>(n));
     for (int i = 0; i < s; ++i) {
         x[size_t(i)] = y[i];

@@ -11,32 +11,31 @@ namespace {
 double heuristicPower(double r, Heuristic h) { return h == Heuristic::Power ? r * r : r; }
 
 // c_j of Eq. 7.10 for vertex j of a subpath (camera subpaths start with the camera).
-[[maybe_unused]] double connectible(const SubpathVertex* path, int j) {
-    //! TODO(07) Eq. 7.10: light subpath (path[0] is not the camera): c_0 = !path[0].deltaPosition;
-    //!          camera subpath: c_0 = 0, and c_1 = 0 if path[1] is at infinity; otherwise
-    //!          c_j = 1 if neither path[j] nor path[j-1] is delta, else 0.
+[[maybe_unused]] double connectible(const PathVertex* path, int j) {
+    //! TODO(07) Eq. 7.10: c_j = 1 if the connection may sit just before path[j], else 0.
+    //!          Pitfalls: a camera subpath (path[0].pinhole) has c_0 = 0 and c_1 = 0 at the
+    //!          background; a light subpath's c_0 = 0 at a point light; no edge at a specular vertex.
     //! STUB (void)path; (void)j;
     //! STUB return PS_TODO("lesson 07: connectible", 0.0);
     //! BEGIN
-    const bool camera = path[0].kind == VertexKind::Camera;
-    if (j == 0) return camera || path[0].deltaPosition ? 0.0 : 1.0;
+    const bool camera = path[0].pinhole;
+    if (j == 0) return camera || path[0].pointLight ? 0.0 : 1.0;
     if (camera && j == 1 && path[1].infinite) return 0.0;
-    return path[j].delta || path[j - 1].delta ? 0.0 : 1.0;
+    return path[j].specular || path[j - 1].specular ? 0.0 : 1.0;
     //! END
 }
 
 // r_j^b with the given reverse pdf (Eq. 7.8); 0 where the vertex has no forward density (only
 // ever multiplied by c_j = 0 there).
-[[maybe_unused]] double ratio(float pdfRev, const SubpathVertex& v, Heuristic h) {
+[[maybe_unused]] double ratio(float pdfRev, const PathVertex& v, Heuristic h) {
     return v.pdfFwd > 0.0f ? heuristicPower(double(pdfRev) / double(v.pdfFwd), h) : 0.0;
 }
 
 // The sum over the techniques that move the connection into this subpath (Eq. 7.9), for the
 // endpoint e = path[e] with the connection's reverse pdfs of path[e] and path[e-1].
-[[maybe_unused]] double subpathSum(const SubpathVertex* path, int e, float revEnd, float revPrev, Heuristic h) {
-    //! TODO(07) Eq. 7.9: e == 0: r'_0 c_0; else r'_e (c_e + r'_{e-1} (c_{e-1} + path[e].misSum)),
-    //!          where r'_e = ratio(revEnd, path[e], h), r'_{e-1} = ratio(revPrev, path[e-1], h),
-    //!          c_j = connectible(path, j).
+[[maybe_unused]] double subpathSum(const PathVertex* path, int e, float revEnd, float revPrev, Heuristic h) {
+    //! TODO(07) Eq. 7.9: the endpoint's sum with the connection's two new reverse pdfs,
+    //!          r'_e (c_e + r'_{e-1} (c_{e-1} + path[e].misSum)) (e = 0: r'_0 c_0), r' = ratio(...).
     //! STUB (void)path; (void)e; (void)revEnd; (void)revPrev; (void)h;
     //! STUB return PS_TODO("lesson 07: subpathSum", 0.0);
     //! BEGIN
@@ -50,9 +49,8 @@ double heuristicPower(double r, Heuristic h) { return h == Heuristic::Power ? r 
 }  // namespace
 
 void updateMisSum(Subpath& path, size_t i, Heuristic h) {
-    //! TODO(07) Eq. 7.9: path[i].misSum = 0 for i < 2; else
-    //!          r_{i-2}^b (c_{i-2} + path[i-1].misSum) with r_{i-2} = ratio(path[i-2].pdfRev, path[i-2], h)
-    //!          and c_{i-2} = connectible(path.data(), i - 2).
+    //! TODO(07) Eq. 7.9: path[i].misSum = B_i = r_{i-2}^b (c_{i-2} + B_{i-1}), B_0 = B_1 = 0.
+    //!          Pitfall: call it only once path[i-2].pdfRev is known.
     //! STUB (void)path; (void)i; (void)h;
     //! STUB (void)PS_TODO("lesson 07: updateMisSum", 0);
     //! BEGIN
@@ -60,15 +58,14 @@ void updateMisSum(Subpath& path, size_t i, Heuristic h) {
         path[i].misSum = 0.0;
         return;
     }
-    const SubpathVertex& v = path[i - 2];
+    const PathVertex& v = path[i - 2];
     path[i].misSum = ratio(v.pdfRev, v, h) * (connectible(path.data(), int(i) - 2) + path[i - 1].misSum);
     //! END
 }
 
-float misWeightRecursive(const SubpathVertex* y, int s, const SubpathVertex* z, int t, const ReversePdfs& rev, Heuristic h) {
-    //! TODO(07) Eq. 7.8: w = 1 / (1 + light sum + camera sum), the light sum
-    //!          subpathSum(y, s - 1, rev.lightEnd, rev.lightPrev, h) if s >= 1 (else 0), the
-    //!          camera sum subpathSum(z, t - 1, rev.cameraEnd, rev.cameraPrev, h).
+float misWeightRecursive(const PathVertex* y, int s, const PathVertex* z, int t, const ReversePdfs& rev, Heuristic h) {
+    //! TODO(07) Eq. 7.8: w = 1 / (1 + light sum + camera sum), each sum from subpathSum at the
+    //!          subpath's endpoint. Pitfall: s = 0 has no light sum.
     //! STUB (void)y; (void)s; (void)z; (void)t; (void)rev; (void)h;
     //! STUB return PS_TODO("lesson 07: misWeightRecursive", 0.0f);
     //! BEGIN

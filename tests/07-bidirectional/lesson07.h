@@ -24,7 +24,7 @@ using ps::testfiles::readText;
 using ps::testfiles::sourcePath;
 
 using ps::Color;
-using ps::SubpathVertex;
+using ps::PathVertex;
 using ps::Vec2;
 using ps::Vec3;
 using ps::fmt::num;
@@ -52,12 +52,12 @@ using ps::testrender::total;
 // x_0 .. x_{n-1} (light to camera) with the densities of each vertex from the light side (pL)
 // and from the camera side (pE), read from the subpaths and the connection's reverse pdfs.
 struct JoinedPath {
-    std::vector<SubpathVertex> x;
+    std::vector<PathVertex> x;
     std::vector<float> pL, pE;
     int s = 0, t = 0;   // the technique that made it
 };
 
-inline JoinedPath join(const SubpathVertex* y, int s, const SubpathVertex* z, int t, const ps::ReversePdfs& rev) {
+inline JoinedPath join(const PathVertex* y, int s, const PathVertex* z, int t, const ps::ReversePdfs& rev) {
     JoinedPath j;
     j.s = s;
     j.t = t;
@@ -86,8 +86,8 @@ inline JoinedPath join(const SubpathVertex* y, int s, const SubpathVertex* z, in
 inline bool samples(const JoinedPath& j, int sp) {
     const int n = int(j.x.size());
     if (sp >= n) return false;
-    if (sp == 0 && j.x[0].deltaPosition) return false;
-    if (sp > 0 && (j.x[size_t(sp - 1)].delta || j.x[size_t(sp)].delta)) return false;
+    if (sp == 0 && j.x[0].pointLight) return false;
+    if (sp > 0 && (j.x[size_t(sp - 1)].specular || j.x[size_t(sp)].specular)) return false;
     if (sp == 1 && n == 2 && j.x[0].infinite) return false;
     double p = 1.0;
     for (int i = 0; i < n; ++i) p *= double(i < sp ? j.pL[size_t(i)] : j.pE[size_t(i)]);
@@ -104,14 +104,14 @@ inline Split split(const ps::Scene& scene, const JoinedPath& j, int sp, ps::Heur
     Split out;
     const int n = int(j.x.size());
     for (int i = 0; i < sp; ++i) {
-        SubpathVertex v = j.x[size_t(i)];
+        PathVertex v = j.x[size_t(i)];
         v.pdfFwd = j.pL[size_t(i)];
         v.pdfRev = j.pE[size_t(i)];
         out.y.push_back(v);
         ps::updateMisSum(out.y, out.y.size() - 1, h);
     }
     for (int i = n - 1; i >= sp; --i) {
-        SubpathVertex v = j.x[size_t(i)];
+        PathVertex v = j.x[size_t(i)];
         v.pdfFwd = j.pE[size_t(i)];
         v.pdfRev = j.pL[size_t(i)];
         out.z.push_back(v);
@@ -147,14 +147,14 @@ inline std::string describe(const JoinedPath& j) {
     std::ostringstream o;
     o << "a path of " << j.x.size() << " vertices made by (s, t) = (" << j.s << ", " << j.t << "): ";
     for (size_t i = 0; i < j.x.size(); ++i) {
-        const SubpathVertex& v = j.x[i];
+        const PathVertex& v = j.x[i];
         o << (i ? " - " : "")
-          << (v.kind == ps::VertexKind::Camera ? "camera"
-              : v.infinite                     ? "background"
-              : v.kind == ps::VertexKind::Light ? (v.deltaPosition ? "point light" : "area light")
-              : v.delta                        ? "specular"
-              : v.light >= 0                   ? "area light"
-                                               : "surface");
+          << (v.pinhole      ? "camera"
+              : v.infinite   ? "background"
+              : v.pointLight ? "point light"
+              : v.specular   ? "specular"
+              : v.onLight    ? "area light"
+                             : "surface");
     }
     return o.str();
 }

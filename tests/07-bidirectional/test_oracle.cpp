@@ -93,23 +93,6 @@ render maxdepth 6
 constexpr int kSamples = 800;   // pixel samples per scene
 constexpr double kRelTol = 1e-3, kAbsTol = 1e-6;
 
-// Lesson 6's vertex for a vertex of a joined path (x0 first). Lesson 7's background vertex
-// stores the direction the light travels, lesson 6's the direction towards the background.
-ps::PathVertex toLesson6(const SubpathVertex& v, bool first) {
-    ps::PathVertex p;
-    p.sp = v.sp;
-    p.specular = v.delta;
-    p.pinhole = v.kind == ps::VertexKind::Camera;
-    p.infinite = v.infinite;
-    if (v.infinite) p.sp.n = -v.sp.n;
-    if (first) {
-        p.sp.light = v.light;
-        p.onLight = v.light >= 0;
-        p.pointLight = v.kind == ps::VertexKind::Light && v.deltaPosition;
-    }
-    return p;
-}
-
 struct Case {
     std::string what;   // the path and technique
     double student = 0.0, oracle = 0.0, oracleOther = 0.0;   // oracleOther: the other heuristic
@@ -154,13 +137,13 @@ void checkScene(const char* name, const char* text, uint64_t seed) {
                     if (s > int(light.size()) && !(s == 1 && t >= 2)) continue;
                     const ps::Connection c = ps::connect(scene, light, camera, s, t, rng.uniform(), rng.uniform2());
                     if (!c.valid) continue;
-                    const SubpathVertex* y = s == 1 ? &c.sampledLight : light.data();
+                    const PathVertex* y = s == 1 ? &c.sampledLight : light.data();
                     const int n = s + t;
-                    ps::Path x;
-                    std::vector<SubpathVertex> joined;
+                    // One vertex type: the joined path is a lesson 6 path as it is.
+                    ps::Path joined;
                     for (int k = 0; k < s; ++k) joined.push_back(y[k]);
                     for (int k = t - 1; k >= 0; --k) joined.push_back(camera[size_t(k)]);
-                    for (int k = 0; k < n; ++k) x.push_back(toLesson6(joined[size_t(k)], k == 0));
+                    const ps::Path& x = joined;
                     std::vector<double> p(size_t(n) + 1);
                     for (int sp = 0; sp <= n; ++sp) p[size_t(sp)] = ps::pdfTechnique(scene, x, sp);
                     if (!(p[size_t(s)] > 0.0) || !std::isfinite(p[size_t(s)])) {
@@ -176,12 +159,12 @@ void checkScene(const char* name, const char* text, uint64_t seed) {
                     cs.oracle = std::pow(p[size_t(s)], b) / sum;
                     cs.oracleOther = std::pow(p[size_t(s)], bOther) / sumOther;
                     bool spec = false;
-                    for (const SubpathVertex& v : joined) spec = spec || v.delta;
+                    for (const PathVertex& v : joined) spec = spec || v.specular;
                     cs.specular = spec;
                     if (h == ps::Heuristic::Balance) {
                         ++checked;
                         specularPaths += spec;
-                        pointPaths += joined[0].deltaPosition && joined[0].kind == ps::VertexKind::Light;
+                        pointPaths += joined[0].pointLight;
                         backgroundPaths += joined[0].infinite;
                     }
                     JoinedPath jp;

@@ -338,6 +338,9 @@ TEST_CASE("light: point lights are delta lights with pdf 1") {
     CHECK(e.pdfA == 1.0f);
     CHECK(e.pdfW == doctest::Approx(1.0f / (4.0f * kPi)));
     CHECK(std::abs(glm::length(e.dir) - 1.0f) < 1e-6f);
+    const EmissionPdf q = pdfEmission(s, l, e.n, e.dir);
+    CHECK(q.pdfA == e.pdfA);
+    CHECK(q.pdfW == e.pdfW);
     CHECK(lightPower(s, l) == doctest::Approx(4.0f * kPi * 7.0f));
 }
 
@@ -373,6 +376,9 @@ TEST_CASE("light: background sampling is uniform over the sphere with pdf 1/(4 p
     CHECK(e.pdfA == doctest::Approx(1.0f / (kPi * s.radius * s.radius)));
     CHECK(e.pdfW == doctest::Approx(1.0f / (4.0f * kPi)));
     CHECK(glm::dot(e.p - s.center, e.dir) == doctest::Approx(-s.radius).epsilon(1e-4));
+    const EmissionPdf q = pdfEmission(s, l, e.n, e.dir);
+    CHECK(q.pdfA == e.pdfA);
+    CHECK(q.pdfW == e.pdfW);
 }
 
 TEST_CASE("light: area light emission: cosine directions on the normal side, pdfW = cos/pi, pdfA = 1/area") {
@@ -392,7 +398,9 @@ TEST_CASE("light: area light emission: cosine directions on the normal side, pdf
         double d;
         const bool onLight = glm::all(glm::greaterThanEqual(barycentrics(s.triangles[0], e.p, d), glm::dvec3(-1e-6))) ||
                              glm::all(glm::greaterThanEqual(barycentrics(s.triangles[1], e.p, d), glm::dvec3(-1e-6)));
+        const EmissionPdf q = pdfEmission(s, l, e.n, e.dir);   // the matching pdf function
         const bool ok = c >= 0.0f && std::abs(e.pdfW - c / kPi) <= 1e-5f && e.pdfA == doctest::Approx(1.0f / s.lights[l].area) &&
+                        std::abs(q.pdfW - e.pdfW) <= 1e-5f && q.pdfA == e.pdfA &&
                         e.n == n && e.Le == Color(2.0f) && std::abs(glm::dot(e.p - Vec3(0, 0, 1), n)) < 1e-5f && onLight;
         if (!ok && ++bad <= 3)
             FAIL_CHECK("emission sample: cos " << c << ", pdfW " << e.pdfW << " (expected " << c / kPi << "), pdfA " << e.pdfA
