@@ -68,11 +68,23 @@ bool visible(const Scene& scene, const PathVertex& a, const PathVertex& b) {
     return !scene.occluded(scene.spawnRayTo(a.sp, b.sp));
 }
 
-DeltaLobe deltaLobe(const Material& m, const Vec3& n, const Vec3& wLight, const Vec3& wCamera) {
+float deltaTolerance(const PathVertex& a, const PathVertex& v, const PathVertex& b) {
+    float far = maxAbsComponent(v.sp.p), shortest = kInf;
+    for (const PathVertex* u : {&a, &b}) {
+        if (u->infinite) continue;
+        far = std::max(far, maxAbsComponent(u->sp.p));
+        shortest = std::min(shortest, glm::length(u->sp.p - v.sp.p));
+    }
+    if (!(shortest > 0.0f) || shortest == kInf) return kDeltaTolerance;
+    const float step = std::nextafter(far, kInf) - far;
+    return std::max(kDeltaTolerance, 256.0f * step / shortest);
+}
+
+DeltaLobe deltaLobe(const Material& m, const Vec3& n, const Vec3& wLight, const Vec3& wCamera, float tolerance) {
     DeltaLobe d;
     const float cosL = glm::dot(n, wLight), cosC = glm::dot(n, wCamera);
     if (!m.isDelta() || cosL == 0.0f || cosC == 0.0f) return d;
-    constexpr float kTolerance = 1e-3f;
+    const float kTolerance = tolerance;
     const bool sameSide = (cosL > 0.0f) == (cosC > 0.0f);
     const Vec3 ns = cosL > 0.0f ? n : -n;
     // The numbers of the lobe the two sides select (reflection on one side, refraction across);

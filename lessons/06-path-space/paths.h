@@ -117,7 +117,16 @@ struct DeltaLobe {
                              // the lobe times |d sigma(wCamera) / d sigma(wLight)|
                              // = (eta_L / eta_C)^2 |cos theta_L| / |cos theta_C| (1 for a mirror)
 };
-DeltaLobe deltaLobe(const Material& m, const Vec3& n, const Vec3& wLight, const Vec3& wCamera);
+// `tolerance`: how far (in radians, about) wCamera may be from the exact lobe direction and still
+// be valid. Directions between stored vertices carry the rounding of their float positions: pass
+// deltaTolerance(...) of the three vertices (1e-3 near the origin, more far from it or on a very
+// short edge: a scene moved by 1e5 rounds its positions to 8e-3).
+constexpr float kDeltaTolerance = 1e-3f;
+DeltaLobe deltaLobe(const Material& m, const Vec3& n, const Vec3& wLight, const Vec3& wCamera,
+                    float tolerance = kDeltaTolerance);
+// The direction tolerance at the specular vertex v between its neighbours a and b: 256 float steps
+// of the largest coordinate over the shorter edge, at least kDeltaTolerance.
+float deltaTolerance(const PathVertex& a, const PathVertex& v, const PathVertex& b);
 
 // One path of length k sampled with technique (s, t = k + 1 - s) from rng (Eq. 6.8): a light
 // subpath of s vertices (a light chosen by power, sampleEmission, then sampleBSDF in Importance

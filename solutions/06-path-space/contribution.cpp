@@ -10,6 +10,8 @@ DColor contribution(const Scene& scene, const Path& x) {
     //!          f_s * W_e^(j)(x_{k-1} -> x_k), W_e^(j) = width * height * camera.We (Eq. 4.6); 0 if k < 1.
     //!          Pitfalls: in double (DColor); evalBSDF(m, n, towards the camera, towards the light)
     //!          (lesson 3's order); a specular vertex gives deltaLobe's fs, 0 if !lobe.valid (Eq. 6.11).
+    //!          Pitfall: pass deltaTolerance(x[i-1], x[i], x[i+1]) to deltaLobe: far from the origin
+    //!          the stored positions round the directions past the default 1e-3.
     //! STUB (void)scene; (void)x;
     //! STUB return PS_TODO("lesson 06: contribution", DColor(0.0));
     //! BEGIN
@@ -25,7 +27,7 @@ DColor contribution(const Scene& scene, const Path& x) {
         const Material& m = scene.materials[size_t(x[i].sp.material)];
         const Vec3 wLight = direction(x[i], x[i - 1]), wCamera = direction(x[i], x[i + 1]);
         if (x[i].specular) {
-            const DeltaLobe lobe = deltaLobe(m, x[i].sp.n, wLight, wCamera);
+            const DeltaLobe lobe = deltaLobe(m, x[i].sp.n, wLight, wCamera, deltaTolerance(x[i - 1], x[i], x[i + 1]));
             f *= lobe.valid ? DColor(lobe.fs) : DColor(0.0);
         } else {
             f *= DColor(evalBSDF(m, x[i].sp.n, wCamera, wLight));

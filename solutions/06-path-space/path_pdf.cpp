@@ -11,6 +11,7 @@ double pdfTechnique(const Scene& scene, const Path& x, int s) {
     //!          edge is free. x0 and x1 as startLightPath samples them: P(l) and pdfEmission's
     //!          pdfA, pdfW (the background's x0 is a direction: pdfW; its x1 the disk point: pdfA |cos|);
     //!          then pdfBSDF, or deltaLobe's pdfLight / pdfCamera at a specular vertex (Eq. 6.11).
+    //!          (with deltaTolerance of the vertex and its two neighbours, as in contribution).
     //!          Pitfalls: 0 for what cannot be sampled (Eq. 6.12: t < 1, s = 0 at a point light, a
     //!          specular end of the joining edge, t = 1 with x_{k-1} the background); in double;
     //!          pdfBSDF's first argument is the direction the walk arrived from; no Russian roulette.
@@ -40,7 +41,8 @@ double pdfTechnique(const Scene& scene, const Path& x, int s) {
             const Vec3 wLight = direction(v, x[size_t(i) - 1]), wNext = direction(v, x[size_t(i) + 1]);
             float pdfW;
             if (v.specular) {
-                const DeltaLobe lobe = deltaLobe(m, v.sp.n, wLight, wNext);
+                const DeltaLobe lobe =
+                    deltaLobe(m, v.sp.n, wLight, wNext, deltaTolerance(x[size_t(i) - 1], v, x[size_t(i) + 1]));
                 pdfW = lobe.valid ? lobe.pdfLight : 0.0f;
             } else {
                 pdfW = pdfBSDF(m, v.sp.n, wLight, wNext);
@@ -59,7 +61,8 @@ double pdfTechnique(const Scene& scene, const Path& x, int s) {
             const Vec3 wCamera = direction(v, x[size_t(j) + 1]), wPrev = direction(v, x[size_t(j) - 1]);
             float pdfW;
             if (v.specular) {
-                const DeltaLobe lobe = deltaLobe(m, v.sp.n, wPrev, wCamera);
+                const DeltaLobe lobe =
+                    deltaLobe(m, v.sp.n, wPrev, wCamera, deltaTolerance(x[size_t(j) - 1], v, x[size_t(j) + 1]));
                 pdfW = lobe.valid ? lobe.pdfCamera : 0.0f;
             } else {
                 pdfW = pdfBSDF(m, v.sp.n, wCamera, wPrev);

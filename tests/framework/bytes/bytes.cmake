@@ -14,6 +14,10 @@ cmake_minimum_required(VERSION 3.16)
 if(NOT PATHSPACE OR NOT OUT)
   message(FATAL_ERROR "usage: cmake -DPATHSPACE=path/to/pathspace -DOUT=dir [-DWRITE=ON] -P bytes.cmake")
 endif()
+# Relative paths are taken from where cmake runs (a relative OUT once made the pyramid's images
+# invisible to the file search, and write mode dropped their hashes).
+get_filename_component(OUT "${OUT}" ABSOLUTE)
+get_filename_component(PATHSPACE "${PATHSPACE}" ABSOLUTE)
 get_filename_component(_here ${CMAKE_CURRENT_LIST_FILE} DIRECTORY)
 get_filename_component(_root ${_here}/../../.. ABSOLUTE)
 set(_list ${_here}/sha256.txt)
