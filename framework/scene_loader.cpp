@@ -99,6 +99,15 @@ std::string oneLine(std::string msg) {
     return msg;
 }
 
+// The words of one line of an OBJ or MTL file, '#' comments left out.
+std::vector<std::string> tokensOf(std::string line) {
+    if (size_t hash = line.find('#'); hash != std::string::npos) line.resize(hash);
+    std::istringstream ls(line);
+    std::vector<std::string> tok;
+    for (std::string t; ls >> t;) tok.push_back(t);
+    return tok;
+}
+
 std::string folderOf(const std::string& path) {
     size_t slash = path.find_last_of('/');
     return slash == std::string::npos ? std::string() : path.substr(0, slash + 1);
@@ -464,10 +473,7 @@ private:
         std::ifstream in(objPath);
         std::string s;
         for (int n = 1; std::getline(in, s); ++n) {
-            if (size_t hash = s.find('#'); hash != std::string::npos) s.resize(hash);
-            std::istringstream ls(s);
-            std::vector<std::string> tok;
-            for (std::string t; ls >> t;) tok.push_back(t);
+            const std::vector<std::string> tok = tokensOf(s);
             if (tok.empty()) continue;
             auto fail = [&](const std::string& problem) { throw InputError(objPath, n, problem + meshOf); };
             if (tok[0] == "v") {
@@ -508,17 +514,13 @@ private:
         checkFileSize(mtlPath, kMaxMeshBytes, [&](const std::string& problem) { throw InputError(mtlPath, 0, problem + meshOf); });
         std::string s;
         for (int n = 1; std::getline(in, s); ++n) {
-            if (size_t hash = s.find('#'); hash != std::string::npos) s.resize(hash);
-            std::istringstream ls(s);
-            std::vector<std::string> tok;
-            for (std::string t; ls >> t;) tok.push_back(t);
+            const std::vector<std::string> tok = tokensOf(s);
             if (tok.empty() || (tok[0] != "Kd" && tok[0] != "Ke")) continue;
             auto fail = [&](const std::string& problem) { throw InputError(mtlPath, n, problem + meshOf); };
             if (tok.size() != 4) fail("'" + tok[0] + "' needs three numbers (r g b), got " + std::to_string(tok.size() - 1));
             for (size_t k = 1; k < 4; ++k) {
                 float x = 0.0f;
-                auto [end, ec] = std::from_chars(tok[k].data(), tok[k].data() + tok[k].size(), x);
-                if (ec != std::errc() || end != tok[k].data() + tok[k].size() || !std::isfinite(x))
+                if (parseWhole(tok[k], x) != std::errc() || !std::isfinite(x))
                     fail("malformed or non-finite number '" + tok[k] + "' in '" + tok[0] + "'");
                 if (x < 0.0f) fail("'" + tok[0] + "' must not be negative, got " + tok[k]);
                 if (tok[0] == "Kd" && x > 1.0f)
