@@ -1,6 +1,7 @@
-// Lesson 7 — joining a light and a camera subpath: technique (s, t) (Eq. 7.2, 7.4) and the
-// reverse pdfs the connection creates (Eq. 7.6). Interface: lessons/07-bidirectional/bpt.h.
-// Equation numbers refer to lessons/07-bidirectional/README.md.
+// Lesson 7 — joining a light and a camera subpath: the four kinds of connection of technique
+// (s, t) (Eq. 7.2, 7.4) and the reverse pdfs a connection creates (Eq. 7.6). Interface:
+// lessons/07-bidirectional/bpt.h; connect() (lessons/07-bidirectional/techniques.cpp) picks the
+// kind and adds the reverse pdfs. Equation numbers refer to lessons/07-bidirectional/README.md.
 #include "07-bidirectional/bpt.h"
 #include "todo.h"
 
@@ -16,19 +17,48 @@ ReversePdfs connectionPdfs(const Scene& scene, const PathVertex* y, int s, const
     return PS_TODO("lesson 07: connectionPdfs", ReversePdfs());
 }
 
-Connection connect(const Scene& scene, const Subpath& light, const Subpath& camera, int s, int t, float uLight,
-                   const Vec2& uPos) {
-    // TODO(07) Eq. 7.2, 7.4: the unweighted contribution C*_{s,t} = beta_y f_y G f_z beta_z with
-    //          lesson 6's geometryTerm, for s = 0 (z_{t-1} emits), t = 1 (connectToCamera), s = 1
-    //          (a fresh sampleLight into c.sampledLight, pdfFwd = pdfLightOrigin, beta = 1 / pdfFwd)
-    //          and s, t >= 2, each after its shadow ray (s = 1: as lesson 2's next-event
-    //          estimation); valid = not black and unoccluded; then rev = connectionPdfs.
-    //          Pitfalls: f_x = evalBSDF(m, n, camera-side direction, light-side direction); s >= 1
-    //          never joins at a specular or background endpoint; t = 1 sets c.sampledLight =
-    //          light[0] too (the MIS reads y from it whenever s = 1); the background y_0's sp.n
-    //          points towards the background (ls.wi).
-    (void)scene; (void)light; (void)camera; (void)s; (void)t; (void)uLight; (void)uPos;
-    return PS_TODO("lesson 07: connect", Connection());
+Connection connectEmitter(const Scene& scene, const PathVertex* z, int t) {
+    // TODO(07) Eq. 7.2, 7.4 (s = 0): the camera subpath ends on a light: C* = beta_{t-1} times
+    //          the radiance z_{t-1} sends back along the walk (emittedRadiance of its light, or
+    //          the background's). Not valid if z_{t-1} emits nothing.
+    //          Pitfall: the emitted direction is from z_{t-1} TOWARDS z_{t-2} (the back of an area
+    //          light is black).
+    (void)scene; (void)z; (void)t;
+    return PS_TODO("lesson 07: connectEmitter", Connection());
+}
+
+Connection connectCamera(const Scene& scene, const PathVertex* y, int s) {
+    // TODO(07) Eq. 7.2, 7.4 (t = 1): y_{s-1} joined to the pinhole with lesson 5's
+    //          connectToCamera: C* = beta_{s-1} f importance, f = the BSDF from the camera's
+    //          direction to y_{s-2}'s, or for s = 1 what the light sends towards the camera
+    //          (a point light: its intensity); c.raster where it lands.
+    //          Pitfalls: no cosine at a point light (onSurface); a background y_0 is a direction,
+    //          not a point: it cannot be joined to the pinhole (Eq. 7.12).
+    (void)scene; (void)y; (void)s;
+    return PS_TODO("lesson 07: connectCamera", Connection());
+}
+
+Connection connectLight(const Scene& scene, const PathVertex* z, int t, float uLight, const Vec2& uPos) {
+    // TODO(07) Eq. 7.2, 7.4 (s = 1): next-event estimation from z_{t-1} as in lesson 2: a light
+    //          chosen with scene.selectLight(uLight, ...), a point on it with sampleLight(..., uPos),
+    //          stored as the new light vertex c.sampledLight (flags as a light subpath's y_0;
+    //          pdfFwd = pdfLightOrigin, beta = 1 / pdfFwd); C* = beta_y Le G f_z beta_z with
+    //          lesson 6's geometryTerm, after the shadow ray. Not valid at a background z_{t-1}.
+    //          Pitfalls: the background's y_0.sp.n points towards the background (ls.wi); a
+    //          shadow ray to a point light or the background is not spawnRayTo(a surface point).
+    (void)scene; (void)z; (void)t; (void)uLight; (void)uPos;
+    return PS_TODO("lesson 07: connectLight", Connection());
+}
+
+Connection connectVertices(const Scene& scene, const PathVertex* y, int s, const PathVertex* z, int t) {
+    // TODO(07) Eq. 7.2, 7.4 (s, t >= 2): the two endpoints joined by a shadow ray:
+    //          C* = beta_y f_y G f_z beta_z with lesson 6's geometryTerm; valid = not black and
+    //          unoccluded.
+    //          Pitfalls: each f is evalBSDF(m, n, towards the camera side, towards the light side)
+    //          at its own vertex; a background z_{t-1} cannot be joined; two coincident points
+    //          (direction 0) give nothing, not NaN.
+    (void)scene; (void)y; (void)s; (void)z; (void)t;
+    return PS_TODO("lesson 07: connectVertices", Connection());
 }
 
 }  // namespace ps

@@ -87,18 +87,38 @@ ReversePdfs connectionPdfs(const Scene& scene, const PathVertex* y, int s, const
 
 struct Connection {
     bool valid = false;
-    Color value = Color(0.0f);  // unweighted contribution C*_{s,t} (Eq. 7.4); t = 1: to splat
+    Color value = Color(0.0f);  // unweighted contribution C*_{s,t} (Eq. 7.2); t = 1: to splat
     Vec2 raster;                // t = 1: where the light vertex lands on the image
     PathVertex sampledLight;    // s = 1: the light vertex sampled for this connection (it
                                 // replaces the light subpath's y_0, Eq. 7.2)
-    ReversePdfs rev;
+    ReversePdfs rev;            // filled by connect() when valid
 };
 
-// Technique (s, t) for the given subpaths (s <= light.size(), t <= camera.size(), t >= 1):
-// s = 0: z_{t-1} is on an emitter or at infinity; s = 1: a new light sample (uLight, uPos from
-// the caller) towards z_{t-1}; t = 1: y_{s-1} to the pinhole (connectToCamera); otherwise
-// both endpoints' BSDFs and lesson 6's geometryTerm, after a visibility test. Not valid when a
-// connected endpoint is specular or nothing arrives.
+// The four kinds of connection (Eq. 7.4), one function each: C*_{s,t} = beta^L_{s-1} c_{s,t}
+// beta^E_{t-1} (Eq. 7.2) in `value`, valid when it is not black and the shadow ray (if any) is
+// unoccluded. y points to the light subpath's first s vertices, z to the camera subpath's first t.
+// A specular endpoint gives nothing (evalBSDF of a delta BSDF is 0 for every given pair of
+// directions); bptSample does not even call them there unless pruning is off (Eq. 7.12).
+
+// s = 0, t >= 2: z_{t-1} is on an emitter or at infinity: c = Le(z_{t-1} -> z_{t-2}).
+Connection connectEmitter(const Scene& scene, const PathVertex* z, int t);
+
+// t = 1, s >= 1: y_{s-1} joined to the pinhole by lesson 5's connectToCamera (c = f W_e G; for
+// s = 1 the light's own emission towards the camera); raster: where it lands. Not valid for a
+// background y_0 (a direction cannot be joined to the pinhole).
+Connection connectCamera(const Scene& scene, const PathVertex* y, int s);
+
+// s = 1, t >= 2: a new light vertex for z_{t-1} (next-event estimation, lesson 2: the light by
+// scene.selectLight(uLight), the point by sampleLight(uPos)) in sampledLight, with pdfFwd =
+// pdfLightOrigin and beta = 1 / pdfFwd; c = Le G f. Not valid at a background z_{t-1}.
+Connection connectLight(const Scene& scene, const PathVertex* z, int t, float uLight, const Vec2& uPos);
+
+// s, t >= 2: y_{s-1} and z_{t-1} joined by a shadow ray: c = f G f.
+Connection connectVertices(const Scene& scene, const PathVertex* y, int s, const PathVertex* z, int t);
+
+// Technique (s, t) for the given subpaths (plumbing, techniques.cpp; s <= light.size() except
+// s = 1, t >= 2; t <= camera.size(), t >= 1): the connection of its kind, then, if valid, rev =
+// connectionPdfs. For t = 1 sampledLight is light[0] (the MIS reads y from it whenever s = 1).
 Connection connect(const Scene& scene, const Subpath& light, const Subpath& camera, int s, int t, float uLight,
                    const Vec2& uPos);
 

@@ -1,6 +1,7 @@
-// Lesson 7 — joining a light and a camera subpath: technique (s, t) (Eq. 7.2, 7.4) and the
-// reverse pdfs the connection creates (Eq. 7.6). Interface: lessons/07-bidirectional/bpt.h.
-// Equation numbers refer to lessons/07-bidirectional/README.md.
+// Lesson 7 — joining a light and a camera subpath: the four kinds of connection of technique
+// (s, t) (Eq. 7.2, 7.4) and the reverse pdfs a connection creates (Eq. 7.6). Interface:
+// lessons/07-bidirectional/bpt.h; connect() (lessons/07-bidirectional/techniques.cpp) picks the
+// kind and adds the reverse pdfs. Equation numbers refer to lessons/07-bidirectional/README.md.
 #include "07-bidirectional/bpt.h"
 #include "todo.h"
 
@@ -33,92 +34,122 @@ ReversePdfs connectionPdfs(const Scene& scene, const PathVertex* y, int s, const
     //! END
 }
 
-Connection connect(const Scene& scene, const Subpath& light, const Subpath& camera, int s, int t, float uLight,
-                   const Vec2& uPos) {
-    //! TODO(07) Eq. 7.2, 7.4: the unweighted contribution C*_{s,t} = beta_y f_y G f_z beta_z with
-    //!          lesson 6's geometryTerm, for s = 0 (z_{t-1} emits), t = 1 (connectToCamera), s = 1
-    //!          (a fresh sampleLight into c.sampledLight, pdfFwd = pdfLightOrigin, beta = 1 / pdfFwd)
-    //!          and s, t >= 2, each after its shadow ray (s = 1: as lesson 2's next-event
-    //!          estimation); valid = not black and unoccluded; then rev = connectionPdfs.
-    //!          Pitfalls: f_x = evalBSDF(m, n, camera-side direction, light-side direction); s >= 1
-    //!          never joins at a specular or background endpoint; t = 1 sets c.sampledLight =
-    //!          light[0] too (the MIS reads y from it whenever s = 1); the background y_0's sp.n
-    //!          points towards the background (ls.wi).
-    //! STUB (void)scene; (void)light; (void)camera; (void)s; (void)t; (void)uLight; (void)uPos;
-    //! STUB return PS_TODO("lesson 07: connect", Connection());
+Connection connectEmitter(const Scene& scene, const PathVertex* z, int t) {
+    //! TODO(07) Eq. 7.2, 7.4 (s = 0): the camera subpath ends on a light: C* = beta_{t-1} times
+    //!          the radiance z_{t-1} sends back along the walk (emittedRadiance of its light, or
+    //!          the background's). Not valid if z_{t-1} emits nothing.
+    //!          Pitfall: the emitted direction is from z_{t-1} TOWARDS z_{t-2} (the back of an area
+    //!          light is black).
+    //! STUB (void)scene; (void)z; (void)t;
+    //! STUB return PS_TODO("lesson 07: connectEmitter", Connection());
     //! BEGIN
     Connection c;
-    const PathVertex& zEnd = camera[size_t(t - 1)];
-    const auto material = [&](const PathVertex& v) -> const Material& { return scene.materials[size_t(v.sp.material)]; };
-    if (s == 0) {
-        if (zEnd.infinite) c.value = zEnd.beta * scene.backgroundRadiance();
-        else if (zEnd.onLight)
-            c.value = zEnd.beta * emittedRadiance(scene.lights[size_t(zEnd.sp.light)], zEnd.sp.n,
-                                                  direction(zEnd, camera[size_t(t - 2)]));
-        c.valid = !isBlack(c.value);
-    } else if (t == 1) {
-        c.sampledLight = light[0];
-        const PathVertex& yEnd = light[size_t(s - 1)];
-        if (yEnd.infinite) return c;
-        const CameraConnection cc = connectToCamera(scene, yEnd.sp, yEnd.onSurface());
-        if (!cc.valid) return c;
-        Color f;
-        if (s == 1) {
-            const Light& l = scene.lights[size_t(yEnd.sp.light)];
-            f = l.isDelta() ? l.Le : emittedRadiance(l, yEnd.sp.n, cc.wCam);
-        } else {
-            f = evalBSDF(material(yEnd), yEnd.sp.n, cc.wCam, direction(yEnd, light[size_t(s - 2)]));
-        }
-        c.value = yEnd.beta * f * cc.importance;
-        c.raster = cc.raster;
-        c.valid = !isBlack(c.value);
-    } else if (s == 1) {
-        if (zEnd.infinite) return c;
-        float P = 0.0f;
-        const int l = scene.selectLight(uLight, P);
-        if (l < 0) return c;
-        const LightSample ls = sampleLight(scene, l, zEnd.sp.p, uPos);
-        const Light& lt = scene.lights[size_t(l)];
-        PathVertex& y0 = c.sampledLight;
-        y0.sp.p = ls.p;
-        y0.sp.n = ls.n;
-        y0.sp.errScale = maxAbsComponent(ls.p);
-        y0.sp.light = l;
-        y0.onLight = true;
-        y0.pointLight = lt.isDelta();
-        y0.infinite = lt.isInfinite();
-        if (y0.infinite) y0.sp.n = ls.wi;   // towards the background (lesson 6's convention)
-        y0.pdfFwd = pdfLightOrigin(scene, y0);
-        if (!(y0.pdfFwd > 0.0f && ls.pdf > 0.0f)) return c;
-        y0.beta = Color(1.0f / y0.pdfFwd);
-        const float G = geometryTerm(y0, zEnd);
-        const Color fz = evalBSDF(material(zEnd), zEnd.sp.n, direction(zEnd, camera[size_t(t - 2)]), ls.wi);
-        c.value = zEnd.beta * fz * ls.Le * G * y0.beta;
-        if (isBlack(c.value) || !isFinite(c.value)) {
-            c.value = isFinite(c.value) ? c.value : Color(0.0f);
-            return c;
-        }
-        bool visible = false;
-        switch (lt.kind) {
-        case LightKind::Area: visible = !scene.occluded(scene.spawnRayTo(zEnd.sp, y0.sp)); break;
-        case LightKind::Point: visible = !scene.occluded(scene.spawnRayTo(zEnd.sp, ls.p)); break;
-        case LightKind::Background: visible = !scene.occluded(scene.spawnRay(zEnd.sp, ls.wi)); break;
-        }
-        c.valid = visible;
+    const PathVertex& zEnd = z[t - 1];
+    if (zEnd.infinite) c.value = zEnd.beta * scene.backgroundRadiance();
+    else if (zEnd.onLight)
+        c.value = zEnd.beta * emittedRadiance(scene.lights[size_t(zEnd.sp.light)], zEnd.sp.n, direction(zEnd, z[t - 2]));
+    c.valid = !isBlack(c.value);
+    return c;
+    //! END
+}
+
+Connection connectCamera(const Scene& scene, const PathVertex* y, int s) {
+    //! TODO(07) Eq. 7.2, 7.4 (t = 1): y_{s-1} joined to the pinhole with lesson 5's
+    //!          connectToCamera: C* = beta_{s-1} f importance, f = the BSDF from the camera's
+    //!          direction to y_{s-2}'s, or for s = 1 what the light sends towards the camera
+    //!          (a point light: its intensity); c.raster where it lands.
+    //!          Pitfalls: no cosine at a point light (onSurface); a background y_0 is a direction,
+    //!          not a point: it cannot be joined to the pinhole (Eq. 7.12).
+    //! STUB (void)scene; (void)y; (void)s;
+    //! STUB return PS_TODO("lesson 07: connectCamera", Connection());
+    //! BEGIN
+    Connection c;
+    const PathVertex& yEnd = y[s - 1];
+    if (yEnd.infinite) return c;
+    const CameraConnection cc = connectToCamera(scene, yEnd.sp, yEnd.onSurface());
+    if (!cc.valid) return c;
+    Color f;
+    if (s == 1) {
+        const Light& l = scene.lights[size_t(yEnd.sp.light)];
+        f = l.isDelta() ? l.Le : emittedRadiance(l, yEnd.sp.n, cc.wCam);
     } else {
-        const PathVertex& yEnd = light[size_t(s - 1)];
-        if (zEnd.infinite) return c;
-        const Vec3 w = direction(zEnd, yEnd);
-        if (w == Vec3(0.0f)) return c;
-        const Color fy = evalBSDF(material(yEnd), yEnd.sp.n, -w, direction(yEnd, light[size_t(s - 2)]));
-        const Color fz = evalBSDF(material(zEnd), zEnd.sp.n, direction(zEnd, camera[size_t(t - 2)]), w);
-        const float G = geometryTerm(yEnd, zEnd);
-        c.value = yEnd.beta * fy * G * fz * zEnd.beta;
-        if (isBlack(c.value)) return c;
-        c.valid = !scene.occluded(scene.spawnRayTo(zEnd.sp, yEnd.sp));
+        f = evalBSDF(scene.materials[size_t(yEnd.sp.material)], yEnd.sp.n, cc.wCam, direction(yEnd, y[s - 2]));
     }
-    if (!c.valid) return c;
-    c.rev = connectionPdfs(scene, s == 1 ? &c.sampledLight : light.data(), s, camera.data(), t);
+    c.value = yEnd.beta * f * cc.importance;
+    c.raster = cc.raster;
+    c.valid = !isBlack(c.value);
+    return c;
+    //! END
+}
+
+Connection connectLight(const Scene& scene, const PathVertex* z, int t, float uLight, const Vec2& uPos) {
+    //! TODO(07) Eq. 7.2, 7.4 (s = 1): next-event estimation from z_{t-1} as in lesson 2: a light
+    //!          chosen with scene.selectLight(uLight, ...), a point on it with sampleLight(..., uPos),
+    //!          stored as the new light vertex c.sampledLight (flags as a light subpath's y_0;
+    //!          pdfFwd = pdfLightOrigin, beta = 1 / pdfFwd); C* = beta_y Le G f_z beta_z with
+    //!          lesson 6's geometryTerm, after the shadow ray. Not valid at a background z_{t-1}.
+    //!          Pitfalls: the background's y_0.sp.n points towards the background (ls.wi); a
+    //!          shadow ray to a point light or the background is not spawnRayTo(a surface point).
+    //! STUB (void)scene; (void)z; (void)t; (void)uLight; (void)uPos;
+    //! STUB return PS_TODO("lesson 07: connectLight", Connection());
+    //! BEGIN
+    Connection c;
+    const PathVertex& zEnd = z[t - 1];
+    if (zEnd.infinite) return c;
+    float P = 0.0f;
+    const int l = scene.selectLight(uLight, P);
+    if (l < 0) return c;
+    const LightSample ls = sampleLight(scene, l, zEnd.sp.p, uPos);
+    const Light& light = scene.lights[size_t(l)];
+    PathVertex& y0 = c.sampledLight;
+    y0.sp.p = ls.p;
+    y0.sp.n = ls.n;
+    y0.sp.errScale = maxAbsComponent(ls.p);
+    y0.sp.light = l;
+    y0.onLight = true;
+    y0.pointLight = light.isDelta();
+    y0.infinite = light.isInfinite();
+    if (y0.infinite) y0.sp.n = ls.wi;   // towards the background (lesson 6's convention)
+    y0.pdfFwd = pdfLightOrigin(scene, y0);
+    if (!(y0.pdfFwd > 0.0f && ls.pdf > 0.0f)) return c;
+    y0.beta = Color(1.0f / y0.pdfFwd);
+    const Color fz = evalBSDF(scene.materials[size_t(zEnd.sp.material)], zEnd.sp.n, direction(zEnd, z[t - 2]), ls.wi);
+    c.value = zEnd.beta * fz * ls.Le * geometryTerm(y0, zEnd) * y0.beta;
+    if (isBlack(c.value) || !isFinite(c.value)) {
+        c.value = isFinite(c.value) ? c.value : Color(0.0f);
+        return c;
+    }
+    switch (light.kind) {
+    case LightKind::Area: c.valid = !scene.occluded(scene.spawnRayTo(zEnd.sp, y0.sp)); break;
+    case LightKind::Point: c.valid = !scene.occluded(scene.spawnRayTo(zEnd.sp, ls.p)); break;
+    case LightKind::Background: c.valid = !scene.occluded(scene.spawnRay(zEnd.sp, ls.wi)); break;
+    }
+    return c;
+    //! END
+}
+
+Connection connectVertices(const Scene& scene, const PathVertex* y, int s, const PathVertex* z, int t) {
+    //! TODO(07) Eq. 7.2, 7.4 (s, t >= 2): the two endpoints joined by a shadow ray:
+    //!          C* = beta_y f_y G f_z beta_z with lesson 6's geometryTerm; valid = not black and
+    //!          unoccluded.
+    //!          Pitfalls: each f is evalBSDF(m, n, towards the camera side, towards the light side)
+    //!          at its own vertex; a background z_{t-1} cannot be joined; two coincident points
+    //!          (direction 0) give nothing, not NaN.
+    //! STUB (void)scene; (void)y; (void)s; (void)z; (void)t;
+    //! STUB return PS_TODO("lesson 07: connectVertices", Connection());
+    //! BEGIN
+    Connection c;
+    const PathVertex& yEnd = y[s - 1];
+    const PathVertex& zEnd = z[t - 1];
+    if (zEnd.infinite || yEnd.infinite) return c;
+    const Vec3 w = direction(zEnd, yEnd);
+    if (w == Vec3(0.0f)) return c;
+    const auto material = [&](const PathVertex& v) -> const Material& { return scene.materials[size_t(v.sp.material)]; };
+    const Color fy = evalBSDF(material(yEnd), yEnd.sp.n, -w, direction(yEnd, y[s - 2]));
+    const Color fz = evalBSDF(material(zEnd), zEnd.sp.n, direction(zEnd, z[t - 2]), w);
+    c.value = yEnd.beta * fy * geometryTerm(yEnd, zEnd) * fz * zEnd.beta;
+    if (isBlack(c.value)) return c;
+    c.valid = !scene.occluded(scene.spawnRayTo(zEnd.sp, yEnd.sp));
     return c;
     //! END
 }

@@ -1,0 +1,21 @@
+// Lesson 7 — technique (s, t) (plumbing: read it, nothing to write here): picks the kind of
+// connection of Eq. 7.4 (connect.cpp, yours) and adds the reverse pdfs the connection creates
+// (Eq. 7.6). Interface: lessons/07-bidirectional/bpt.h.
+#include "07-bidirectional/bpt.h"
+
+namespace ps {
+
+Connection connect(const Scene& scene, const Subpath& light, const Subpath& camera, int s, int t, float uLight,
+                   const Vec2& uPos) {
+    Connection c;
+    if (s == 0) c = connectEmitter(scene, camera.data(), t);
+    else if (t == 1) {
+        c = connectCamera(scene, light.data(), s);
+        c.sampledLight = light[0];   // the MIS reads y_0 from here whenever s = 1
+    } else if (s == 1) c = connectLight(scene, camera.data(), t, uLight, uPos);
+    else c = connectVertices(scene, light.data(), s, camera.data(), t);
+    if (c.valid) c.rev = connectionPdfs(scene, s == 1 ? &c.sampledLight : light.data(), s, camera.data(), t);
+    return c;
+}
+
+}  // namespace ps
