@@ -1,32 +1,38 @@
 #!/usr/bin/env bash
 # Checks that the tracked C++ files are formatted as .clang-format says. Lists the files that
-# differ and exits 1 if there are any; 0 when all match. Changes nothing.
+# differ and exits 1 if there are any; 0 when all match. Changes nothing. assignments/ is left
+# out: it is generated from solutions/ (tools/skeleton.cpp), whose format is checked.
 #   bash scripts/check-format.sh            # every tracked .cpp and .h
 #   bash scripts/check-format.sh FILE...    # only these
 #   CLANG_FORMAT=clang-format-14 bash scripts/check-format.sh
+# .clang-format is written for clang-format 14 (Debian 12's): another major version formats some
+# constructs differently, so without version 14 the check is skipped with a note (exit 0).
 # To fix a file: clang-format -i FILE (Debian: apt-get install clang-format).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 cf="${CLANG_FORMAT:-clang-format}"
 if ! command -v "$cf" >/dev/null 2>&1; then
-  echo "check-format: $cf not found (Debian: apt-get install clang-format)" >&2
-  exit 2
+  echo "check-format: $cf not found: format check skipped (Debian 12: apt-get install clang-format)" >&2
+  exit 0
+fi
+major=$("$cf" --version | sed -n 's/.*version \([0-9]*\)\..*/\1/p')
+if [ "$major" != 14 ]; then
+  echo "check-format: $cf is version ${major:-unknown}, .clang-format is written for 14: format check skipped" >&2
+  exit 0
 fi
 if [ $# -gt 0 ]; then
   files=("$@")
 else
-  mapfile -t files < <(git ls-files '*.cpp' '*.h')
+  mapfile -t files < <(git ls-files '*.cpp' '*.h' | grep -v '^assignments/')
 fi
-bad=0
-for f in "${files[@]}"; do
-  if ! "$cf" --style=file --dry-run -Werror "$f" >/dev/null 2>&1; then
+bad=$(printf '%s\0' "${files[@]}" | xargs -0 -n 8 -P "$(nproc)" sh -c '
+  for f in "$@"; do "$0" --style=file --dry-run -Werror "$f" >/dev/null 2>&1 || echo "$f"; done' "$cf")
+if [ -n "$bad" ]; then
+  while IFS= read -r f; do
     changed=$("$cf" --style=file "$f" | diff "$f" - | grep -c '^<' || true)
     echo "$f: $changed line(s) differ (clang-format -i $f)"
-    bad=$((bad + 1))
-  fi
-done
-if [ "$bad" -gt 0 ]; then
-  echo "check-format: $bad of ${#files[@]} file(s) are not formatted as .clang-format says" >&2
+  done <<< "$bad"
+  echo "check-format: $(printf '%s\n' "$bad" | wc -l) of ${#files[@]} file(s) are not formatted as .clang-format says" >&2
   exit 1
 fi
 echo "check-format: ${#files[@]} file(s) formatted as .clang-format says"

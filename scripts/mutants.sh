@@ -8,6 +8,10 @@
 #   MUTANTS_ONLY="ID ..."  run only these mutants (e.g. "02-h 02-k")
 #   MUTANTS_FULL=1    run all of the lesson's graded tests for each mutant and list every one that
 #                     fails (default: stop at the first failure, which is enough to catch it)
+#   bash scripts/mutants.sh --check [NN ...]   only checks that every catalogue entry still
+#                     applies (its original text found exactly once): no build, a second; the
+#                     README test command runs it, so a change to solutions/ cannot leave a stale
+#                     catalogue behind
 # The repository is never modified: the mutants are applied to DIR/submission, a copy of
 # solutions/, built as a submission (-DPATHSPACE_STUDENT=all -DPATHSPACE_ASSIGNMENTS_DIR=...),
 # incrementally (one object file and the lesson's test program per mutant).
@@ -29,6 +33,8 @@ scratch="$(cd "$scratch" && pwd)"
 sub="$scratch/submission"
 bld="$scratch/build"
 
+check_only=0
+if [ "${1:-}" = "--check" ]; then check_only=1; shift; fi
 if [ $# -gt 0 ]; then lessons=("$@"); else
     lessons=()
     for f in "$src"/tests/mutants/[0-9][0-9].txt; do lessons+=("$(basename "$f" .txt)"); done
@@ -56,6 +62,34 @@ replace() {
               printf "%s%s%s", substr(buf, 1, i - 1), r, rest }' "$3" > "$3.mutant" || { local rc=$?; rm -f "$3.mutant"; return $rc; }
     mv "$3.mutant" "$3"
 }
+
+if [ $check_only = 1 ]; then
+    stale=0; entries=0
+    tmp="$(mktemp)"
+    for NN in "${lessons[@]}"; do
+        id=""; file=""; orig=""
+        while IFS= read -r line || [ -n "$line" ]; do
+            case "$line" in
+                "@ "*) read -r _ id file <<< "$line"; orig="" ;;
+                "- "*) orig="${line#- }" ;;
+                "+ "* | "+") repl="${line#+}"; repl="${repl# }"; entries=$((entries + 1))
+                    if [ ! -f "$src/solutions/$file" ]; then
+                        echo "mutants: $NN.txt $id: no file solutions/$file" >&2; stale=$((stale + 1)); continue
+                    fi
+                    cp "$src/solutions/$file" "$tmp"
+                    rc=0; replace "$orig" "$repl" "$tmp" || rc=$?
+                    if [ $rc -eq 3 ]; then echo "mutants: $NN.txt $id: original text not found in solutions/$file" >&2; stale=$((stale + 1))
+                    elif [ $rc -eq 4 ]; then echo "mutants: $NN.txt $id: original text found more than once in solutions/$file" >&2; stale=$((stale + 1))
+                    elif cmp -s "$src/solutions/$file" "$tmp"; then echo "mutants: $NN.txt $id: the replacement changes nothing" >&2; stale=$((stale + 1))
+                    fi ;;
+            esac
+        done < "$src/tests/mutants/$NN.txt"
+    done
+    rm -f "$tmp" "$tmp.mutant"
+    if [ $stale -gt 0 ]; then echo "mutants: $stale of $entries catalogue entries are stale (fix tests/mutants/NN.txt)" >&2; exit 1; fi
+    echo "mutants: all $entries catalogue entries apply to solutions/ (run without --check to grade them)"
+    exit 0
+fi
 
 current=""   # the file of $sub currently mutated (restored on exit, even on Ctrl-C)
 restore() { [ -n "$current" ] && cp "$src/solutions/$current" "$sub/$current"; current=""; }
