@@ -29,7 +29,7 @@ const char* const kUsage = R"(converge options:
                      whose centre ray first hits a surface of material Mk (a 'material' name
                      of the scene file); printed and written to DIR/regions.md
   --seeds K          independent runs per algorithm, averaged in the plot and table (default 1)
-  --out DIR          where the report goes (default: converge-SCENE); it holds
+  --out DIR          where the report goes (default: converge-SCENE; made if missing); it holds
                      convergence.csv, convergence.svg (log-log relMSE against seconds with a
                      slope -1 guide), efficiency.md, equal-time.png (the algorithms' images at
                      the end of the budget, left to right in --algos order, then the reference)

@@ -12,8 +12,8 @@ namespace ps {
 namespace {
 
 const char* const kUsage = R"(pyramid options:
-  --max-length K     path lengths 1..K (K edges at most; 1 to 12, default 4); row k of the pyramid holds
-                     the techniques s = 0..k+1 (t = k+1-s) from left to right
+  --max-length K     path lengths 1..K (K edges at most, 1 to 12; default 4); row k of the
+                     pyramid holds the techniques s = 0..k+1 (t = k+1-s) from left to right
   --spp N            samples per pixel (default: the scene's)
   --seed S, --threads T, --no-prune   as for render
   --exposure E       PNG exposure in stops, -100 to 100 (default 0)

@@ -16,13 +16,15 @@ namespace {
 const char* const kUsage = R"(render options:
   --algo NAME        integrator (default: the scene's 'render algo', else eyelight)
   --spp N            iterations (samples per pixel) to render (default: the scene's)
-  --time SECONDS     stop after this much render time instead (with --spp: whichever first)
+  --time SECONDS     stop after this much render time instead (with --spp: whichever first);
+                     a positive finite number
   --maxdepth D       maximum number of bounces, 0 = emission seen directly (default: the scene's)
   --seed S           random seed (default 0); the same seed gives the same image
-  --threads T        worker threads (default: all cores); the image does not depend on it
+  --threads T        worker threads, 1 to 1024 (default: all cores); the image does not
+                     depend on it
   --out FILE         output image, .png, .pfm or .hdr (default: SCENE's name + .png);
                      a .pfm with the exact values is always written next to a .png or .hdr
-  --variance FILE    also write the per-pixel variance of the mean as a .pfm
+  --variance FILE    also write the per-pixel variance of the mean (FILE ends in .pfm)
   --reference REF    a reference image (.pfm or .hdr): log error against run time
   --csv FILE         where that log goes (default: the output's name + .csv)
   --no-prune         do not leave out work the scene cannot use (integrators print what
