@@ -13,7 +13,9 @@
 // task loops) is compiled from lessons/NN-name/*.cpp, and a submitted file with the name of one
 // of those is left out (cmake/lessons.cmake), so a student cannot change how a lesson is run.
 // For each lesson: configure and build in OUT/build-NN, run its graded tests (CTest label
-// lesson-NN) with a per-test timeout, read CTest's JUnit report. A test's points are in its
+// lesson-NN) with a per-test timeout (given to CMake as PATHSPACE_TEST_TIMEOUT, since the tests'
+// TIMEOUT property would win over ctest --timeout), read CTest's JUnit report and, for the tests
+// stopped by the timeout, ctest's log (the JUnit report does not say). A test's points are in its
 // name ("... [3 pts]", else 1). A lesson that does not build scores 0 on every test; a test
 // that crashes or times out scores 0; the other tests are still graded.
 // Writes OUT/results.json (Gradescope format), OUT/junit.xml, and prints a score table.
@@ -221,7 +223,7 @@ std::string failureSummary(const TestResult& r) {
             ++kept;
         }
     }
-    if (r.timedOut) return r.message + "\n" + summary;
+    if (r.timedOut) return r.message + (summary.empty() ? "" : "\n" + summary);
     return summary.empty() ? r.message : summary;
 }
 
@@ -257,6 +259,8 @@ int main(int argc, char** argv) {
                          "Scores each lesson in isolation (that lesson from DIR, the others from solutions/).\n"
                          "DIR holds lesson folders like assignments/ (default: assignments/). Writes\n"
                          "OUT/results.json (Gradescope) and OUT/junit.xml (default OUT: ./grade).\n"
+                         "--timeout SECONDS limits each graded test (default 120; a test it stops scores 0 and is\n"
+                         "reported as 'timed out after SECONDS s'); --jobs N builds and tests N at a time (default 2).\n"
                          "--junit FILE scores the graded tests from an existing CTest JUnit report instead of\n"
                          "building; --expect zero|full then exits 1 unless every graded test failed / passed.\n";
             return 0;
@@ -370,7 +374,7 @@ int main(int argc, char** argv) {
         perLesson[r.lesson].first += got;
         perLesson[r.lesson].second += r.points;
         std::printf("%-16s %-70.70s %3d/%-2d  %s\n", r.lesson.c_str(), r.name.c_str(), got, r.points,
-                    r.passed ? "pass" : r.timedOut ? ("FAIL: " + r.message).c_str() : "FAIL");
+                    r.passed ? "pass" : r.timedOut ? "TIMEOUT" : "FAIL");
         const std::string why = r.passed ? "" : failureSummary(r);
         if (!r.passed) {
             std::istringstream in(why);
