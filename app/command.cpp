@@ -1,6 +1,12 @@
 #include "command.h"
 #include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
 #include <iostream>
+#include <sstream>
 #include "integrator.h"
 #include "scene.h"
 #if defined(_WIN32)
@@ -35,6 +41,99 @@ const Command* findCommand(const std::string& name) {
     for (const Command& c : registry())
         if (c.name == name) return &c;
     return nullptr;
+}
+
+double parsePositive(const std::string& opt, const std::string& s) {
+    const double v = parseNumber<double>(opt, s);
+    if (!(v > 0.0) || !std::isfinite(v)) throw UsageError("option " + opt + " must be a positive number, got '" + s + "'");
+    return v;
+}
+
+namespace {
+namespace fs = std::filesystem;
+
+[[noreturn]] void badOutput(const std::string& option, const std::string& path, const std::string& problem) {
+    throw UsageError("option " + option + " '" + path + "': " + problem);
+}
+
+// errno's text, or `otherwise` when the library left errno unset.
+std::string reason(int err, const std::string& otherwise) {
+    return err != 0 ? std::string(std::strerror(err)) : otherwise;
+}
+
+std::string lowerExtension(const fs::path& p) {
+    std::string ext = p.extension().string();
+    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return ext;
+}
+
+std::string listed(const std::vector<std::string>& items) {
+    std::string out;
+    for (size_t i = 0; i < items.size(); ++i)
+        out += (i == 0 ? "" : i + 1 == items.size() ? " or " : ", ") + items[i];
+    return out;
+}
+
+void checkOutputFile(const OutputFile& f) {
+    if (f.path.empty()) badOutput(f.option, f.path, "empty file name");
+    const fs::path p(f.path);
+    std::error_code ec;
+    if (!p.has_filename() || fs::is_directory(p, ec)) badOutput(f.option, f.path, "is a folder, not a file name");
+    if (!f.extensions.empty()) {
+        const std::string ext = lowerExtension(p);
+        if (std::find(f.extensions.begin(), f.extensions.end(), ext) == f.extensions.end())
+            badOutput(f.option, f.path,
+                      (ext.empty() ? std::string("no extension") : "unknown extension '" + p.extension().string() + "'") +
+                          " (use " + listed(f.extensions) + ")");
+    }
+    const fs::path folder = p.has_parent_path() ? p.parent_path() : fs::path(".");
+    if (!fs::exists(folder, ec)) badOutput(f.option, f.path, "folder '" + folder.string() + "' does not exist");
+    if (!fs::is_directory(folder, ec)) badOutput(f.option, f.path, "'" + folder.string() + "' is not a folder");
+    // Try it: append (an existing file keeps its bytes), and remove what did not exist before.
+    const bool existed = fs::exists(p, ec);
+    errno = 0;
+    std::ofstream probe(f.path, std::ios::binary | std::ios::app);
+    const int err = errno;
+    if (!probe) badOutput(f.option, f.path, "cannot be written (" + reason(err, "cannot open for writing") + ")");
+    probe.close();
+    if (!existed) fs::remove(p, ec);
+}
+}  // namespace
+
+void checkOutputFiles(const std::vector<OutputFile>& files) {
+    for (size_t i = 0; i < files.size(); ++i) {
+        checkOutputFile(files[i]);
+        const fs::path a = fs::absolute(files[i].path).lexically_normal();
+        for (size_t j = 0; j < i; ++j)
+            if (fs::absolute(files[j].path).lexically_normal() == a)
+                badOutput(files[i].option, files[i].path,
+                          "is also the file of " + files[j].option + " ('" + files[j].path + "')");
+    }
+}
+
+void checkOutputFolder(const std::string& option, const std::string& folder, const std::vector<std::string>& files) {
+    if (folder.empty()) badOutput(option, folder, "empty folder name");
+    std::error_code ec;
+    const fs::path p = fs::path(folder).lexically_normal();
+    if (fs::exists(p, ec)) {
+        if (!fs::is_directory(p, ec)) badOutput(option, folder, "exists and is not a folder");
+        std::vector<OutputFile> inside;
+        for (const std::string& name : files) inside.push_back({option, (p / name).string(), {}});
+        checkOutputFiles(inside);
+        return;
+    }
+    // The nearest existing ancestor must be a folder in which the first missing one can be made.
+    fs::path missing = p, parent;
+    for (;;) {
+        parent = missing.has_parent_path() ? missing.parent_path() : fs::path(".");
+        if (fs::exists(parent, ec) || parent == missing) break;
+        missing = parent;
+    }
+    if (!fs::is_directory(parent, ec)) badOutput(option, folder, "'" + parent.string() + "' is not a folder");
+    if (!fs::create_directory(missing, ec))
+        badOutput(option, folder,
+                  "cannot make folder '" + missing.string() + "' (" + (ec ? ec.message() : "unknown reason") + ")");
+    fs::remove(missing, ec);
 }
 
 std::string stem(const std::string& path) {

@@ -5,6 +5,7 @@
 // from the same entries, so a new command is documented as soon as it exists.
 #pragma once
 #include <ostream>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -49,6 +50,54 @@ T parseNumber(const std::string& opt, const std::string& s) {
     if (parseWhole(s, v) != std::errc()) throw UsageError("option " + opt + " needs a number, got '" + s + "'");
     return v;
 }
+
+// parseNumber and a range. parseAtLeast: UsageError "option OPT must be at least MIN, got 'S'";
+// parseWithin: "option OPT must be from LO to HI, got 'S'" (a NaN is never within).
+template <class T>
+std::string numberText(T v) {
+    std::ostringstream os;
+    os << v;
+    return os.str();
+}
+template <class T>
+T parseAtLeast(const std::string& opt, const std::string& s, T min) {
+    const T v = parseNumber<T>(opt, s);
+    if (!(v >= min)) throw UsageError("option " + opt + " must be at least " + numberText(min) + ", got '" + s + "'");
+    return v;
+}
+template <class T>
+T parseWithin(const std::string& opt, const std::string& s, T lo, T hi) {
+    const T v = parseNumber<T>(opt, s);
+    if (!(v >= lo && v <= hi))
+        throw UsageError("option " + opt + " must be from " + numberText(lo) + " to " + numberText(hi) + ", got '" + s + "'");
+    return v;
+}
+// --threads: at most this many (OpenMP would try to start them all; the image does not depend on it).
+constexpr int kMaxThreads = 1024;
+// A floating-point option that must be finite and positive (--time): UsageError
+// "option OPT must be a positive number, got 'S'" for 0, a negative number, nan or inf.
+double parsePositive(const std::string& opt, const std::string& s);
+
+// Output paths are checked right after the options are parsed, before a scene is loaded or a
+// sample rendered: a bad path costs nothing and leaves nothing behind. Every command that
+// writes files calls these (one place for the rules):
+//   - a file: not a folder (nor a name ending in '/'), its folder exists and is a folder, the
+//     file can be opened for writing (tried: an existing file is opened for appending and left
+//     as it was, a new one is made and removed again), and its extension is one of
+//     `extensions` (lower case with the dot, any case accepted; empty: any name);
+//   - two outputs of one command must not be the same file;
+//   - a folder (checkOutputFolder): an existing folder in which each of `files` passes the
+//     file check, or a path whose nearest existing ancestor is a folder in which the missing
+//     folders can be made (tried, and removed again).
+// A problem throws UsageError "OPTION 'PATH': PROBLEM", e.g.
+//   option --out 'nodir/x.png': folder 'nodir' does not exist
+struct OutputFile {
+    std::string option;                    // "--out"
+    std::string path;                      // as the user gave it (or its default)
+    std::vector<std::string> extensions;   // e.g. imageExtensions() (image.h) or {".pfm"}; {} = any
+};
+void checkOutputFiles(const std::vector<OutputFile>& files);
+void checkOutputFolder(const std::string& option, const std::string& folder, const std::vector<std::string>& files);
 
 // stem("dir/a.scene") = "dir/a", baseName("dir/a.scene") = "a.scene", splitList("a,b,,c") = {a, b, c}.
 std::string stem(const std::string& path);

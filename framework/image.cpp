@@ -171,6 +171,11 @@ void writePNG(const std::string& path, const Image& img, float exposure) {
         throw InputError(path, 0, "cannot write PNG file");
 }
 
+const std::vector<std::string>& imageExtensions() {
+    static const std::vector<std::string> extensions = {".png", ".pfm", ".hdr"};
+    return extensions;
+}
+
 void writeImage(const std::string& path, const Image& img) {
     const std::string ext = extensionOf(path);
     if (ext == "pfm") writePFM(path, img);

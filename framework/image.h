@@ -26,6 +26,8 @@ void writePNG(const std::string& path, const Image& img, float exposure = 0.0f);
 
 // Writes by extension (.pfm, .hdr, .png); reads .pfm or .hdr.
 void writeImage(const std::string& path, const Image& img);
+// The extensions writeImage knows, lower case with the dot: {".png", ".pfm", ".hdr"}.
+const std::vector<std::string>& imageExtensions();
 Image readImage(const std::string& path);
 
 }  // namespace ps

@@ -13,11 +13,14 @@
 // task loops) is compiled from lessons/NN-name/*.cpp, and a submitted file with the name of one
 // of those is left out (cmake/lessons.cmake), so a student cannot change how a lesson is run.
 // For each lesson: configure and build in OUT/build-NN, run its graded tests (CTest label
-// lesson-NN) with a per-test timeout, read CTest's JUnit report. A test's points are in its
+// lesson-NN) with a per-test timeout (given to CMake as PATHSPACE_TEST_TIMEOUT, since the tests'
+// TIMEOUT property would win over ctest --timeout), read CTest's JUnit report and, for the tests
+// stopped by the timeout, ctest's log (the JUnit report does not say). A test's points are in its
 // name ("... [3 pts]", else 1). A lesson that does not build scores 0 on every test; a test
 // that crashes or times out scores 0; the other tests are still graded.
 // Writes OUT/results.json (Gradescope format), OUT/junit.xml, and prints a score table.
 #include <algorithm>
+#include <charconv>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -25,6 +28,7 @@
 #include <iostream>
 #include <map>
 #include <regex>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -37,7 +41,24 @@ struct TestResult {
     std::string lesson, name, message, output;
     int points = 1;
     bool passed = false;
+    bool timedOut = false;   // stopped by the per-test timeout (then message says after how long)
 };
+
+// A bad command line: "grade: MESSAGE (see --help)", exit status 2.
+[[noreturn]] void usageError(const std::string& message) {
+    std::cerr << "grade: " << message << " (see --help)\n";
+    std::exit(2);
+}
+
+// The whole of s as a whole number from lo to hi, else a usage error naming the option.
+int wholeNumber(const std::string& option, const std::string& s, int lo, int hi) {
+    long long v = 0;
+    const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+    if (ec != std::errc() || end != s.data() + s.size() || v < lo || v > hi)
+        usageError(option + " needs a whole number from " + std::to_string(lo) + " to " + std::to_string(hi) +
+                   ", got '" + s + "'");
+    return static_cast<int>(v);
+}
 
 std::string readText(const fs::path& p) {
     std::ifstream in(p, std::ios::binary);
@@ -169,6 +190,25 @@ std::map<std::string, TestResult> readJUnit(const fs::path& file) {
     return out;
 }
 
+// The tests ctest stopped at their timeout, from its log: it ends with
+//   The following tests FAILED:
+//   	  3 - NAME (Timeout)
+// (CTest's JUnit report says only "fail" for them, with an empty message.)
+std::set<std::string> timedOutTests(const fs::path& ctestLog) {
+    std::set<std::string> names;
+    std::istringstream in(readText(ctestLog));
+    const std::string tail = " (Timeout)";
+    for (std::string l; std::getline(in, l);) {
+        if (!l.empty() && l.back() == '\r') l.pop_back();
+        if (l.size() <= tail.size() || l.compare(l.size() - tail.size(), tail.size(), tail) != 0) continue;
+        const size_t start = l.find_first_not_of(" \t"), dash = l.find(" - ");
+        if (start == std::string::npos || dash == std::string::npos || !std::isdigit(static_cast<unsigned char>(l[start])))
+            continue;
+        names.insert(l.substr(dash + 3, l.size() - tail.size() - dash - 3));
+    }
+    return names;
+}
+
 // The first lines of a failed doctest run that say what went wrong.
 std::string failureSummary(const TestResult& r) {
     std::istringstream in(r.output);
@@ -183,7 +223,7 @@ std::string failureSummary(const TestResult& r) {
             ++kept;
         }
     }
-    if (r.message.find("Timeout") != std::string::npos) summary = "timed out\n" + summary;
+    if (r.timedOut) return r.message + (summary.empty() ? "" : "\n" + summary);
     return summary.empty() ? r.message : summary;
 }
 
@@ -199,14 +239,14 @@ int main(int argc, char** argv) {
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         auto value = [&]() -> std::string {
-            if (i + 1 >= argc) { std::cerr << "grade: " << a << " needs a value\n"; std::exit(2); }
+            if (i + 1 >= argc) usageError(a + " needs a value");
             return argv[++i];
         };
         if (a == "--submission") submission = fs::absolute(value());
         else if (a == "--lessons") lessonsArg = value();
         else if (a == "--out") out = value();
-        else if (a == "--timeout") timeout = std::stoi(value());
-        else if (a == "--jobs") jobs = std::stoi(value());
+        else if (a == "--timeout") timeout = wholeNumber(a, value(), 1, 24 * 3600);
+        else if (a == "--jobs") jobs = wholeNumber(a, value(), 1, 256);
         else if (a == "--source") source = fs::absolute(value());
         else if (a == "--junit") junitIn = fs::absolute(value());
         else if (a == "--expect") {
@@ -219,10 +259,20 @@ int main(int argc, char** argv) {
                          "Scores each lesson in isolation (that lesson from DIR, the others from solutions/).\n"
                          "DIR holds lesson folders like assignments/ (default: assignments/). Writes\n"
                          "OUT/results.json (Gradescope) and OUT/junit.xml (default OUT: ./grade).\n"
+                         "--timeout SECONDS limits each graded test (default 120; a test it stops scores 0 and is\n"
+                         "reported as 'timed out after SECONDS s'); --jobs N builds and tests N at a time (default 2).\n"
                          "--junit FILE scores the graded tests from an existing CTest JUnit report instead of\n"
                          "building; --expect zero|full then exits 1 unless every graded test failed / passed.\n";
             return 0;
-        } else { std::cerr << "grade: unknown option " << a << " (see --help)\n"; return 2; }
+        } else usageError("unknown option " + a);
+    }
+    // --lessons: "all" or lesson numbers separated by commas ("0,1,7"); checked before anything runs.
+    std::vector<int> wanted;
+    if (lessonsArg != "all") {
+        std::stringstream ss(lessonsArg);
+        for (std::string k; std::getline(ss, k, ',');)
+            if (!k.empty()) wanted.push_back(wholeNumber("--lessons", k, 0, 99));
+        if (wanted.empty()) usageError("--lessons needs 'all' or lesson numbers such as 0,1,7, got '" + lessonsArg + "'");
     }
     out = fs::absolute(out);
     fs::create_directories(out);
@@ -237,9 +287,7 @@ int main(int argc, char** argv) {
         const std::string n = e.path().filename().string();
         if (e.is_directory() && n.size() > 3 && std::isdigit(n[0]) && std::isdigit(n[1]) && n[2] == '-') {
             if (lessonsArg == "all") { lessons.push_back(n); continue; }
-            std::stringstream ss(lessonsArg);
-            for (std::string k; std::getline(ss, k, ',');)
-                if (!k.empty() && std::stoi(k) == std::stoi(n.substr(0, 2))) lessons.push_back(n);
+            if (std::find(wanted.begin(), wanted.end(), std::stoi(n.substr(0, 2))) != wanted.end()) lessons.push_back(n);
         }
     }
     std::sort(lessons.begin(), lessons.end());
@@ -268,20 +316,29 @@ int main(int argc, char** argv) {
         }
         const fs::path build = out / ("build-" + nn), log = out / ("build-" + nn + ".log");
         std::cerr << "grade: lesson " << lesson << ": building (log: " << log.string() << ")\n";
+        // The tests' own TIMEOUT property (tests/CMakeLists.txt) wins over ctest --timeout, so the
+        // grader's timeout is given to both: the cache variable sets the property.
         const bool built =
             run("cmake -S " + quote(source.string()) + " -B " + quote(build.string()) +
-                " -DCMAKE_BUILD_TYPE=Release -DPATHSPACE_STUDENT=" + nn + " -DPATHSPACE_ASSIGNMENTS_DIR=" +
+                " -DCMAKE_BUILD_TYPE=Release -DPATHSPACE_TEST_TIMEOUT=" + std::to_string(timeout) +
+                " -DPATHSPACE_STUDENT=" + nn + " -DPATHSPACE_ASSIGNMENTS_DIR=" +
                 quote(submission.string()) + " > " + quote(log.string()) + " 2>&1") == 0 &&
             run("cmake --build " + quote(build.string()) + " -j" + std::to_string(jobs) + " --target lesson_" + nn +
                 "_tests >> " + quote(log.string()) + " 2>&1") == 0;
         std::map<std::string, TestResult> ran;
         if (built) {
-            const fs::path xml = out / ("junit-" + nn + ".xml");
+            const fs::path xml = out / ("junit-" + nn + ".xml"), ctestLog = out / ("ctest-" + nn + ".log");
             fs::remove(xml);
             run("ctest --test-dir " + quote(build.string()) + " -L lesson-" + nn + " --timeout " +
                 std::to_string(timeout) + " -j" + std::to_string(jobs) + " --output-junit " + quote(xml.string()) +
-                " > " + quote((out / ("ctest-" + nn + ".log")).string()) + " 2>&1");
+                " > " + quote(ctestLog.string()) + " 2>&1");
             ran = readJUnit(xml);
+            for (const std::string& name : timedOutTests(ctestLog)) {
+                auto it = ran.find(name);
+                if (it == ran.end() || it->second.passed) continue;
+                it->second.timedOut = true;
+                it->second.message = "timed out after " + std::to_string(timeout) + " s";
+            }
             std::string suite = readText(xml);
             if (size_t p = suite.find("?>"); p != std::string::npos) suite = suite.substr(p + 2);
             junit += suite + "\n";
@@ -317,7 +374,7 @@ int main(int argc, char** argv) {
         perLesson[r.lesson].first += got;
         perLesson[r.lesson].second += r.points;
         std::printf("%-16s %-70.70s %3d/%-2d  %s\n", r.lesson.c_str(), r.name.c_str(), got, r.points,
-                    r.passed ? "pass" : "FAIL");
+                    r.passed ? "pass" : r.timedOut ? "TIMEOUT" : "FAIL");
         const std::string why = r.passed ? "" : failureSummary(r);
         if (!r.passed) {
             std::istringstream in(why);

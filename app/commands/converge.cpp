@@ -29,7 +29,7 @@ const char* const kUsage = R"(converge options:
                      whose centre ray first hits a surface of material Mk (a 'material' name
                      of the scene file); printed and written to DIR/regions.md
   --seeds K          independent runs per algorithm, averaged in the plot and table (default 1)
-  --out DIR          where the report goes (default: converge-SCENE); it holds
+  --out DIR          where the report goes (default: converge-SCENE; made if missing); it holds
                      convergence.csv, convergence.svg (log-log relMSE against seconds with a
                      slope -1 guide), efficiency.md, equal-time.png (the algorithms' images at
                      the end of the budget, left to right in --algos order, then the reference)
@@ -37,6 +37,15 @@ const char* const kUsage = R"(converge options:
 A pixel in which a point light is seen directly is left out of every algorithm's error (a path
 tracer cannot sample that path: both ends are delta positions); the report says which.
 )";
+
+// The whole of text into path, else InputError (a full disk must not pass silently).
+void writeText(const std::string& path, const std::string& text) {
+    std::ofstream f(path, std::ios::binary);
+    if (!f) throw InputError(path, 0, "cannot open for writing");
+    f << text;
+    f.close();
+    if (!f) throw InputError(path, 0, "write failed");
+}
 
 int runConverge(const std::vector<std::string>& args) {
     std::string scenePath, reference, refAlgo, outDir;
@@ -53,20 +62,16 @@ int runConverge(const std::vector<std::string>& args) {
             if (i + 1 >= args.size()) throw UsageError("option " + a + " needs a value");
             return args[++i];
         };
-        auto positive = [&](double v) {
-            if (!(v > 0.0) || !std::isfinite(v)) throw UsageError(a + " must be a positive number");
-            return v;
-        };
         if (a == "--algos") opt.algos = splitList(value());
-        else if (a == "--time") opt.seconds = positive(parseNumber<double>(a, value()));
-        else if (a == "--spp") opt.spp = static_cast<int>(positive(parseNumber<int>(a, value())));
+        else if (a == "--time") opt.seconds = parsePositive(a, value());
+        else if (a == "--spp") opt.spp = parseAtLeast<int>(a, value(), 1);
         else if (a == "--regions") regionNames = splitList(value());
         else if (a == "--reference") reference = value();
         else if (a == "--ref-algo") refAlgo = value();
-        else if (a == "--ref-time") refSeconds = positive(parseNumber<double>(a, value()));
-        else if (a == "--seeds") opt.seeds = static_cast<int>(positive(parseNumber<int>(a, value())));
-        else if (a == "--threads") opt.threads = static_cast<int>(positive(parseNumber<int>(a, value())));
-        else if (a == "--maxdepth") { maxDepth = parseNumber<int>(a, value()); if (maxDepth < 0) throw UsageError("--maxdepth must not be negative"); }
+        else if (a == "--ref-time") refSeconds = parsePositive(a, value());
+        else if (a == "--seeds") opt.seeds = parseAtLeast<int>(a, value(), 1);
+        else if (a == "--threads") opt.threads = parseWithin<int>(a, value(), 1, kMaxThreads);
+        else if (a == "--maxdepth") maxDepth = parseAtLeast<int>(a, value(), 0);
         else if (a == "--out") outDir = value();
         else if (a == "--progress") opt.progress = true;
         else if (a == "--no-progress") opt.progress = false;
@@ -81,6 +86,14 @@ int runConverge(const std::vector<std::string>& args) {
     if (opt.seconds == 0.0 && reference.empty() && refSeconds == 0.0)
         throw UsageError("'converge' without --time needs --reference REF or --ref-time SECONDS");
     for (const std::string& a : opt.algos) makeIntegrator(a);   // unknown names fail now, not later
+    // The report's folder and every file in it, checked before the scene is loaded (command.h).
+    const std::string name = stem(baseName(scenePath));
+    if (outDir.empty()) outDir = "converge-" + name;
+    std::vector<std::string> files = {"convergence.csv", "convergence.svg", "efficiency.md", "equal-time.png",
+                                      "equal-time.pfm"};
+    if (reference.empty()) files.insert(files.end(), {"reference.pfm", "reference-variance.pfm"});
+    if (!regionNames.empty()) files.push_back("regions.md");
+    checkOutputFolder("--out", outDir, files);
     Scene scene = loadScene(scenePath);
     if (maxDepth >= 0) scene.settings.maxDepth = maxDepth;
     if (!regionNames.empty()) {
@@ -94,8 +107,6 @@ int runConverge(const std::vector<std::string>& args) {
     for (const std::string& a : opt.algos) printLeftOut(a, *makeIntegrator(a), scene);
     const std::vector<PointLightPixel> leftOut = pointLightsInView(scene);
     for (const PointLightPixel& p : leftOut) std::cerr << "pathspace: " << describe(p) << "\n";
-    const std::string name = stem(baseName(scenePath));
-    if (outDir.empty()) outDir = "converge-" + name;
     std::error_code ec;
     std::filesystem::create_directories(outDir, ec);
     if (!std::filesystem::is_directory(outDir, ec)) throw InputError(outDir, 0, "cannot create the output folder");
@@ -123,18 +134,18 @@ int runConverge(const std::vector<std::string>& args) {
     }
 
     const ConvergenceReport report = runConvergence(scene, ref, opt);
-    std::ofstream(outDir + "/convergence.csv") << convergenceCsv(name, report);
-    std::ofstream(outDir + "/convergence.svg")
-        << convergencePlotSvg(name + ": relMSE against render time (" + std::to_string(opt.seeds) + " seed(s))", report);
+    writeText(outDir + "/convergence.csv", convergenceCsv(name, report));
+    writeText(outDir + "/convergence.svg",
+              convergencePlotSvg(name + ": relMSE against render time (" + std::to_string(opt.seeds) + " seed(s))", report));
     const std::string table = efficiencyTable(report);
     std::ostringstream budget;
     if (opt.seconds > 0.0) budget << opt.seconds << " s";
     if (opt.spp > 0) budget << (opt.seconds > 0.0 ? " or " : "") << opt.spp << " spp";
-    std::ofstream md(outDir + "/efficiency.md");
+    std::ostringstream md;
     md << "Efficiency on " << name << " at " << budget.str() << " per algorithm (relMSE with eps = 0.01):\n\n" << table;
     if (!report.leftOut.empty()) md << "\n";
     for (const PointLightPixel& p : report.leftOut) md << "Note: " << describe(p) << ".\n";
-    md.close();
+    writeText(outDir + "/efficiency.md", md.str());
     std::vector<Image> images = report.finalImages;
     images.push_back(ref);
     const Image strip = sideBySide(images);
@@ -143,9 +154,9 @@ int runConverge(const std::vector<std::string>& args) {
     std::cout << table;
     if (!regionNames.empty()) {
         const std::string regions = regionTable(report, opt.regions);
-        std::ofstream(outDir + "/regions.md") << "relMSE (eps = 0.01) of each region of " << name
-                                              << " (the pixels that see each material) at the end of the run:\n\n"
-                                              << regions;
+        writeText(outDir + "/regions.md", "relMSE (eps = 0.01) of each region of " + name +
+                                              " (the pixels that see each material) at the end of the run:\n\n" +
+                                              regions);
         std::cout << "\n" << regions;
     }
     // A reference must be much better than what it judges (../shared/notes/testing.md).

@@ -8,7 +8,9 @@ namespace ps {
 namespace {
 
 const char* const kExitStatus = R"(exit status: 0 on success, 1 on bad input (the message names file, line and problem),
-2 on a bad command line.
+2 on a bad command line: an unknown option, a number out of range (NaN and Inf never pass),
+or an output path that cannot be written (missing folder, a folder, an unknown extension);
+every output path is checked before anything is loaded or rendered.
 )";
 
 constexpr size_t kSummaryColumn = 37, kWidth = 96;

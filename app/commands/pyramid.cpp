@@ -12,17 +12,20 @@ namespace ps {
 namespace {
 
 const char* const kUsage = R"(pyramid options:
-  --max-length K     path lengths 1..K (K edges at most; default 4); row k of the pyramid holds
-                     the techniques s = 0..k+1 (t = k+1-s) from left to right
+  --max-length K     path lengths 1..K (K edges at most, 1 to 12; default 4); row k of the
+                     pyramid holds the techniques s = 0..k+1 (t = k+1-s) from left to right
   --spp N            samples per pixel (default: the scene's)
   --seed S, --threads T, --no-prune   as for render
-  --exposure E       PNG exposure in stops (default 0)
+  --exposure E       PNG exposure in stops, -100 to 100 (default 0)
   --out PREFIX       writes PREFIX-unweighted.png (each technique alone, its unweighted
                      estimate), PREFIX-weighted.png (the MIS-weighted ones: a row adds up
                      to the paths of that length), PREFIX-s-t.pfm and PREFIX-s-t-weighted.pfm
                      for each technique (default: SCENE's name + -pyramid); cells of techniques
                      that cannot sample the scene's paths stay black (listed on stdout)
 )";
+
+constexpr int kMaxLength = 12;
+constexpr float kMaxExposure = 100.0f;   // 2^100 still fits a float
 
 int runPyramid(const std::vector<std::string>& args) {
     std::string scenePath, out;
@@ -36,11 +39,11 @@ int runPyramid(const std::vector<std::string>& args) {
             if (i + 1 >= args.size()) throw UsageError("option " + a + " needs a value");
             return args[++i];
         };
-        if (a == "--max-length") { maxLength = parseNumber<int>(a, value()); if (maxLength < 1 || maxLength > 12) throw UsageError("--max-length must be 1..12"); }
-        else if (a == "--spp") { spp = parseNumber<int>(a, value()); if (spp < 1) throw UsageError("--spp must be at least 1"); }
+        if (a == "--max-length") maxLength = parseWithin<int>(a, value(), 1, kMaxLength);
+        else if (a == "--spp") spp = parseAtLeast<int>(a, value(), 1);
         else if (a == "--seed") seed = parseNumber<uint64_t>(a, value());
-        else if (a == "--threads") { threads = parseNumber<int>(a, value()); if (threads < 1) throw UsageError("--threads must be at least 1"); }
-        else if (a == "--exposure") exposure = parseNumber<float>(a, value());
+        else if (a == "--threads") threads = parseWithin<int>(a, value(), 1, kMaxThreads);
+        else if (a == "--exposure") exposure = parseWithin<float>(a, value(), -kMaxExposure, kMaxExposure);
         else if (a == "--out") out = value();
         else if (a == "--no-prune") prune = false;
         else if (!a.empty() && a[0] == '-') throw UsageError("unknown option '" + a + "'");
@@ -48,10 +51,19 @@ int runPyramid(const std::vector<std::string>& args) {
         else throw UsageError("'pyramid' takes one scene file");
     }
     if (scenePath.empty()) throw UsageError("'pyramid' needs a scene file");
+    // Every file this run writes, checked before the scene is loaded (command.h).
+    if (out.empty()) out = stem(baseName(scenePath)) + "-pyramid";
+    std::vector<OutputFile> outputs = {{"--out", out + "-unweighted.png", {".png"}}, {"--out", out + "-weighted.png", {".png"}}};
+    for (int k = 1; k <= maxLength; ++k)
+        for (int s = 0; s <= k + 1; ++s) {
+            const std::string name = out + "-" + std::to_string(s) + "-" + std::to_string(k + 1 - s);
+            outputs.push_back({"--out", name + ".pfm", {".pfm"}});
+            outputs.push_back({"--out", name + "-weighted.pfm", {".pfm"}});
+        }
+    checkOutputFiles(outputs);
     Scene scene = loadScene(scenePath);
     scene.settings.prune = prune;
     if (spp == 0) spp = scene.settings.spp;
-    if (out.empty()) out = stem(baseName(scenePath)) + "-pyramid";
     BptOptions opt;
     for (const std::string& line : bptLeftOut(scene, opt)) std::cerr << "pathspace: pyramid leaves out " << line << "\n";
     const TechniqueImages t = renderTechniques(scene, maxLength, spp, seed, threads, opt);

@@ -16,13 +16,15 @@ namespace {
 const char* const kUsage = R"(render options:
   --algo NAME        integrator (default: the scene's 'render algo', else eyelight)
   --spp N            iterations (samples per pixel) to render (default: the scene's)
-  --time SECONDS     stop after this much render time instead (with --spp: whichever first)
+  --time SECONDS     stop after this much render time instead (with --spp: whichever first);
+                     a positive finite number
   --maxdepth D       maximum number of bounces, 0 = emission seen directly (default: the scene's)
   --seed S           random seed (default 0); the same seed gives the same image
-  --threads T        worker threads (default: all cores); the image does not depend on it
+  --threads T        worker threads, 1 to 1024 (default: all cores); the image does not
+                     depend on it
   --out FILE         output image, .png, .pfm or .hdr (default: SCENE's name + .png);
                      a .pfm with the exact values is always written next to a .png or .hdr
-  --variance FILE    also write the per-pixel variance of the mean as a .pfm
+  --variance FILE    also write the per-pixel variance of the mean (FILE ends in .pfm)
   --reference REF    a reference image (.pfm or .hdr): log error against run time
   --csv FILE         where that log goes (default: the output's name + .csv)
   --no-prune         do not leave out work the scene cannot use (integrators print what
@@ -43,14 +45,11 @@ int runRender(const std::vector<std::string>& args) {
             return args[++i];
         };
         if (a == "--algo") algo = value();
-        else if (a == "--spp") { spp = parseNumber<int>(a, value()); if (spp < 1) throw UsageError("--spp must be at least 1"); }
-        else if (a == "--time") {
-            seconds = parseNumber<double>(a, value());
-            if (!(seconds > 0.0) || !std::isfinite(seconds)) throw UsageError("--time must be a positive number of seconds");
-        }
-        else if (a == "--maxdepth") { maxDepth = parseNumber<int>(a, value()); if (maxDepth < 0) throw UsageError("--maxdepth must not be negative"); }
+        else if (a == "--spp") spp = parseAtLeast<int>(a, value(), 1);
+        else if (a == "--time") seconds = parsePositive(a, value());
+        else if (a == "--maxdepth") maxDepth = parseAtLeast<int>(a, value(), 0);
         else if (a == "--seed") seed = parseNumber<uint64_t>(a, value());
-        else if (a == "--threads") { threads = parseNumber<int>(a, value()); if (threads < 1) throw UsageError("--threads must be at least 1"); }
+        else if (a == "--threads") threads = parseWithin<int>(a, value(), 1, kMaxThreads);
         else if (a == "--out") out = value();
         else if (a == "--reference") reference = value();
         else if (a == "--csv") csvPath = value();
@@ -63,6 +62,16 @@ int runRender(const std::vector<std::string>& args) {
         else throw UsageError("more than one scene given ('" + scenePath + "' and '" + a + "')");
     }
     if (scenePath.empty()) throw UsageError("'render' needs a scene file");
+    // Every file this run writes, checked before the scene is loaded (command.h).
+    if (out.empty()) out = stem(baseName(scenePath)) + ".png";
+    std::vector<OutputFile> outputs = {{"--out", out, imageExtensions()}};
+    if (stem(out) + ".pfm" != out) outputs.push_back({"--out", stem(out) + ".pfm", {".pfm"}});   // written next to it
+    if (!variancePath.empty()) outputs.push_back({"--variance", variancePath, {".pfm"}});
+    if (!reference.empty()) {
+        if (csvPath.empty()) csvPath = stem(out) + ".csv";
+        outputs.push_back({"--csv", csvPath, {}});
+    }
+    checkOutputFiles(outputs);
 
     Scene scene = loadScene(scenePath);
     if (maxDepth >= 0) scene.settings.maxDepth = maxDepth;
@@ -79,7 +88,6 @@ int runRender(const std::vector<std::string>& args) {
         integrator = makeIntegrator(algo);
     }
     if (spp == 0 && seconds == 0.0) spp = scene.settings.spp;
-    if (out.empty()) out = stem(baseName(scenePath)) + ".png";
 
     Image ref;
     std::ofstream csv;
@@ -96,7 +104,6 @@ int runRender(const std::vector<std::string>& args) {
                                                std::to_string(ref.height) + " but the scene renders " +
                                                std::to_string(scene.camera.width()) + "x" +
                                                std::to_string(scene.camera.height()));
-        if (csvPath.empty()) csvPath = stem(out) + ".csv";
         csv.open(csvPath);
         if (!csv) throw InputError(csvPath, 0, "cannot open for writing");
         opt.reference = &ref;

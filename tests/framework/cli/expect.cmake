@@ -1,7 +1,7 @@
 # Runs one command and checks what it did. Used by the command-line tests (CMakeLists.txt here):
 #
 #   cmake [-DEXIT=N] [-DSTDOUT_REGEX=RE] [-DSTDERR_REGEX=RE] [-DSTDERR_LINES=N]
-#         [-DFILE=PATH -DFILE_REGEX=RE] -P expect.cmake -- COMMAND [ARG...]
+#         [-DFILE=PATH -DFILE_REGEX=RE] [-DNOT_WRITTEN=PATH|PATH...] -P expect.cmake -- COMMAND [ARG...]
 #
 #   EXIT          the exit code the command must return (default 0). A crash (a signal) always fails.
 #   STDOUT_REGEX  a regular expression (CMake syntax) stdout must match somewhere
@@ -9,6 +9,8 @@
 #   STDERR_LINES  the exact number of lines on stderr (e.g. 1: "one clear line")
 #   FILE          a file the command must write: removed before the command runs, then its whole
 #                 content must match FILE_REGEX (use ^ and $ to match it exactly)
+#   NOT_WRITTEN   paths (files or folders, separated by '|') the command must not leave behind:
+#                 removed before the command runs, checked to be absent after it
 #
 # Everything after "--" is the command, passed as is (no shell).
 cmake_minimum_required(VERSION 3.18)
@@ -33,6 +35,13 @@ endif()
 
 if(DEFINED FILE)
   file(REMOVE "${FILE}")
+endif()
+set(_absent "")
+if(DEFINED NOT_WRITTEN)
+  string(REPLACE "|" ";" _absent "${NOT_WRITTEN}")
+  foreach(_p ${_absent})
+    file(REMOVE_RECURSE "${_p}")
+  endforeach()
 endif()
 
 execute_process(COMMAND ${_cmd}
@@ -78,6 +87,12 @@ if(DEFINED FILE)
     endif()
   endif()
 endif()
+
+foreach(_p ${_absent})
+  if(EXISTS "${_p}")
+    string(APPEND _failures "  the command left ${_p} behind\n")
+  endif()
+endforeach()
 
 if(_failures)
   message(FATAL_ERROR "${_report}\nFAILED:\n${_failures}")
