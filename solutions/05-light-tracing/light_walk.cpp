@@ -11,11 +11,13 @@ void lightWalk(const Scene& scene, Rng& rng, int maxDepth, const LightWalkVisito
     //!          (rng.uniform(), rng.uniform2(), rng.uniform2()); nothing if not valid. Visit y0
     //!          (bounces 0), then for bounces = 1 .. maxDepth: intersect (a miss ends the walk,
     //!          unvisited), visit (false ends it), and unless bounces == maxDepth scatter with
-    //!          sampleAdjointBSDF (end if it fails or beta turns black) and play Russian
-    //!          roulette as in lesson 3 (Eq. 3.5). A LightWalkVertex's fields say what it holds.
-    //!          Pitfall: the roulette's q = survivalProbability(throughput, bounces) follows the
-    //!          product of the scattering weights alone (start at 1, not at start.beta, whose
-    //!          scale is the light's power); a survivor divides both beta and throughput by q.
+    //!          sampleAdjointBSDF(material, n, wLight, rng.uniform2(), rng.uniform(), s) (end if
+    //!          it fails or beta turns black) and play Russian roulette as in lesson 3 (Eq. 3.5),
+    //!          its number drawn only when q < 1. A LightWalkVertex's fields say what it holds.
+    //!          Pitfalls: q = survivalProbability(throughput, bounces) follows the product of the
+    //!          scattering weights alone (start at 1, not at start.beta, whose scale is the
+    //!          light's power); a survivor divides both beta and throughput by q. The tests
+    //!          replay the random numbers: draw them inside the calls as written.
     //! STUB (void)scene; (void)rng; (void)maxDepth; (void)visit;
     //! STUB (void)PS_TODO("lesson 05: lightWalk", 0);
     //! BEGIN

@@ -40,11 +40,12 @@ bool closeColor(const Color& a, const Color& b) {
 // Replays the walk of Eq. 3.4, 3.5 from `ray` with `rng` (a copy of the walk's generator) and
 // compares it with what the visitor was shown. Returns "" or what is wrong.
 std::string replay(const ps::Scene& scene, ps::Ray ray, ps::Rng rng, int maxDepth, const std::vector<ps::WalkVertex>& seen) {
+    std::ostringstream why;
+    // What x_k must show: x_0 has beta 1 and counts as specular (the camera ray).
     Color beta(1.0f);
-    bool specular = true;
     float pdfPrev = 0.0f;
     Vec3 pPrev(0.0f);
-    std::ostringstream why;
+    bool specular = true;
     for (int k = 0;; ++k) {
         ps::SurfacePoint sp;
         const bool hit = scene.intersect(ray, sp);
