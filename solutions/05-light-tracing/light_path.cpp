@@ -14,7 +14,7 @@ void traceLightPath(const Scene& scene, Rng& rng, int maxDepth, const SplatTarge
         //!          value = beta * f* * importance with f*(wLight -> wCam) = evalBSDF(m, n, wCam,
         //!          wLight) (Eq. 5.6); none from a delta material (Eq. 5.9). Return true.
         //!          Pitfall: a point light is not on a surface (connectToCamera's onSurface).
-        //! STUB (void)v;
+        //! STUB (void)v; (void)out;
         //! STUB return PS_TODO("lesson 05: traceLightPath", false);
         //! BEGIN
         if (v.bounces == 0) {
