@@ -6,19 +6,19 @@
 namespace ps {
 
 Color LiNextEvent(const Scene& scene, const Ray& cameraRay, Rng& rng, int maxDepth) {
-    // TODO(03) The random walk of LiRandomWalk with next-event estimation (Eq. 3.6). Keep a flag
-    //          `specular` (true before the first bounce and after a delta BSDF sample, s.delta):
-    //          1. No hit: add beta * background only if specular; stop.
-    //          2. Emission of the hit surface: add it only if specular (otherwise the light
-    //             sample of the previous vertex has already counted this path).
-    //          3. Stop if bounces == maxDepth.
-    //          4. Unless the material is delta (Material::isDelta), add
-    //             beta * sampleDirectLight(scene, sp, -ray.d, rng.uniform(), rng.uniform2()).value
-    //             (lesson 2; that path has bounces + 1 bounces).
-    //          5. Sample the BSDF, update beta and `specular`, Russian roulette, next ray: as in
-    //             LiRandomWalk.
-    (void)scene; (void)cameraRay; (void)rng; (void)maxDepth;
-    return PS_TODO("lesson 03: LiNextEvent", Color(0.0f));
+    Color L(0.0f);
+    cameraWalk(scene, cameraRay, rng, maxDepth, [&](const WalkVertex& v) {
+        // TODO(03) What vertex x_k adds to L with next-event estimation (Eq. 3.6): the emission
+        //          the walk finds (surface or background) only where no light sample could
+        //          have found it (v.specular); then, if k < maxDepth and the material is not
+        //          delta, beta_k times one light sample, lesson 2's
+        //          sampleDirectLight(scene, v.sp, v.wo, rng.uniform(), rng.uniform2()).value.
+        //          Return true.
+        //          Pitfall: the light sample at x_k makes a path of k + 1 bounces.
+        (void)v;
+        return PS_TODO("lesson 03: LiNextEvent", false);
+    });
+    return L;
 }
 
 }  // namespace ps

@@ -7,21 +7,20 @@
 namespace ps {
 
 Color LiMIS(const Scene& scene, const Ray& cameraRay, Rng& rng, int maxDepth) {
-    // TODO(03) LiNextEvent with both techniques weighted by kPathHeuristic (Eq. 3.7). Remember
-    //          from the last BSDF sample its pdf (pdfPrev), whether it was delta (specular) and
-    //          the point it left (pPrev).
-    //          1. Emission found by the walk (background where it leaves, or the hit surface's
-    //             emission): weight 1 if specular, else
-    //             misWeight(kPathHeuristic, 1, pdfPrev, 1, pdfLight) with pdfLight =
-    //             pdfLightDirection(scene, light, pPrev, sp.p, sp.n) (light = sp.light, or
-    //             scene.background for the background).
-    //          2. Stop if bounces == maxDepth.
-    //          3. Unless the material is delta: d = sampleDirectLight(...); add
-    //             beta * d.value * misWeight(kPathHeuristic, 1, d.pdfLight, 1, d.pdfBSDF).
-    //          4. Sample the BSDF, remember pdfPrev = s.pdf, specular = s.delta, pPrev = sp.p;
-    //             update beta, Russian roulette, next ray: as in LiRandomWalk.
-    (void)scene; (void)cameraRay; (void)rng; (void)maxDepth;
-    return PS_TODO("lesson 03: LiMIS", Color(0.0f));
+    Color L(0.0f);
+    cameraWalk(scene, cameraRay, rng, maxDepth, [&](const WalkVertex& v) {
+        // TODO(03) What vertex x_k adds to L with both techniques weighted by kPathHeuristic
+        //          (Eq. 3.7): the emission the walk finds (the hit light sp.light, or
+        //          scene.background where it left) with weight 1 after a specular bounce, else
+        //          the BSDF sample's weight from v.pdfPrev against the density with which a
+        //          light sample at the previous vertex would have chosen it (lesson 2's
+        //          pdfLightDirection); and, where LiNextEvent takes one, the light sample with
+        //          its weight from DirectSample's two densities. Return true.
+        //          Pitfall: both densities of the hit belong to x_{k-1} (v.pPrev), not to x_k.
+        (void)v;
+        return PS_TODO("lesson 03: LiMIS", false);
+    });
+    return L;
 }
 
 }  // namespace ps

@@ -1,17 +1,19 @@
-// Lesson 7 — the camera subpath z_0 .. z_{t-1} (Eq. 7.1, 7.3). Interface:
-// lessons/07-bidirectional/bpt.h. Equation numbers refer to lessons/07-bidirectional/README.md.
+// Lesson 7 — the camera subpath z_0 .. z_{t-1} (Eq. 7.1, 7.3): lesson 3's walk, storing its
+// vertices. Interface: lessons/07-bidirectional/bpt.h. Equation numbers refer to
+// lessons/07-bidirectional/README.md.
 #include "07-bidirectional/bpt.h"
 #include "todo.h"
 
 namespace ps {
 
 void cameraSubpath(const Scene& scene, Rng& rng, const Vec2& raster, int maxDepth, Heuristic h, Subpath& path) {
-    // TODO(07) Eq. 7.1, 7.3: lesson 3's camera walk (sampleBSDF Radiance, Russian roulette)
-    //          storing z_0 .. z_{t-1}: z_0 = cameraVertex (beta 1, pdfFwd 1: a delta position),
-    //          each hit a surfaceVertex, a miss with a background a backgroundVertex that ends it;
-    //          every z_i with beta, pdfFwd = pdfScatter Radiance, then z_{i-2}.pdfRev =
-    //          pdfScatter Importance and updateMisSum(path, i, h). At most maxDepth + 2 vertices.
-    //          Pitfall: pdfFwd from the positions, not the sample's s.pdf (the ray starts off the
+    // TODO(07) Eq. 7.1, 7.3: z_0 = cameraVertex (beta 1, pdfFwd 1: a delta position), then lesson
+    //          3's cameraWalk from camera.generateRay(raster) with a visitor that stores every
+    //          vertex it is shown: a hit as a surfaceVertex, a miss as a backgroundVertex if there
+    //          is a background (none: end the walk), each with the walk's beta, pdfFwd =
+    //          pdfScatter Radiance, then z_{i-2}.pdfRev = pdfScatter Importance and
+    //          updateMisSum(path, i, h). At most maxDepth + 2 vertices.
+    //          Pitfall: pdfFwd from the positions, not the walk's pdfPrev (the ray starts off the
     //          surface; the weights would no longer sum to 1).
     (void)scene; (void)rng; (void)raster; (void)maxDepth; (void)h;
     path.clear();

@@ -1,8 +1,9 @@
 // Lesson 3 — the path tracers the render command knows (plumbing: read it, nothing to write
 // here). Each runs one of the estimators of this lesson with the scene's maximum depth
-// (scene.settings.maxDepth, `--maxdepth` on the command line; 0 = emission seen directly):
+// (scene.settings.maxDepth, `--maxdepth` on the command line; 0 = emission seen directly). All
+// three are visitors of the one random walk, cameraWalk (walk.cpp, Eq. 3.3-3.5):
 //
-//   pt-bsdf   the random walk, BSDF sampling only (random_walk.cpp, Eq. 3.3, 3.4)
+//   pt-bsdf   BSDF sampling only (random_walk.cpp, Eq. 3.3, 3.4)
 //   pt-nee    with next-event estimation (next_event.cpp, Eq. 3.6)
 //   pt        next-event estimation and BSDF hits combined by MIS (path_mis.cpp, Eq. 3.7)
 #include "03-path-tracing/pathtracer.h"

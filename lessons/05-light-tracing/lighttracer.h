@@ -51,10 +51,31 @@ CameraConnection connectToCamera(const Scene& scene, const SurfacePoint& y, bool
 // u picks the direction, uLobe reflection or refraction. False for an invalid sample.
 bool sampleAdjointBSDF(const Material& m, const Vec3& n, const Vec3& wLight, const Vec2& u, float uLobe, BSDFSample& s);
 
-// One light path (Eq. 5.1-5.4): start it (startLightPath with rng.uniform(), rng.uniform2(),
-// rng.uniform2()), connect y0 and every non-specular vertex to the camera and add each
-// connection's contribution through out.add(raster, value) (a SplatTarget, framework/film.h),
-// scatter with sampleAdjointBSDF, Russian roulette as in lesson 3, at most maxDepth bounces.
+// One vertex of the light walk, as the walk shows it to its visitor.
+struct LightWalkVertex {
+    int bounces = 0;                       // 0: y0 on the light; k >= 1: the k-th surface the particle hits
+    const LightPathStart* start = nullptr; // the path's start (light, y0, pdfA, first ray, power)
+    SurfacePoint sp;                       // bounces 0: start->y0; else the surface point hit
+    Vec3 wLight;                           // bounces >= 1: unit, back towards where the particle came from
+    Color beta;                            // the particle's power arriving at sp (Eq. 5.2, 5.7), divided by
+                                           // every survival probability so far; bounces 0: start->beta
+};
+
+// What to do at a vertex; return false to end the walk there. The walk calls it before it
+// samples the adjoint BSDF (it may draw numbers from the walk's rng).
+using LightWalkVisitor = std::function<bool(const LightWalkVertex&)>;
+
+// The particle's random walk (Eq. 5.1, 5.2, 5.6-5.8): startLightPath with rng.uniform(),
+// rng.uniform2(), rng.uniform2() (nothing if it is not valid), visit y0, then follow the particle
+// and visit every surface it hits (not a miss: a particle that leaves the scene is gone), at most
+// maxDepth bounces; scatter with sampleAdjointBSDF and Russian roulette as in lesson 3 on the
+// product of the scattering weights alone (the throughput since y0, without start->beta):
+// survivalProbability(throughput, bounces). Lesson 7's light subpath is this walk too.
+void lightWalk(const Scene& scene, Rng& rng, int maxDepth, const LightWalkVisitor& visit);
+
+// One light path (Eq. 5.1-5.4): the light walk, whose visitor connects y0 and every
+// non-specular vertex to the camera and adds each connection's contribution through
+// out.add(raster, value) (a SplatTarget, framework/film.h).
 void traceLightPath(const Scene& scene, Rng& rng, int maxDepth, const SplatTarget& out);
 
 }  // namespace ps

@@ -61,15 +61,15 @@ float pdfScatter(const Scene& scene, const PathVertex* prev, const PathVertex& c
 
 // ---- subpaths (light_subpath.cpp, camera_subpath.cpp), Eq. 7.1 ----
 
-// The light subpath: at most maxDepth + 1 vertices (y_0 on a light, then one per bounce).
-// Uses startLightPath (lesson 5), sampleAdjointBSDF, survivalProbability (lesson 3). Fills
-// beta, pdfFwd, the pdfRev of y_{i-2} once y_i exists, the flags, and, after each vertex,
-// updateMisSum(path, i, h). Clears path first.
+// The light subpath: at most maxDepth + 1 vertices (y_0 on a light, then one per bounce): lesson
+// 5's lightWalk, whose visitor stores each vertex. Fills beta, pdfFwd, the pdfRev of y_{i-2}
+// once y_i exists, the flags, and, after each vertex, updateMisSum(path, i, h). Clears path first.
 void lightSubpath(const Scene& scene, Rng& rng, int maxDepth, Heuristic h, Subpath& path);
 
-// The camera subpath through raster position `raster`: z_0 the pinhole, then one vertex per
-// intersection; at most maxDepth + 2 vertices; a ray that leaves the scene ends it with a
-// vertex at infinity if there is a background. Clears path first.
+// The camera subpath through raster position `raster`: z_0 the pinhole, then lesson 3's
+// cameraWalk, whose visitor stores one vertex per intersection; at most maxDepth + 2 vertices; a
+// ray that leaves the scene ends it with a vertex at infinity if there is a background. Clears
+// path first.
 void cameraSubpath(const Scene& scene, Rng& rng, const Vec2& raster, int maxDepth, Heuristic h, Subpath& path);
 
 // ---- the connection (connect.cpp), Eq. 7.2, 7.4, 7.6 ----

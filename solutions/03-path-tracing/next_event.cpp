@@ -6,48 +6,29 @@
 namespace ps {
 
 Color LiNextEvent(const Scene& scene, const Ray& cameraRay, Rng& rng, int maxDepth) {
-    //! TODO(03) The random walk of LiRandomWalk with next-event estimation (Eq. 3.6). Keep a flag
-    //!          `specular` (true before the first bounce and after a delta BSDF sample, s.delta):
-    //!          1. No hit: add beta * background only if specular; stop.
-    //!          2. Emission of the hit surface: add it only if specular (otherwise the light
-    //!             sample of the previous vertex has already counted this path).
-    //!          3. Stop if bounces == maxDepth.
-    //!          4. Unless the material is delta (Material::isDelta), add
-    //!             beta * sampleDirectLight(scene, sp, -ray.d, rng.uniform(), rng.uniform2()).value
-    //!             (lesson 2; that path has bounces + 1 bounces).
-    //!          5. Sample the BSDF, update beta and `specular`, Russian roulette, next ray: as in
-    //!             LiRandomWalk.
-    //! STUB (void)scene; (void)cameraRay; (void)rng; (void)maxDepth;
-    //! STUB return PS_TODO("lesson 03: LiNextEvent", Color(0.0f));
-    //! BEGIN
-    Color L(0.0f), beta(1.0f);
-    Ray ray = cameraRay;
-    bool specular = true;
-    for (int bounces = 0;; ++bounces) {
-        SurfacePoint sp;
-        if (!scene.intersect(ray, sp)) {
-            if (specular) L += beta * scene.backgroundRadiance();
-            break;
+    Color L(0.0f);
+    cameraWalk(scene, cameraRay, rng, maxDepth, [&](const WalkVertex& v) {
+        //! TODO(03) What vertex x_k adds to L with next-event estimation (Eq. 3.6): the emission
+        //!          the walk finds (surface or background) only where no light sample could
+        //!          have found it (v.specular); then, if k < maxDepth and the material is not
+        //!          delta, beta_k times one light sample, lesson 2's
+        //!          sampleDirectLight(scene, v.sp, v.wo, rng.uniform(), rng.uniform2()).value.
+        //!          Return true.
+        //!          Pitfall: the light sample at x_k makes a path of k + 1 bounces.
+        //! STUB (void)v;
+        //! STUB return PS_TODO("lesson 03: LiNextEvent", false);
+        //! BEGIN
+        if (!v.hit) {
+            if (v.specular) L += v.beta * scene.backgroundRadiance();
+            return true;
         }
-        const Vec3 wo = -ray.d;
-        if (sp.light >= 0 && specular) L += beta * emittedRadiance(scene.lights[sp.light], sp.n, wo);
-        if (bounces == maxDepth) break;
-        const Material& m = scene.materials[sp.material];
-        if (!m.isDelta()) L += beta * sampleDirectLight(scene, sp, wo, rng.uniform(), rng.uniform2()).value;
-        BSDFSample s;
-        if (!sampleBSDF(m, sp.n, wo, rng.uniform2(), rng.uniform(), Transport::Radiance, s)) break;
-        specular = s.delta;
-        beta *= s.weight;
-        if (isBlack(beta)) break;
-        const float q = survivalProbability(beta, bounces + 1);
-        if (q < 1.0f) {
-            if (rng.uniform() >= q) break;
-            beta /= q;
-        }
-        ray = scene.spawnRay(sp, s.wi);
-    }
+        if (v.sp.light >= 0 && v.specular) L += v.beta * emittedRadiance(scene.lights[v.sp.light], v.sp.n, v.wo);
+        if (v.bounces < maxDepth && !scene.materials[v.sp.material].isDelta())
+            L += v.beta * sampleDirectLight(scene, v.sp, v.wo, rng.uniform(), rng.uniform2()).value;
+        return true;
+        //! END
+    });
     return L;
-    //! END
 }
 
 }  // namespace ps

@@ -7,64 +7,37 @@
 namespace ps {
 
 Color LiMIS(const Scene& scene, const Ray& cameraRay, Rng& rng, int maxDepth) {
-    //! TODO(03) LiNextEvent with both techniques weighted by kPathHeuristic (Eq. 3.7). Remember
-    //!          from the last BSDF sample its pdf (pdfPrev), whether it was delta (specular) and
-    //!          the point it left (pPrev).
-    //!          1. Emission found by the walk (background where it leaves, or the hit surface's
-    //!             emission): weight 1 if specular, else
-    //!             misWeight(kPathHeuristic, 1, pdfPrev, 1, pdfLight) with pdfLight =
-    //!             pdfLightDirection(scene, light, pPrev, sp.p, sp.n) (light = sp.light, or
-    //!             scene.background for the background).
-    //!          2. Stop if bounces == maxDepth.
-    //!          3. Unless the material is delta: d = sampleDirectLight(...); add
-    //!             beta * d.value * misWeight(kPathHeuristic, 1, d.pdfLight, 1, d.pdfBSDF).
-    //!          4. Sample the BSDF, remember pdfPrev = s.pdf, specular = s.delta, pPrev = sp.p;
-    //!             update beta, Russian roulette, next ray: as in LiRandomWalk.
-    //! STUB (void)scene; (void)cameraRay; (void)rng; (void)maxDepth;
-    //! STUB return PS_TODO("lesson 03: LiMIS", Color(0.0f));
-    //! BEGIN
-    Color L(0.0f), beta(1.0f);
-    Ray ray = cameraRay;
-    bool specular = true;
-    float pdfPrev = 0.0f;
-    Vec3 pPrev(0.0f);
-    for (int bounces = 0;; ++bounces) {
-        SurfacePoint sp;
-        const bool hit = scene.intersect(ray, sp);
+    Color L(0.0f);
+    cameraWalk(scene, cameraRay, rng, maxDepth, [&](const WalkVertex& v) {
+        //! TODO(03) What vertex x_k adds to L with both techniques weighted by kPathHeuristic
+        //!          (Eq. 3.7): the emission the walk finds (the hit light sp.light, or
+        //!          scene.background where it left) with weight 1 after a specular bounce, else
+        //!          the BSDF sample's weight from v.pdfPrev against the density with which a
+        //!          light sample at the previous vertex would have chosen it (lesson 2's
+        //!          pdfLightDirection); and, where LiNextEvent takes one, the light sample with
+        //!          its weight from DirectSample's two densities. Return true.
+        //!          Pitfall: both densities of the hit belong to x_{k-1} (v.pPrev), not to x_k.
+        //! STUB (void)v;
+        //! STUB return PS_TODO("lesson 03: LiMIS", false);
+        //! BEGIN
         // Emission found by the walk: the background where it leaves, or the surface it hits.
-        const int light = hit ? sp.light : scene.background;
+        const int light = v.hit ? v.sp.light : scene.background;
         if (light >= 0) {
-            const Color Le = hit ? emittedRadiance(scene.lights[light], sp.n, -ray.d) : scene.backgroundRadiance();
+            const Color Le = v.hit ? emittedRadiance(scene.lights[light], v.sp.n, v.wo) : scene.backgroundRadiance();
             if (!isBlack(Le)) {
-                const float w = specular ? 1.0f
-                                         : misWeight(kPathHeuristic, 1.0f, pdfPrev, 1.0f,
-                                                     pdfLightDirection(scene, light, pPrev, sp.p, sp.n));
-                L += beta * Le * w;
+                const float w = v.specular ? 1.0f
+                                           : misWeight(kPathHeuristic, 1.0f, v.pdfPrev, 1.0f,
+                                                       pdfLightDirection(scene, light, v.pPrev, v.sp.p, v.sp.n));
+                L += v.beta * Le * w;
             }
         }
-        if (!hit || bounces == maxDepth) break;
-        const Vec3 wo = -ray.d;
-        const Material& m = scene.materials[sp.material];
-        if (!m.isDelta()) {
-            const DirectSample d = sampleDirectLight(scene, sp, wo, rng.uniform(), rng.uniform2());
-            L += beta * d.value * misWeight(kPathHeuristic, 1.0f, d.pdfLight, 1.0f, d.pdfBSDF);
-        }
-        BSDFSample s;
-        if (!sampleBSDF(m, sp.n, wo, rng.uniform2(), rng.uniform(), Transport::Radiance, s)) break;
-        specular = s.delta;
-        pdfPrev = s.pdf;
-        pPrev = sp.p;
-        beta *= s.weight;
-        if (isBlack(beta)) break;
-        const float q = survivalProbability(beta, bounces + 1);
-        if (q < 1.0f) {
-            if (rng.uniform() >= q) break;
-            beta /= q;
-        }
-        ray = scene.spawnRay(sp, s.wi);
-    }
+        if (!v.hit || v.bounces == maxDepth || scene.materials[v.sp.material].isDelta()) return true;
+        const DirectSample d = sampleDirectLight(scene, v.sp, v.wo, rng.uniform(), rng.uniform2());
+        L += v.beta * d.value * misWeight(kPathHeuristic, 1.0f, d.pdfLight, 1.0f, d.pdfBSDF);
+        return true;
+        //! END
+    });
     return L;
-    //! END
 }
 
 }  // namespace ps

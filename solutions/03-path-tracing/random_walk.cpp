@@ -1,4 +1,4 @@
-// Lesson 3 — the random walk: a path tracer that only samples BSDFs. Interface:
+// Lesson 3 — the random walk as an estimator: a path tracer that only samples BSDFs. Interface:
 // lessons/03-path-tracing/pathtracer.h. Equation numbers refer to lessons/03-path-tracing/README.md.
 #include "03-path-tracing/pathtracer.h"
 #include "todo.h"
@@ -6,46 +6,24 @@
 namespace ps {
 
 Color LiRandomWalk(const Scene& scene, const Ray& cameraRay, Rng& rng, int maxDepth) {
-    //! TODO(03) The random walk (Eq. 3.3, 3.4). L = 0, throughput beta = 1, ray = cameraRay;
-    //!          for bounces = 0, 1, 2, ...:
-    //!          1. scene.intersect(ray, sp); no hit: add beta * scene.backgroundRadiance(), stop.
-    //!          2. sp.light >= 0: add beta * emittedRadiance(scene.lights[sp.light], sp.n, -ray.d)
-    //!             (that path has `bounces` bounces).
-    //!          3. Stop if bounces == maxDepth (Eq. 3.3).
-    //!          4. sampleBSDF(scene.materials[sp.material], sp.n, -ray.d, rng.uniform2(),
-    //!             rng.uniform(), Transport::Radiance, s); stop if it fails. beta *= s.weight
-    //!             (f |cos| / pdf); stop if beta is black.
-    //!          5. Russian roulette (Eq. 3.5): q = survivalProbability(beta, bounces + 1); stop
-    //!             if rng.uniform() >= q, else beta /= q. (Draw the number only when q < 1.)
-    //!          6. ray = scene.spawnRay(sp, s.wi).
-    //! STUB (void)scene; (void)cameraRay; (void)rng; (void)maxDepth;
-    //! STUB return PS_TODO("lesson 03: LiRandomWalk", Color(0.0f));
-    //! BEGIN
-    Color L(0.0f), beta(1.0f);
-    Ray ray = cameraRay;
-    for (int bounces = 0;; ++bounces) {
-        SurfacePoint sp;
-        if (!scene.intersect(ray, sp)) {
-            L += beta * scene.backgroundRadiance();
-            break;
+    Color L(0.0f);
+    cameraWalk(scene, cameraRay, rng, maxDepth, [&](const WalkVertex& v) {
+        //! TODO(03) What vertex x_k adds to L (Eq. 3.4): beta_k times the emission leaving it
+        //!          towards the previous vertex, the background's radiance where the walk left
+        //!          the scene; then return true (the walk decides where it ends).
+        //!          Pitfall: emittedRadiance wants the direction the light leaves in: v.wo.
+        //! STUB (void)v;
+        //! STUB return PS_TODO("lesson 03: LiRandomWalk", false);
+        //! BEGIN
+        if (!v.hit) {
+            L += v.beta * scene.backgroundRadiance();
+            return true;
         }
-        const Vec3 wo = -ray.d;
-        if (sp.light >= 0) L += beta * emittedRadiance(scene.lights[sp.light], sp.n, wo);
-        if (bounces == maxDepth) break;
-        BSDFSample s;
-        if (!sampleBSDF(scene.materials[sp.material], sp.n, wo, rng.uniform2(), rng.uniform(), Transport::Radiance, s))
-            break;
-        beta *= s.weight;
-        if (isBlack(beta)) break;
-        const float q = survivalProbability(beta, bounces + 1);
-        if (q < 1.0f) {
-            if (rng.uniform() >= q) break;
-            beta /= q;
-        }
-        ray = scene.spawnRay(sp, s.wi);
-    }
+        if (v.sp.light >= 0) L += v.beta * emittedRadiance(scene.lights[v.sp.light], v.sp.n, v.wo);
+        return true;
+        //! END
+    });
     return L;
-    //! END
 }
 
 }  // namespace ps

@@ -6,65 +6,35 @@
 namespace ps {
 
 void traceLightPath(const Scene& scene, Rng& rng, int maxDepth, const SplatTarget& out) {
-    //! TODO(05) The light path (Eq. 5.1-5.4):
-    //!          1. start = startLightPath(scene, rng.uniform(), rng.uniform2(), rng.uniform2());
-    //!             stop if it is not valid.
-    //!          2. 0 bounces, the light seen directly: unless the light is the background,
-    //!             c = connectToCamera(scene, start.y0, onSurface = the light is not a point
-    //!             light); if valid, add Le / start.pdfA * c.importance at c.raster, where Le is
-    //!             the light's intensity (point light) or emittedRadiance(light, y0.n, c.wCam).
-    //!          3. beta = start.beta, ray = start.ray, throughput = 1 (the product of the
-    //!             weights since the light, for Russian roulette); for bounces = 1, 2, ...,
-    //!             maxDepth:
-    //!             a. scene.intersect(ray, sp), stop on a miss; wLight = -ray.d.
-    //!             b. Unless the material is delta: c = connectToCamera(scene, sp, true); if
-    //!                valid, add beta * evalBSDF(m, sp.n, c.wCam, wLight) * c.importance.
-    //!             c. Stop if bounces == maxDepth.
-    //!             d. sampleAdjointBSDF(m, sp.n, wLight, rng.uniform2(), rng.uniform(), s),
-    //!                stop if false; beta and throughput *= s.weight; stop if beta is black.
-    //!             e. Russian roulette: q = survivalProbability(throughput, bounces); if q < 1,
-    //!                stop if rng.uniform() >= q, else divide beta and throughput by q.
-    //!             f. ray = scene.spawnRay(sp, s.wi).
-    //! STUB (void)scene; (void)rng; (void)maxDepth; (void)out;
-    //! STUB (void)PS_TODO("lesson 05: traceLightPath", 0);
-    //! BEGIN
-    const LightPathStart start = startLightPath(scene, rng.uniform(), rng.uniform2(), rng.uniform2());
-    if (!start.valid) return;
-    const Light& light = scene.lights[start.light];
-    // 0 bounces: the point on the light seen directly (not the background: no point to connect).
-    if (!light.isInfinite()) {
-        const CameraConnection c = connectToCamera(scene, start.y0, !light.isDelta());
-        if (c.valid) {
-            const Color Le = light.isDelta() ? light.Le : emittedRadiance(light, start.y0.n, c.wCam);
-            out.add(c.raster, Le * (c.importance / start.pdfA));
+    lightWalk(scene, rng, maxDepth, [&](const LightWalkVertex& v) {
+        //! TODO(05) What vertex v adds to the image (Eq. 5.3, 5.4): connect it to the camera
+        //!          (connectToCamera) and, if the connection is valid, out.add(c.raster, value).
+        //!          y0 (bounces 0): value = Le / pdfA * importance, Le towards the camera (a point
+        //!          light: its intensity); no connection from the background. Later vertices:
+        //!          value = beta * f* * importance with f*(wLight -> wCam) = evalBSDF(m, n, wCam,
+        //!          wLight) (Eq. 5.6); none from a delta material (Eq. 5.9). Return true.
+        //!          Pitfall: a point light is not on a surface (connectToCamera's onSurface).
+        //! STUB (void)v; (void)out;
+        //! STUB return PS_TODO("lesson 05: traceLightPath", false);
+        //! BEGIN
+        if (v.bounces == 0) {
+            // The point on the light seen directly (not the background: no point to connect).
+            const Light& light = scene.lights[v.start->light];
+            if (light.isInfinite()) return true;
+            const CameraConnection c = connectToCamera(scene, v.sp, !light.isDelta());
+            if (c.valid) {
+                const Color Le = light.isDelta() ? light.Le : emittedRadiance(light, v.sp.n, c.wCam);
+                out.add(c.raster, Le * (c.importance / v.start->pdfA));
+            }
+            return true;
         }
-    }
-    Color beta = start.beta, throughput(1.0f);
-    Ray ray = start.ray;
-    for (int bounces = 1; bounces <= maxDepth; ++bounces) {
-        SurfacePoint sp;
-        if (!scene.intersect(ray, sp)) break;
-        const Vec3 wLight = -ray.d;
-        const Material& m = scene.materials[sp.material];
-        if (!m.isDelta()) {
-            const CameraConnection c = connectToCamera(scene, sp, true);
-            if (c.valid) out.add(c.raster, beta * evalBSDF(m, sp.n, c.wCam, wLight) * c.importance);
-        }
-        if (bounces == maxDepth) break;
-        BSDFSample s;
-        if (!sampleAdjointBSDF(m, sp.n, wLight, rng.uniform2(), rng.uniform(), s)) break;
-        beta *= s.weight;
-        throughput *= s.weight;
-        if (isBlack(beta)) break;
-        const float q = survivalProbability(throughput, bounces);
-        if (q < 1.0f) {
-            if (rng.uniform() >= q) break;
-            beta /= q;
-            throughput /= q;
-        }
-        ray = scene.spawnRay(sp, s.wi);
-    }
-    //! END
+        const Material& m = scene.materials[v.sp.material];
+        if (m.isDelta()) return true;
+        const CameraConnection c = connectToCamera(scene, v.sp, true);
+        if (c.valid) out.add(c.raster, v.beta * evalBSDF(m, v.sp.n, c.wCam, v.wLight) * c.importance);
+        return true;
+        //! END
+    });
 }
 
 }  // namespace ps

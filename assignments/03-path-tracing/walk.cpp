@@ -1,0 +1,26 @@
+// Lesson 3 — the random walk from the camera, shared by the three estimators (random_walk.cpp,
+// next_event.cpp, path_mis.cpp) and by lesson 7's camera subpath. Interface:
+// lessons/03-path-tracing/pathtracer.h. Equation numbers refer to lessons/03-path-tracing/README.md.
+#include "03-path-tracing/pathtracer.h"
+#include "todo.h"
+
+namespace ps {
+
+void cameraWalk(const Scene& scene, const Ray& cameraRay, Rng& rng, int maxDepth, const WalkVisitor& visit) {
+    // TODO(03) The walk x_0, x_1, ... of Eq. 3.4 from cameraRay, beta_0 = 1. At each vertex:
+    //          intersect, fill a WalkVertex (its fields say what each one holds: the escape is a
+    //          vertex too) and call visit; the walk ends if it returns false, on a miss, or at
+    //          bounces == maxDepth (Eq. 3.3: the vertex with maxDepth bounces is visited, no
+    //          bounce after it). Else sample the BSDF with sampleBSDF(material, n, wo,
+    //          rng.uniform2(), rng.uniform(), Transport::Radiance, s) (its weight is already
+    //          f |cos| / pdf), end if it fails or beta turns black, and play Russian roulette
+    //          (Eq. 3.5) with survivalProbability(beta, bounces + 1): a survivor is divided by
+    //          q. Next ray: scene.spawnRay.
+    //          Pitfall: the tests replay the walk's random numbers: draw them inside that call
+    //          as written, the roulette's only when q < 1, and no others (the visitor draws its
+    //          own in between).
+    (void)scene; (void)cameraRay; (void)rng; (void)maxDepth; (void)visit;
+    (void)PS_TODO("lesson 03: cameraWalk", 0);
+}
+
+}  // namespace ps

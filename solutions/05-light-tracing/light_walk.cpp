@@ -1,0 +1,59 @@
+// Lesson 5 — the particle's random walk, shared by the light tracer (light_path.cpp) and by
+// lesson 7's light subpath. Interface: lessons/05-light-tracing/lighttracer.h. Equation numbers
+// refer to lessons/05-light-tracing/README.md.
+#include "05-light-tracing/lighttracer.h"
+#include "todo.h"
+
+namespace ps {
+
+void lightWalk(const Scene& scene, Rng& rng, int maxDepth, const LightWalkVisitor& visit) {
+    //! TODO(05) The particle's walk (Eq. 5.1, 5.2, 5.6-5.8): start it with startLightPath
+    //!          (rng.uniform(), rng.uniform2(), rng.uniform2()); nothing if not valid. Visit y0
+    //!          (bounces 0), then for bounces = 1 .. maxDepth: intersect (a miss ends the walk,
+    //!          unvisited), visit (false ends it), and unless bounces == maxDepth scatter with
+    //!          sampleAdjointBSDF(material, n, wLight, rng.uniform2(), rng.uniform(), s) (end if
+    //!          it fails or beta turns black) and play Russian roulette as in lesson 3 (Eq. 3.5),
+    //!          its number drawn only when q < 1. A LightWalkVertex's fields say what it holds.
+    //!          Pitfalls: q = survivalProbability(throughput, bounces) follows the product of the
+    //!          scattering weights alone (start at 1, not at start.beta, whose scale is the
+    //!          light's power); a survivor divides both beta and throughput by q. The tests
+    //!          replay the random numbers: draw them inside the calls as written.
+    //! STUB (void)scene; (void)rng; (void)maxDepth; (void)visit;
+    //! STUB (void)PS_TODO("lesson 05: lightWalk", 0);
+    //! BEGIN
+    const LightPathStart start = startLightPath(scene, rng.uniform(), rng.uniform2(), rng.uniform2());
+    if (!start.valid) return;
+    LightWalkVertex y0;
+    y0.start = &start;
+    y0.sp = start.y0;
+    y0.beta = start.beta;
+    if (!visit(y0)) return;
+    Color beta = start.beta, throughput(1.0f);
+    Ray ray = start.ray;
+    for (int bounces = 1; bounces <= maxDepth; ++bounces) {
+        LightWalkVertex v;
+        if (!scene.intersect(ray, v.sp)) break;
+        v.bounces = bounces;
+        v.start = &start;
+        v.wLight = -ray.d;
+        v.beta = beta;
+        if (!visit(v)) break;
+        if (bounces == maxDepth) break;
+        BSDFSample s;
+        if (!sampleAdjointBSDF(scene.materials[v.sp.material], v.sp.n, v.wLight, rng.uniform2(), rng.uniform(), s))
+            break;
+        beta *= s.weight;
+        throughput *= s.weight;
+        if (isBlack(beta)) break;
+        const float q = survivalProbability(throughput, bounces);
+        if (q < 1.0f) {
+            if (rng.uniform() >= q) break;
+            beta /= q;
+            throughput /= q;
+        }
+        ray = scene.spawnRay(v.sp, s.wi);
+    }
+    //! END
+}
+
+}  // namespace ps
