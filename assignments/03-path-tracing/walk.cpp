@@ -17,8 +17,8 @@ void cameraWalk(const Scene& scene, const Ray& cameraRay, Rng& rng, int maxDepth
     //          (Eq. 3.5) with survivalProbability(beta, bounces + 1): a survivor is divided by
     //          q. Next ray: scene.spawnRay.
     //          Pitfall: the tests replay the walk's random numbers: draw them inside that call
-    //          as written, the roulette's only when q < 1, and no others (the visitor draws its
-    //          own in between).
+    //          as written (or uniform2 then uniform, in that order), the roulette's only when
+    //          q < 1, and no others (the visitor draws its own in between).
     (void)scene; (void)cameraRay; (void)rng; (void)maxDepth; (void)visit;
     (void)PS_TODO("lesson 03: cameraWalk", 0);
 }

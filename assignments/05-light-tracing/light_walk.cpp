@@ -17,7 +17,8 @@ void lightWalk(const Scene& scene, Rng& rng, int maxDepth, const LightWalkVisito
     //          Pitfalls: q = survivalProbability(throughput, bounces) follows the product of the
     //          scattering weights alone (start at 1, not at start.beta, whose scale is the
     //          light's power); a survivor divides both beta and throughput by q. The tests
-    //          replay the random numbers: draw them inside the calls as written.
+    //          replay the random numbers: draw them inside the calls as written (or left to
+    //          right into variables).
     (void)scene; (void)rng; (void)maxDepth; (void)visit;
     (void)PS_TODO("lesson 05: lightWalk", 0);
 }
