@@ -19,7 +19,7 @@ namespace ps {
 
 namespace {
 std::vector<Command>& registry() {
-    static std::vector<Command> commands;   // filled before main by static initialisers
+    static std::vector<Command> commands;  // filled before main by static initialisers
     return commands;
 }
 }  // namespace
@@ -45,7 +45,8 @@ const Command* findCommand(const std::string& name) {
 
 double parsePositive(const std::string& opt, const std::string& s) {
     const double v = parseNumber<double>(opt, s);
-    if (!(v > 0.0) || !std::isfinite(v)) throw UsageError("option " + opt + " must be a positive number, got '" + s + "'");
+    if (!(v > 0.0) || !std::isfinite(v))
+        throw UsageError("option " + opt + " must be a positive number, got '" + s + "'");
     return v;
 }
 
@@ -69,8 +70,7 @@ std::string lowerExtension(const fs::path& p) {
 
 std::string listed(const std::vector<std::string>& items) {
     std::string out;
-    for (size_t i = 0; i < items.size(); ++i)
-        out += (i == 0 ? "" : i + 1 == items.size() ? " or " : ", ") + items[i];
+    for (size_t i = 0; i < items.size(); ++i) out += (i == 0 ? "" : i + 1 == items.size() ? " or " : ", ") + items[i];
     return out;
 }
 
@@ -82,9 +82,10 @@ void checkOutputFile(const OutputFile& f) {
     if (!f.extensions.empty()) {
         const std::string ext = lowerExtension(p);
         if (std::find(f.extensions.begin(), f.extensions.end(), ext) == f.extensions.end())
-            badOutput(f.option, f.path,
-                      (ext.empty() ? std::string("no extension") : "unknown extension '" + p.extension().string() + "'") +
-                          " (use " + listed(f.extensions) + ")");
+            badOutput(
+                f.option, f.path,
+                (ext.empty() ? std::string("no extension") : "unknown extension '" + p.extension().string() + "'") +
+                    " (use " + listed(f.extensions) + ")");
     }
     const fs::path folder = p.has_parent_path() ? p.parent_path() : fs::path(".");
     if (!fs::exists(folder, ec)) badOutput(f.option, f.path, "folder '" + folder.string() + "' does not exist");
@@ -172,7 +173,8 @@ void listAlgorithms(std::ostream& os) {
     size_t width = 0;
     for (const auto& i : list) width = std::max(width, i.name.size());
     os << "algorithms:\n";
-    for (const auto& i : list) os << "  " << i.name << std::string(width + 2 - i.name.size(), ' ') << i.description << "\n";
+    for (const auto& i : list)
+        os << "  " << i.name << std::string(width + 2 - i.name.size(), ' ') << i.description << "\n";
 }
 
 bool stderrIsTerminal() {

@@ -17,13 +17,13 @@ class Integrator;
 class Scene;
 
 struct Command {
-    std::string name;       // what the user types: pathspace NAME ...
-    int order = 0;          // place in `pathspace --help` (smaller first)
-    std::string synopsis;   // "render SCENE [options]"
-    std::string summary;    // one line: what it does
-    std::string usage;      // its options, one per line or two, ending in a newline
-    bool takesAlgorithms = false;   // its help lists the registered integrators
-    int (*run)(const std::vector<std::string>& args) = nullptr;   // exit status
+    std::string name;              // what the user types: pathspace NAME ...
+    int order = 0;                 // place in `pathspace --help` (smaller first)
+    std::string synopsis;          // "render SCENE [options]"
+    std::string summary;           // one line: what it does
+    std::string usage;             // its options, one per line or two, ending in a newline
+    bool takesAlgorithms = false;  // its help lists the registered integrators
+    int (*run)(const std::vector<std::string>& args) = nullptr;  // exit status
 };
 
 // Adds a command; returns true. Use PS_REGISTER_COMMAND.
@@ -69,7 +69,8 @@ template <class T>
 T parseWithin(const std::string& opt, const std::string& s, T lo, T hi) {
     const T v = parseNumber<T>(opt, s);
     if (!(v >= lo && v <= hi))
-        throw UsageError("option " + opt + " must be from " + numberText(lo) + " to " + numberText(hi) + ", got '" + s + "'");
+        throw UsageError("option " + opt + " must be from " + numberText(lo) + " to " + numberText(hi) + ", got '" + s +
+                         "'");
     return v;
 }
 // --threads: at most this many (OpenMP would try to start them all; the image does not depend on it).
@@ -92,9 +93,9 @@ double parsePositive(const std::string& opt, const std::string& s);
 // A problem throws UsageError "OPTION 'PATH': PROBLEM", e.g.
 //   option --out 'nodir/x.png': folder 'nodir' does not exist
 struct OutputFile {
-    std::string option;                    // "--out"
-    std::string path;                      // as the user gave it (or its default)
-    std::vector<std::string> extensions;   // e.g. imageExtensions() (image.h) or {".pfm"}; {} = any
+    std::string option;                   // "--out"
+    std::string path;                     // as the user gave it (or its default)
+    std::vector<std::string> extensions;  // e.g. imageExtensions() (image.h) or {".pfm"}; {} = any
 };
 void checkOutputFiles(const std::vector<OutputFile>& files);
 void checkOutputFolder(const std::string& option, const std::string& folder, const std::vector<std::string>& files);

@@ -51,15 +51,15 @@ struct Workload {
 
 struct Checksum {
     uint64_t hits = 0;
-    uint64_t primSum = 0;   // sum of (hit primitive + 1): catches a different closest hit
+    uint64_t primSum = 0;  // sum of (hit primitive + 1): catches a different closest hit
     bool operator==(const Checksum& o) const { return hits == o.hits && primSum == o.primSum; }
     bool operator!=(const Checksum& o) const { return !(*this == o); }
 };
 
 struct Result {
-    double mrays = 0.0;     // best run
+    double mrays = 0.0;  // best run
     uint64_t raysPerRun = 0;
-    Checksum sum;           // of one run
+    Checksum sum;  // of one run
 };
 
 // One pass over rays[0, n) with the threads omp_set_num_threads chose.
@@ -84,10 +84,9 @@ Checksum traceOnce(const Scene& scene, const std::vector<Ray>& rays, size_t n) {
 }
 
 template <bool AnyHit>
-Result measure(const Scene& scene, const std::vector<Ray>& pool, int threads, int repeat, int runs,
-               bool& consistent) {
+Result measure(const Scene& scene, const std::vector<Ray>& pool, int threads, int repeat, int runs, bool& consistent) {
     omp_set_num_threads(threads);
-    traceOnce<AnyHit>(scene, pool, std::min<size_t>(pool.size(), 1 << 16));   // warm-up
+    traceOnce<AnyHit>(scene, pool, std::min<size_t>(pool.size(), 1 << 16));  // warm-up
     Result res;
     res.raysPerRun = static_cast<uint64_t>(pool.size()) * repeat;
     double best = 1e300;
@@ -198,7 +197,7 @@ Scene makeNoisySphere(int rings, int segments) {
             v[static_cast<size_t>(i) * segments + j] = c + radius(d) * d;
         }
     auto addTriangle = [&](Vec3 p0, Vec3 p1, Vec3 p2) {
-        if (glm::dot(glm::cross(p1 - p0, p2 - p0), p0 + p1 + p2 - 3.0f * c) < 0.0f) std::swap(p1, p2);   // outward
+        if (glm::dot(glm::cross(p1 - p0, p2 - p0), p0 + p1 + p2 - 3.0f * c) < 0.0f) std::swap(p1, p2);  // outward
         s.triangles.push_back(Triangle{p0, p1, p2});
     };
     for (int i = 0; i < rings; ++i)
@@ -208,10 +207,10 @@ Scene makeNoisySphere(int rings, int segments) {
             const Vec3& b = v[static_cast<size_t>(i) * segments + jn];
             const Vec3& cc = v[static_cast<size_t>(i + 1) * segments + j];
             const Vec3& d = v[static_cast<size_t>(i + 1) * segments + jn];
-            if (i > 0) addTriangle(a, b, d);              // the top ring's first triangle is degenerate
-            if (i < rings - 1) addTriangle(a, d, cc);     // the bottom ring's second one is
+            if (i > 0) addTriangle(a, b, d);           // the top ring's first triangle is degenerate
+            if (i < rings - 1) addTriangle(a, d, cc);  // the bottom ring's second one is
         }
-    const float f = 6.0f;   // the floor, facing up
+    const float f = 6.0f;  // the floor, facing up
     s.triangles.push_back(Triangle{Vec3(-f, 0, -f), Vec3(-f, 0, f), Vec3(f, 0, f)});
     s.triangles.push_back(Triangle{Vec3(-f, 0, -f), Vec3(f, 0, f), Vec3(f, 0, -f)});
 
@@ -232,7 +231,8 @@ double buildMs(const Scene& scene, int runs) {
     std::vector<AABB> boxes(scene.prims.size());
     for (size_t i = 0; i < boxes.size(); ++i) {
         const Primitive& pr = scene.prims[i];
-        boxes[i] = pr.shape == ShapeKind::Triangle ? scene.triangles[pr.index].bounds() : scene.spheres[pr.index].bounds();
+        boxes[i] =
+            pr.shape == ShapeKind::Triangle ? scene.triangles[pr.index].bounds() : scene.spheres[pr.index].bounds();
     }
     double best = 1e300;
     for (int r = 0; r < runs; ++r) {
@@ -294,10 +294,22 @@ int main(int argc, char** argv) {
     Options opt;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
-        if (a == "--help" || a == "-h") { usage(stdout); return 0; }
-        if (a == "--quick") { opt.quick = true; continue; }
-        if (a == "--scenes" && i + 1 < argc) { opt.scenesDir = argv[++i]; continue; }
-        if (a.rfind("--scenes=", 0) == 0) { opt.scenesDir = a.substr(9); continue; }
+        if (a == "--help" || a == "-h") {
+            usage(stdout);
+            return 0;
+        }
+        if (a == "--quick") {
+            opt.quick = true;
+            continue;
+        }
+        if (a == "--scenes" && i + 1 < argc) {
+            opt.scenesDir = argv[++i];
+            continue;
+        }
+        if (a.rfind("--scenes=", 0) == 0) {
+            opt.scenesDir = a.substr(9);
+            continue;
+        }
         std::fprintf(stderr, "bvh_bench: unknown or incomplete option '%s'\n", a.c_str());
         usage(stderr);
         return 2;
@@ -307,14 +319,14 @@ int main(int argc, char** argv) {
     try {
         // Rays per run: about 0.15-0.5 s with one thread on the course machine.
         Bench cornell{"cornell-box", loadScene(opt.scenesDir + "/cornell-box.scene"), {}};
-        cornell.work.primaryPasses = 16;   // 256 x 256 pixels: a pool of 1M camera rays
+        cornell.work.primaryPasses = 16;  // 256 x 256 pixels: a pool of 1M camera rays
         cornell.work.primaryRepeat = 3;
         cornell.work.poolSize = 1 << 20;
         cornell.work.buildRuns = 200;
         benches.push_back(std::move(cornell));
 
         Bench mesh{"noisy-sphere", makeNoisySphere(200, 400), {}};
-        mesh.work.primaryPasses = 4;       // 512 x 512 pixels: a pool of 1M camera rays
+        mesh.work.primaryPasses = 4;  // 512 x 512 pixels: a pool of 1M camera rays
         mesh.work.primaryRepeat = 1;
         mesh.work.poolSize = 1 << 19;
         mesh.work.buildRuns = 5;
@@ -369,7 +381,7 @@ int main(int argc, char** argv) {
         const std::vector<Ray> incoherent = incoherentRays(s, pts, b.work.poolSize);
         const std::vector<Ray> shadow = shadowRays(s, pts, b.work.poolSize);
 
-        Summary sum{b.name, {}, {}, pts.size(), b.work.primaryPasses * b.work.primaryRepeat, s.camera.width(),
+        Summary sum{b.name,           {}, {}, pts.size(), b.work.primaryPasses * b.work.primaryRepeat, s.camera.width(),
                     s.camera.height()};
         for (int threads : kThreadCounts) {
             const Result p = measure<false>(s, primary, threads, b.work.primaryRepeat, b.work.runs, consistent);
@@ -405,7 +417,8 @@ int main(int argc, char** argv) {
     }
     std::printf("total time %.1f s\n", secondsSince(tStart));
     if (!consistent) {
-        std::fprintf(stderr, "bvh_bench: checksums differ between runs or thread counts: traversal is not deterministic\n");
+        std::fprintf(stderr,
+                     "bvh_bench: checksums differ between runs or thread counts: traversal is not deterministic\n");
         return 1;
     }
     return 0;

@@ -58,21 +58,25 @@ int main(int argc, char** argv) {
     int res = 64, spp = 16, threads = 1, repeats = 3;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
-        if (a == "--quick") { res = 16; spp = 2; repeats = 1; }
-        else if (a == "--scenes" && i + 1 < argc) dir = argv[++i];
+        if (a == "--quick") {
+            res = 16;
+            spp = 2;
+            repeats = 1;
+        } else if (a == "--scenes" && i + 1 < argc) dir = argv[++i];
         else if (a == "--threads" && i + 1 < argc) threads = std::stoi(argv[++i]);
         else if (a == "--spp" && i + 1 < argc) spp = std::stoi(argv[++i]);
         else {
-            std::printf("usage: prune_bench [--quick] [--scenes DIR] [--threads T] [--spp N]\n"
-                        "  bpt with and without pruning on a few scenes at %d x %d, %d spp, best of %d runs\n",
-                        res, res, spp, repeats);
+            std::printf(
+                "usage: prune_bench [--quick] [--scenes DIR] [--threads T] [--spp N]\n"
+                "  bpt with and without pruning on a few scenes at %d x %d, %d spp, best of %d runs\n",
+                res, res, spp, repeats);
             return a == "--help" ? 0 : 2;
         }
     }
     try {
         std::printf("bpt, %d x %d pixels, %d spp, %d thread(s), best of %d runs\n", res, res, spp, threads, repeats);
-        std::printf("%-20s %9s %11s %10s %9s %11s %10s %7s %7s  %s\n", "scene", "pruned s", "samples/s", "Mrays", "full s",
-                    "samples/s", "Mrays", "time", "rays", "left out");
+        std::printf("%-20s %9s %11s %10s %9s %11s %10s %7s %7s  %s\n", "scene", "pruned s", "samples/s", "Mrays",
+                    "full s", "samples/s", "Mrays", "time", "rays", "left out");
         for (const std::string name : {"cornell-box", "cornell-point-light", "cornell-spheres", "glass-lamp"}) {
             ps::Scene pruned = loadAt(dir, name, res);
             ps::Scene full = pruned;
@@ -81,8 +85,8 @@ int main(int argc, char** argv) {
             const double tp = timeBpt(pruned, spp, threads, repeats, rp), tf = timeBpt(full, spp, threads, repeats, rf);
             const double samples = double(res) * res * spp;
             const std::vector<std::string> left = ps::makeIntegrator("bpt")->leftOut(pruned);
-            std::printf("%-20s %9.3f %11.0f %10.3f %9.3f %11.0f %10.3f %6.1f%% %6.1f%%  %zu item(s)\n", name.c_str(), tp,
-                        samples / tp, rp * 1e-6, tf, samples / tf, rf * 1e-6, 100.0 * (tf - tp) / tf,
+            std::printf("%-20s %9.3f %11.0f %10.3f %9.3f %11.0f %10.3f %6.1f%% %6.1f%%  %zu item(s)\n", name.c_str(),
+                        tp, samples / tp, rp * 1e-6, tf, samples / tf, rf * 1e-6, 100.0 * (tf - tp) / tf,
                         100.0 * (double(rf) - double(rp)) / double(rf), left.size());
         }
     } catch (const std::exception& e) {

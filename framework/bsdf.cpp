@@ -6,7 +6,7 @@ namespace ps {
 float fresnelDielectric(float cosThetaI, float etaI, float etaT) {
     cosThetaI = glm::clamp(cosThetaI, 0.0f, 1.0f);
     float sin2T = (etaI / etaT) * (etaI / etaT) * std::max(0.0f, 1.0f - cosThetaI * cosThetaI);
-    if (sin2T >= 1.0f) return 1.0f;   // total internal reflection
+    if (sin2T >= 1.0f) return 1.0f;  // total internal reflection
     float cosThetaT = std::sqrt(1.0f - sin2T);
     float rPar = (etaT * cosThetaI - etaI * cosThetaT) / (etaT * cosThetaI + etaI * cosThetaT);
     float rPerp = (etaI * cosThetaI - etaT * cosThetaT) / (etaI * cosThetaI + etaT * cosThetaT);
@@ -50,18 +50,18 @@ float pdfBSDF(const Material& m, const Vec3& n, const Vec3& wo, const Vec3& wi) 
     return phongLobePdf(Frame(reflect(wo, ns)).toLocal(wi), m.exponent);
 }
 
-bool sampleBSDF(const Material& m, const Vec3& n, const Vec3& wo, const Vec2& u, float uLobe,
-                Transport mode, BSDFSample& s) {
+bool sampleBSDF(const Material& m, const Vec3& n, const Vec3& wo, const Vec2& u, float uLobe, Transport mode,
+                BSDFSample& s) {
     const float cosO = glm::dot(n, wo);
-    if (cosO == 0.0f) return false;   // exactly grazing: no valid direction
+    if (cosO == 0.0f) return false;  // exactly grazing: no valid direction
     const Vec3 ns = cosO < 0.0f ? -n : n;
     switch (isLambertian(m) ? BSDFKind::Diffuse : m.kind) {
     case BSDFKind::Diffuse: {
         const Vec3 local = sampleCosineHemisphere(u);
         s.wi = Frame(ns).toWorld(local);
-        s.pdf = cosineHemispherePdf(Frame(ns).toLocal(s.wi));   // exactly pdfBSDF(wi)
+        s.pdf = cosineHemispherePdf(Frame(ns).toLocal(s.wi));  // exactly pdfBSDF(wi)
         if (s.pdf <= 0.0f) return false;
-        s.weight = m.albedo;   // (albedo / pi) cos / (cos / pi)
+        s.weight = m.albedo;  // (albedo / pi) cos / (cos / pi)
         s.delta = false;
         return true;
     }
@@ -70,7 +70,7 @@ bool sampleBSDF(const Material& m, const Vec3& n, const Vec3& wo, const Vec2& u,
         const Vec3 local = samplePhongLobe(u, m.exponent);
         s.wi = Frame(r).toWorld(local);
         const float cosI = glm::dot(ns, s.wi);
-        if (cosI <= 0.0f) return false;   // lobe direction below the surface: invalid sample
+        if (cosI <= 0.0f) return false;  // lobe direction below the surface: invalid sample
         // The pdf of wi as pdfBSDF evaluates it (not of `local`, whose cos(alpha) differs from
         // the one phongEval recomputes by rounding, amplified by cos^n for large n).
         s.pdf = phongLobePdf(Frame(r).toLocal(s.wi), m.exponent);
@@ -92,7 +92,7 @@ bool sampleBSDF(const Material& m, const Vec3& n, const Vec3& wo, const Vec2& u,
         const float cosI = std::abs(cosO);
         const float F = fresnelDielectric(cosI, etaI, etaT);
         s.delta = true;
-        if (uLobe < F) {   // reflect with probability F: weight F / F = 1
+        if (uLobe < F) {  // reflect with probability F: weight F / F = 1
             s.wi = reflect(wo, ns);
             s.pdf = F;
             s.weight = Color(1.0f);

@@ -17,9 +17,9 @@ enum class Transport { Radiance, Importance };
 struct Material {
     std::string name;
     BSDFKind kind = BSDFKind::Diffuse;
-    Color albedo = Color(0.5f);   // diffuse / Phong / mirror reflectance
-    float exponent = 0.0f;        // Phong exponent n >= 0
-    float ior = 1.5f;             // dielectric: index of refraction inside / outside
+    Color albedo = Color(0.5f);  // diffuse / Phong / mirror reflectance
+    float exponent = 0.0f;       // Phong exponent n >= 0
+    float ior = 1.5f;            // dielectric: index of refraction inside / outside
 
     // Delta lobes cannot be evaluated or hit by chance: f and pdf of a given pair are 0, and
     // only sampleBSDF produces their directions. Handled as a flag, never as a huge pdf.
@@ -27,10 +27,10 @@ struct Material {
 };
 
 struct BSDFSample {
-    Vec3 wi;              // sampled direction (unit, away from the surface)
-    Color weight;         // f * |cos(theta_i)| / pdf (delta: the lobe's throughput)
-    float pdf = 0.0f;     // solid-angle pdf; for a delta lobe the probability of choosing it
-    bool delta = false;   // wi came from a delta lobe
+    Vec3 wi;             // sampled direction (unit, away from the surface)
+    Color weight;        // f * |cos(theta_i)| / pdf (delta: the lobe's throughput)
+    float pdf = 0.0f;    // solid-angle pdf; for a delta lobe the probability of choosing it
+    bool delta = false;  // wi came from a delta lobe
 };
 
 // f(wo, wi) for non-delta materials (0 for delta ones and for wi on the wrong side).
@@ -43,8 +43,8 @@ float pdfBSDF(const Material& m, const Vec3& n, const Vec3& wo, const Vec3& wi);
 
 // Samples wi given wo. u picks the direction, uLobe picks reflection/refraction.
 // Returns false for an invalid sample (e.g. a Phong direction below the surface).
-bool sampleBSDF(const Material& m, const Vec3& n, const Vec3& wo, const Vec2& u, float uLobe,
-                Transport mode, BSDFSample& s);
+bool sampleBSDF(const Material& m, const Vec3& n, const Vec3& wo, const Vec2& u, float uLobe, Transport mode,
+                BSDFSample& s);
 
 // Fresnel reflectance of a smooth dielectric for unpolarised light; cosThetaI > 0 on the
 // side with index etaI. Returns 1 under total internal reflection.

@@ -19,15 +19,24 @@ void BVH::build(const std::vector<AABB>& primBoxes) {
 }
 
 // Builds the subtree over entries [begin, end) into nodes_[self], which the caller allocated.
-void BVH::buildNode(uint32_t self, std::vector<AABB>& boxes, std::vector<Vec3>& centroids,
-                    uint32_t begin, uint32_t end, int depth) {
+void BVH::buildNode(uint32_t self, std::vector<AABB>& boxes, std::vector<Vec3>& centroids, uint32_t begin, uint32_t end,
+                    int depth) {
     depth_ = std::max(depth_, depth);
     AABB box, cbox;
-    for (uint32_t i = begin; i < end; ++i) { box.expand(boxes[i]); cbox.expand(centroids[i]); }
+    for (uint32_t i = begin; i < end; ++i) {
+        box.expand(boxes[i]);
+        cbox.expand(centroids[i]);
+    }
     nodes_[self].box = box;
     const uint32_t count = end - begin;
-    auto makeLeaf = [&] { nodes_[self].first = begin; nodes_[self].count = static_cast<uint16_t>(count); };
-    if (count <= 1 || depth >= kMaxDepth) { makeLeaf(); return; }
+    auto makeLeaf = [&] {
+        nodes_[self].first = begin;
+        nodes_[self].count = static_cast<uint16_t>(count);
+    };
+    if (count <= 1 || depth >= kMaxDepth) {
+        makeLeaf();
+        return;
+    }
 
     // Binned SAH (Wald 2007): kBins bins along each axis of the centroid box; the cost of a
     // split is A + A_left * N_left + A_right * N_right, of a leaf A * N (traversal and
@@ -48,17 +57,26 @@ void BVH::buildNode(uint32_t self, std::vector<AABB>& boxes, std::vector<Vec3>& 
         }
         float rightArea[kBins];
         uint32_t rightCount[kBins];
-        AABB acc; uint32_t cnt = 0;
+        AABB acc;
+        uint32_t cnt = 0;
         for (int b = kBins - 1; b > 0; --b) {
-            acc.expand(binBox[b]); cnt += binCount[b];
-            rightArea[b] = acc.surfaceArea(); rightCount[b] = cnt;
+            acc.expand(binBox[b]);
+            cnt += binCount[b];
+            rightArea[b] = acc.surfaceArea();
+            rightCount[b] = cnt;
         }
-        acc = AABB(); cnt = 0;
-        for (int s = 1; s < kBins; ++s) {   // split between bin s-1 and s
-            acc.expand(binBox[s - 1]); cnt += binCount[s - 1];
+        acc = AABB();
+        cnt = 0;
+        for (int s = 1; s < kBins; ++s) {  // split between bin s-1 and s
+            acc.expand(binBox[s - 1]);
+            cnt += binCount[s - 1];
             if (cnt == 0 || rightCount[s] == 0) continue;
             float cost = area + acc.surfaceArea() * cnt + rightArea[s] * rightCount[s];
-            if (cost < bestCost) { bestCost = cost; bestAxis = axis; bestSplit = s; }
+            if (cost < bestCost) {
+                bestCost = cost;
+                bestAxis = axis;
+                bestSplit = s;
+            }
         }
     }
     const float leafCost = area * count;
@@ -66,11 +84,15 @@ void BVH::buildNode(uint32_t self, std::vector<AABB>& boxes, std::vector<Vec3>& 
     if (bestAxis >= 0 && (bestCost < leafCost || count > kMaxLeafSize)) {
         const float scale = kBins / ext[bestAxis];
         uint32_t i = begin, j = end;
-        while (i < j) {   // partition by bin
+        while (i < j) {  // partition by bin
             int b = std::min(kBins - 1, static_cast<int>((centroids[i][bestAxis] - cbox.lo[bestAxis]) * scale));
-            if (b < bestSplit) { ++i; continue; }
+            if (b < bestSplit) {
+                ++i;
+                continue;
+            }
             --j;
-            std::swap(boxes[i], boxes[j]); std::swap(centroids[i], centroids[j]);
+            std::swap(boxes[i], boxes[j]);
+            std::swap(centroids[i], centroids[j]);
             std::swap(primIndex_[i], primIndex_[j]);
         }
         mid = i;

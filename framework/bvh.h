@@ -9,17 +9,17 @@ namespace ps {
 
 struct BVHNode {
     AABB box;
-    uint32_t first = 0;   // inner node: index of the left child (right = first + 1);
-                          // leaf: first entry in BVH::primIndex
-    uint16_t count = 0;   // 0 for an inner node, number of primitives for a leaf
-    uint16_t axis = 0;    // split axis of an inner node (ordered traversal)
+    uint32_t first = 0;  // inner node: index of the left child (right = first + 1);
+                         // leaf: first entry in BVH::primIndex
+    uint16_t count = 0;  // 0 for an inner node, number of primitives for a leaf
+    uint16_t axis = 0;   // split axis of an inner node (ordered traversal)
 };
 
 class BVH {
 public:
     static constexpr int kBins = 16;
     static constexpr int kMaxLeafSize = 4;
-    static constexpr int kMaxDepth = 100;   // deeper subtrees become leaves; bounds the stack
+    static constexpr int kMaxDepth = 100;  // deeper subtrees become leaves; bounds the stack
 
     // Builds over the primitives' boxes; primitive i of the caller is reported as i.
     void build(const std::vector<AABB>& primBoxes);
@@ -36,8 +36,8 @@ public:
     bool traverse(Ray& ray, bool anyHit, HitPrim&& hitPrim) const;
 
 private:
-    void buildNode(uint32_t node, std::vector<AABB>& boxes, std::vector<Vec3>& centroids,
-                   uint32_t begin, uint32_t end, int depth);
+    void buildNode(uint32_t node, std::vector<AABB>& boxes, std::vector<Vec3>& centroids, uint32_t begin, uint32_t end,
+                   int depth);
     std::vector<BVHNode> nodes_;
     std::vector<uint32_t> primIndex_;
     int depth_ = 0;
@@ -53,9 +53,9 @@ inline bool intersectBox(const AABB& b, const Vec3& o, const Vec3& invDir, float
     float t0 = 0.0f, t1 = tMax;
     auto slab = [&](float lo, float hi, float org, float inv) {
         const float tA = (lo - org) * inv, tB = (hi - org) * inv;
-        const float tNearA = tA > tB ? tB : tA;             // the order of the two slab planes
+        const float tNearA = tA > tB ? tB : tA;  // the order of the two slab planes
         const float tFarA = (tA > tB ? tA : tB) * kGrow;
-        t0 = tNearA > t0 ? tNearA : t0;   // NaN-safe: NaN compares false and leaves t0
+        t0 = tNearA > t0 ? tNearA : t0;  // NaN-safe: NaN compares false and leaves t0
         t1 = tFarA < t1 ? tFarA : t1;
     };
     slab(b.lo.x, b.hi.x, o.x, invDir.x);
@@ -92,9 +92,19 @@ bool BVH::traverse(Ray& ray, bool anyHit, HitPrim&& hitPrim) const {
             float tN, tF;
             bool hN = intersectBox(nodes_[nearC].box, ray.o, invDir, ray.tMax, tN);
             bool hF = intersectBox(nodes_[farC].box, ray.o, invDir, ray.tMax, tF);
-            if (hN && hF) { stack[top++] = farC; node = nearC; continue; }
-            if (hN) { node = nearC; continue; }
-            if (hF) { node = farC; continue; }
+            if (hN && hF) {
+                stack[top++] = farC;
+                node = nearC;
+                continue;
+            }
+            if (hN) {
+                node = nearC;
+                continue;
+            }
+            if (hF) {
+                node = farC;
+                continue;
+            }
         }
         // Pop, skipping nodes the (shortened) ray no longer reaches.
         for (;;) {

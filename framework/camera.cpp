@@ -39,7 +39,8 @@ bool Camera::rasterOfDirection(const Vec3& dir, Vec2& raster) const {
 float Camera::pdfDirection(const Vec3& dir) const {
     const float cosTheta = glm::dot(dir, forward_);
     Vec2 raster;
-    if (!(cosTheta > 0.0f) || !rasterOf(dir, forward_, right_, up_, tanHalfX_, tanHalfY_, width_, height_, raster)) return 0.0f;
+    if (!(cosTheta > 0.0f) || !rasterOf(dir, forward_, right_, up_, tanHalfX_, tanHalfY_, width_, height_, raster))
+        return 0.0f;
     return 1.0f / (imagePlaneArea() * cosTheta * cosTheta * cosTheta);
 }
 

@@ -15,7 +15,7 @@ public:
     int height() const { return height_; }
     const Vec3& position() const { return eye_; }
     const Vec3& forward() const { return forward_; }
-    bool isPinhole() const { return true; }   // a delta position: rays cannot hit the lens
+    bool isPinhole() const { return true; }  // a delta position: rays cannot hit the lens
 
     // Ray through raster position (x, y) in [0, width) x [0, height); y grows downward.
     Ray generateRay(const Vec2& raster) const;

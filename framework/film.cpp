@@ -23,7 +23,7 @@ Image Film::varianceOfMean() const {
     const double n = iterations_;
     if (n < 2) return img;
     for (size_t i = 0; i < sum_.size(); ++i) {
-        DColor s2 = (sumSq_[i] - sum_[i] * sum_[i] / n) / (n - 1.0);   // sample variance
+        DColor s2 = (sumSq_[i] - sum_[i] * sum_[i] / n) / (n - 1.0);  // sample variance
         img.pixels[i] = Color(glm::max(s2, DColor(0.0)) / n);
     }
     return img;

@@ -10,16 +10,22 @@
 namespace ps {
 
 struct SampleStats {
-    uint64_t nan = 0, inf = 0;   // samples rejected because some channel was NaN / +-Inf
-    uint64_t rays = 0;           // rays traced
-    SampleStats& operator+=(const SampleStats& o) { nan += o.nan; inf += o.inf; rays += o.rays; return *this; }
+    uint64_t nan = 0, inf = 0;  // samples rejected because some channel was NaN / +-Inf
+    uint64_t rays = 0;          // rays traced
+    SampleStats& operator+=(const SampleStats& o) {
+        nan += o.nan;
+        inf += o.inf;
+        rays += o.rays;
+        return *this;
+    }
     uint64_t bad() const { return nan + inf; }
 };
 
 // A sample enters the image only if it is finite; otherwise it is counted and becomes 0.
 inline Color checkSample(const Color& c, SampleStats& stats) {
     if (isFinite(c)) return c;
-    if (hasNaN(c)) ++stats.nan; else ++stats.inf;
+    if (hasNaN(c)) ++stats.nan;
+    else ++stats.inf;
     return Color(0.0f);
 }
 
@@ -66,7 +72,7 @@ struct SplatTarget {
     SplatBuffer* buffer = nullptr;
     size_t task = 0;
     SampleStats* stats = nullptr;
-    float scale = 1.0f;   // 1 / (light paths per iteration)
+    float scale = 1.0f;  // 1 / (light paths per iteration)
     void add(const Vec2& raster, const Color& c) const {
         if (buffer) buffer->splat(task, raster, c * scale, *stats);
     }

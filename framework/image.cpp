@@ -18,7 +18,12 @@ std::string extensionOf(const std::string& path) {
     for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     return ext;
 }
-bool littleEndianHost() { uint16_t x = 1; unsigned char b; std::memcpy(&b, &x, 1); return b == 1; }
+bool littleEndianHost() {
+    uint16_t x = 1;
+    unsigned char b;
+    std::memcpy(&b, &x, 1);
+    return b == 1;
+}
 
 // Readers check a header's size against the bytes the file really has before they allocate:
 // a 24-byte file must not make them ask for gigabytes.
@@ -54,13 +59,14 @@ Image readPFM(const std::string& path) {
         throw InputError(path, 0, "not a colour PFM file (expected header 'PF width height scale')");
     if (w <= 0 || h <= 0 || w > 1 << 16 || h > 1 << 16 || scale == 0.0 || !std::isfinite(scale))
         throw InputError(path, 0, "bad PFM header (size " + std::to_string(w) + "x" + std::to_string(h) + ")");
-    f.get();   // the single whitespace after the scale
+    f.get();  // the single whitespace after the scale
     const bool fileLE = scale < 0.0;
     const uint64_t need = uint64_t(w) * uint64_t(h) * sizeof(Color), have = bytesLeft(f);
     if (have < need)
-        throw InputError(path, 0, "the header says " + std::to_string(w) + "x" + std::to_string(h) + " pixels (" +
-                                      std::to_string(need) + " bytes) but the file has only " + std::to_string(have) +
-                                      " bytes of pixels (truncated?)");
+        throw InputError(path, 0,
+                         "the header says " + std::to_string(w) + "x" + std::to_string(h) + " pixels (" +
+                             std::to_string(need) + " bytes) but the file has only " + std::to_string(have) +
+                             " bytes of pixels (truncated?)");
     Image img(w, h);
     for (int y = h - 1; y >= 0; --y) {
         f.read(reinterpret_cast<char*>(&img.at(0, y)), sizeof(Color) * size_t(w));
@@ -71,7 +77,8 @@ Image readPFM(const std::string& path) {
             for (int k = 0; k < 3; ++k) {
                 unsigned char b[4];
                 std::memcpy(b, static_cast<const void*>(&c[k]), 4);
-                std::swap(b[0], b[3]); std::swap(b[1], b[2]);
+                std::swap(b[0], b[3]);
+                std::swap(b[1], b[2]);
                 std::memcpy(static_cast<void*>(&c[k]), b, 4);
             }
     }
@@ -92,7 +99,9 @@ void writeHDR(const std::string& path, const Image& img) {
 Image readHDR(const std::string& path) {
     std::ifstream f(path, std::ios::binary);
     if (!f) throw InputError(path, 0, "cannot open file (does it exist?)");
-    auto fail = [&](const std::string& problem) -> void { throw InputError(path, 0, "not a readable .hdr file: " + problem); };
+    auto fail = [&](const std::string& problem) -> void {
+        throw InputError(path, 0, "not a readable .hdr file: " + problem);
+    };
     std::string line;
     if (!std::getline(f, line) || line.rfind("#?", 0) != 0) fail("it does not start with '#?RADIANCE'");
     bool rgbe = true;
@@ -109,7 +118,8 @@ Image readHDR(const std::string& path) {
     char extra = 0;
     if (std::sscanf(line.c_str(), "%2s %lld %2s %lld %c", ya, &h, xa, &w, &extra) != 4 || std::string(ya) != "-Y" ||
         std::string(xa) != "+X")
-        fail("size line '" + line.substr(0, 40) + "' is not '-Y height +X width' (other orientations are not supported)");
+        fail("size line '" + line.substr(0, 40) +
+             "' is not '-Y height +X width' (other orientations are not supported)");
     if (w < 1 || h < 1 || w > kMaxImageSide || h > kMaxImageSide)
         fail("size " + std::to_string(w) + "x" + std::to_string(h) + " (each side must be 1 to " +
              std::to_string(kMaxImageSide) + ")");
@@ -164,7 +174,7 @@ void writePNG(const std::string& path, const Image& img, float exposure) {
         for (int k = 0; k < 3; ++k) {
             float v = img.pixels[i][k] * scale;
             v = std::isfinite(v) ? glm::clamp(v, 0.0f, 1.0f) : 0.0f;
-            v = v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f;   // sRGB
+            v = v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f;  // sRGB
             bytes[3 * i + k] = static_cast<unsigned char>(std::lround(v * 255.0f));
         }
     if (!stbi_write_png(path.c_str(), img.width, img.height, 3, bytes.data(), img.width * 3))

@@ -48,8 +48,8 @@ std::vector<IntegratorInfo> integratorList();
 // Throws InputError naming the unknown algorithm and the known ones.
 std::unique_ptr<Integrator> makeIntegrator(const std::string& name);
 
-#define PS_REGISTER_INTEGRATOR(Type, name, description)                                          \
-    static const bool psRegistered_##Type = ::ps::registerIntegrator(                            \
+#define PS_REGISTER_INTEGRATOR(Type, name, description)               \
+    static const bool psRegistered_##Type = ::ps::registerIntegrator( \
         {name, description, []() -> std::unique_ptr<::ps::Integrator> { return std::make_unique<Type>(); }})
 
 }  // namespace ps

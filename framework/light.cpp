@@ -135,7 +135,7 @@ EmissionPdf pdfEmission(const Scene& scene, int l, const Vec3& n, const Vec3& di
 float lightPower(const Scene& scene, int l) {
     const Light& light = scene.lights[l];
     switch (light.kind) {
-    case LightKind::Area: return kPi * light.area * luminance(light.Le);               // one-sided
+    case LightKind::Area: return kPi * light.area * luminance(light.Le);  // one-sided
     case LightKind::Point: return 4.0f * kPi * luminance(light.Le);
     case LightKind::Background: return 4.0f * kPi * kPi * scene.radius * scene.radius * luminance(light.Le);
     }

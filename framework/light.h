@@ -13,26 +13,26 @@ enum class LightKind { Area, Point, Background };
 
 struct Light {
     LightKind kind = LightKind::Area;
-    Color Le = Color(0.0f);        // area, background: radiance; point: intensity (W/sr)
-    Vec3 position;                 // point light
-    std::vector<uint32_t> prims;   // area light: its primitives (indices into Scene::prims)
-    Distribution1D primByArea;     // area light: picks a primitive proportionally to its area
-    float area = 0.0f;             // area light: total area
-    int line = 0;                  // the scene file's line that made it (0: not from a file)
+    Color Le = Color(0.0f);       // area, background: radiance; point: intensity (W/sr)
+    Vec3 position;                // point light
+    std::vector<uint32_t> prims;  // area light: its primitives (indices into Scene::prims)
+    Distribution1D primByArea;    // area light: picks a primitive proportionally to its area
+    float area = 0.0f;            // area light: total area
+    int line = 0;                 // the scene file's line that made it (0: not from a file)
 
-    bool isDelta() const { return kind == LightKind::Point; }          // a flag, not a huge pdf
+    bool isDelta() const { return kind == LightKind::Point; }  // a flag, not a huge pdf
     bool isInfinite() const { return kind == LightKind::Background; }
 };
 
 // A point on a light, sampled for a reference point ref (next-event estimation).
 struct LightSample {
-    Vec3 p;              // point on the light (point light: its position; background: unused)
-    Vec3 n;              // normal at p (area lights)
-    Vec3 wi;             // unit direction from ref towards the light
-    float dist = kInf;   // distance from ref to p (background: infinite)
-    Color Le;            // radiance leaving p towards ref; point light: intensity
-    float pdf = 0.0f;    // area light: pdf per unit AREA at p; background: per unit SOLID ANGLE;
-                         // point light: 1 (the probability of the delta position)
+    Vec3 p;             // point on the light (point light: its position; background: unused)
+    Vec3 n;             // normal at p (area lights)
+    Vec3 wi;            // unit direction from ref towards the light
+    float dist = kInf;  // distance from ref to p (background: infinite)
+    Color Le;           // radiance leaving p towards ref; point light: intensity
+    float pdf = 0.0f;   // area light: pdf per unit AREA at p; background: per unit SOLID ANGLE;
+                        // point light: 1 (the probability of the delta position)
 };
 
 // Samples a point on light `l` for the reference point ref; u uniform in [0,1)^2.
@@ -49,12 +49,12 @@ Color emittedRadiance(const Light& light, const Vec3& n, const Vec3& w);
 
 // A light particle's first vertex and direction (light tracing, BPT, photon mapping).
 struct EmissionSample {
-    Vec3 p, n;            // origin and its normal (point light: n unused)
-    Vec3 dir;             // unit direction of emission
-    Color Le;             // radiance (area, background) or intensity (point) along dir
-    float pdfA = 0.0f;    // area pdf of p (point light: 1, delta position; background: of p on
-                          // the disk of radius sceneRadius facing -dir)
-    float pdfW = 0.0f;    // solid-angle pdf of dir
+    Vec3 p, n;          // origin and its normal (point light: n unused)
+    Vec3 dir;           // unit direction of emission
+    Color Le;           // radiance (area, background) or intensity (point) along dir
+    float pdfA = 0.0f;  // area pdf of p (point light: 1, delta position; background: of p on
+                        // the disk of radius sceneRadius facing -dir)
+    float pdfW = 0.0f;  // solid-angle pdf of dir
 };
 EmissionSample sampleEmission(const Scene& scene, int l, const Vec2& uPos, const Vec2& uDir);
 

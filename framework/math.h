@@ -17,14 +17,10 @@ constexpr float kInvPi = 1.0f / kPi;
 constexpr float kInf = std::numeric_limits<float>::infinity();
 
 inline float maxComponent(const Vec3& v) { return std::max(v.x, std::max(v.y, v.z)); }
-inline float maxAbsComponent(const Vec3& v) {
-    return std::max(std::abs(v.x), std::max(std::abs(v.y), std::abs(v.z)));
-}
+inline float maxAbsComponent(const Vec3& v) { return std::max(std::abs(v.x), std::max(std::abs(v.y), std::abs(v.z))); }
 inline float luminance(const Color& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
 inline bool isBlack(const Color& c) { return c.r == 0.0f && c.g == 0.0f && c.b == 0.0f; }
-inline bool isFinite(const Color& c) {
-    return std::isfinite(c.r) && std::isfinite(c.g) && std::isfinite(c.b);
-}
+inline bool isFinite(const Color& c) { return std::isfinite(c.r) && std::isfinite(c.g) && std::isfinite(c.b); }
 inline bool hasNaN(const Color& c) { return std::isnan(c.r) || std::isnan(c.g) || std::isnan(c.b); }
 
 // Orthonormal frame around a unit normal n (Duff et al. 2017, branchless).

@@ -23,11 +23,10 @@ template <class T>
 std::errc parseFloatWithStrtod(const std::string& s, T& v) {
     static_assert(std::is_floating_point_v<T>, "floats only");
     const size_t digits = (!s.empty() && s[0] == '-') ? 1 : 0;
-    if (s.size() <= digits || std::isspace(static_cast<unsigned char>(s[digits])) || s[digits] == '+' ||
-        s[0] == '+')
+    if (s.size() <= digits || std::isspace(static_cast<unsigned char>(s[digits])) || s[digits] == '+' || s[0] == '+')
         return std::errc::invalid_argument;
     if (s.size() > digits + 1 && s[digits] == '0' && (s[digits + 1] == 'x' || s[digits + 1] == 'X'))
-        return std::errc::invalid_argument;   // strtod reads hexadecimal, from_chars (general) does not
+        return std::errc::invalid_argument;  // strtod reads hexadecimal, from_chars (general) does not
     char* end = nullptr;
     errno = 0;
     const double d = std::strtod(s.c_str(), &end);

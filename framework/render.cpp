@@ -17,9 +17,8 @@ using Clock = std::chrono::steady_clock;
 void drawProgress(int done, int total, double seconds, double budget) {
     const double frac = total > 0 ? double(done) / total : (budget > 0 ? std::min(1.0, seconds / budget) : 0.0);
     const int width = 30, filled = static_cast<int>(frac * width);
-    std::fprintf(stderr, "\r[%.*s%.*s] %3d%%  %d spp  %.1f s ", filled,
-                 "##############################", width - filled, "..............................",
-                 static_cast<int>(frac * 100.0), done, seconds);
+    std::fprintf(stderr, "\r[%.*s%.*s] %3d%%  %d spp  %.1f s ", filled, "##############################",
+                 width - filled, "..............................", static_cast<int>(frac * 100.0), done, seconds);
     std::fflush(stderr);
 }
 
@@ -27,7 +26,7 @@ void drawProgress(int done, int total, double seconds, double budget) {
 
 RenderResult render(const Scene& scene, Integrator& integrator, const RenderOptions& opt) {
     if (opt.threads > 0) omp_set_num_threads(opt.threads);
-    // Rays traced before this render (by any thread) are not this render's: discard their count.
+        // Rays traced before this render (by any thread) are not this render's: discard their count.
 #pragma omp parallel
     takeRayCount();
     RenderResult res;
@@ -61,7 +60,7 @@ RenderResult render(const Scene& scene, Integrator& integrator, const RenderOpti
                           static_cast<unsigned long long>(res.stats.inf));
             *opt.csv << line << "\n";
         }
-        if (opt.checkpoint && ((it + 1) & it) == 0) {   // it + 1 is a power of two
+        if (opt.checkpoint && ((it + 1) & it) == 0) {  // it + 1 is a power of two
             opt.checkpoint(it + 1, elapsed, res.film, res.stats);
             lastCheckpoint = it + 1;
         }

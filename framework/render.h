@@ -10,12 +10,12 @@
 namespace ps {
 
 struct RenderOptions {
-    int spp = 0;                  // iterations to run (0: none, unless a time budget is given)
-    double seconds = 0.0;         // time budget (0: none); the loop stops at whichever comes first
+    int spp = 0;           // iterations to run (0: none, unless a time budget is given)
+    double seconds = 0.0;  // time budget (0: none); the loop stops at whichever comes first
     uint64_t seed = 0;
-    int threads = 0;              // 0: all cores
-    bool progress = false;        // draw a progress bar on stderr
-    const Image* reference = nullptr;   // with a reference, one CSV row per iteration
+    int threads = 0;                   // 0: all cores
+    bool progress = false;             // draw a progress bar on stderr
+    const Image* reference = nullptr;  // with a reference, one CSV row per iteration
     std::ostream* csv = nullptr;
     // Called after iterations 1, 2, 4, 8, ... and after the last one, with the number of
     // iterations so far, the render time so far and the film (not counted as render time).
@@ -25,7 +25,7 @@ struct RenderOptions {
 struct RenderResult {
     Film film;
     int iterations = 0;
-    double seconds = 0.0;   // wall time of preprocessing and iterations, without I/O and metrics
+    double seconds = 0.0;  // wall time of preprocessing and iterations, without I/O and metrics
     SampleStats stats;
 };
 

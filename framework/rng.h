@@ -33,7 +33,10 @@ public:
     }
     // Uniform in [0, 1): 24 random bits, so the result is never 1.
     float uniform() { return static_cast<float>(nextU32() >> 8) * 0x1p-24f; }
-    Vec2 uniform2() { float a = uniform(); return Vec2(a, uniform()); }
+    Vec2 uniform2() {
+        float a = uniform();
+        return Vec2(a, uniform());
+    }
     // Uniform in [0, 1) with 53 random bits.
     double uniformDouble() {
         uint64_t hi = nextU32(), lo = nextU32();

@@ -15,14 +15,18 @@ public:
         cdf_.assign(weights.size() + 1, 0.0);
         for (size_t i = 0; i < weights.size(); ++i) cdf_[i + 1] = cdf_[i] + std::max(0.0, weights[i]);
         total_ = cdf_.back();
-        if (total_ > 0.0) for (double& c : cdf_) c /= total_;
+        if (total_ > 0.0)
+            for (double& c : cdf_) c /= total_;
     }
     size_t size() const { return cdf_.empty() ? 0 : cdf_.size() - 1; }
     double total() const { return total_; }
     // Picks index i with probability w_i / sum w; u in [0, 1).
     size_t sample(float u) const {
-        size_t lo = 0, hi = size();   // find i with cdf[i] <= u < cdf[i+1]
-        while (hi - lo > 1) { size_t mid = (lo + hi) / 2; (cdf_[mid] <= u ? lo : hi) = mid; }
+        size_t lo = 0, hi = size();  // find i with cdf[i] <= u < cdf[i+1]
+        while (hi - lo > 1) {
+            size_t mid = (lo + hi) / 2;
+            (cdf_[mid] <= u ? lo : hi) = mid;
+        }
         return lo;
     }
     float pmf(size_t i) const { return i < size() ? static_cast<float>(cdf_[i + 1] - cdf_[i]) : 0.0f; }

@@ -19,7 +19,11 @@ std::string Capabilities::describe() const {
     std::ostringstream os;
     auto list = [&](std::initializer_list<std::pair<bool, const char*>> items) {
         bool any = false;
-        for (auto& [on, name] : items) if (on) { os << (any ? "," : "") << name; any = true; }
+        for (auto& [on, name] : items)
+            if (on) {
+                os << (any ? "," : "") << name;
+                any = true;
+            }
         if (!any) os << "none";
     };
     os << "lights=";
@@ -73,7 +77,8 @@ void Scene::finalize() {
             std::vector<double> areas;
             for (uint32_t p : light.prims) {
                 const Primitive& pr = prims[p];
-                areas.push_back(pr.shape == ShapeKind::Triangle ? triangles[pr.index].area() : spheres[pr.index].area());
+                areas.push_back(pr.shape == ShapeKind::Triangle ? triangles[pr.index].area()
+                                                                : spheres[pr.index].area());
             }
             light.primByArea = Distribution1D(areas);
             light.area = static_cast<float>(light.primByArea.total());
@@ -91,8 +96,9 @@ void Scene::finalize() {
         // Radiance x area x pi in float: a light whose power overflows would be chosen with
         // probability NaN or 0 and render black without a single NaN sample to count.
         if (!std::isfinite(power.back()))
-            throw InputError(path, lights[l].line, "this light's power (radiance x area x pi) overflows float: "
-                                                   "lower its emission or scale the scene's units");
+            throw InputError(path, lights[l].line,
+                             "this light's power (radiance x area x pi) overflows float: "
+                             "lower its emission or scale the scene's units");
     }
     lightSelection = Distribution1D(power);
 
@@ -121,7 +127,7 @@ SurfacePoint Scene::surfacePoint(uint32_t prim, const Vec3& p) const {
     } else {
         const Sphere& s = spheres[pr.index];
         sp.n = glm::normalize(p - s.center);
-        sp.p = s.center + s.radius * sp.n;   // reproject onto the surface
+        sp.p = s.center + s.radius * sp.n;  // reproject onto the surface
         sp.errScale = s.errScale();
     }
     return sp;
@@ -199,7 +205,10 @@ Ray Scene::spawnRayTo(const SurfacePoint& sp, const Vec3& q) const {
 }
 
 int Scene::selectLight(float u, float& prob) const {
-    if (lights.empty() || lightSelection.total() <= 0.0) { prob = 0.0f; return -1; }
+    if (lights.empty() || lightSelection.total() <= 0.0) {
+        prob = 0.0f;
+        return -1;
+    }
     size_t i = lightSelection.sample(u);
     prob = lightSelection.pmf(i);
     return static_cast<int>(i);

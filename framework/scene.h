@@ -15,17 +15,17 @@ enum class ShapeKind : uint8_t { Triangle, Sphere };
 
 struct Primitive {
     ShapeKind shape = ShapeKind::Triangle;
-    uint32_t index = 0;    // into Scene::triangles or Scene::spheres
-    int material = -1;     // into Scene::materials
-    int light = -1;        // into Scene::lights if the primitive emits, else -1
+    uint32_t index = 0;  // into Scene::triangles or Scene::spheres
+    int material = -1;   // into Scene::materials
+    int light = -1;      // into Scene::lights if the primitive emits, else -1
 };
 
 // Defaults a scene file may set; the command line overrides them.
 struct RenderSettings {
     int spp = 16;
-    int maxDepth = 8;          // maximum number of bounces; 0 = only emission seen directly
+    int maxDepth = 8;  // maximum number of bounces; 0 = only emission seen directly
     std::string algo = "eyelight";
-    int algoLine = 0;          // the scene file line that set algo (for messages), 0 if none
+    int algoLine = 0;  // the scene file line that set algo (for messages), 0 if none
     // Integrators leave out work the capabilities show cannot contribute (Integrator::leftOut);
     // false (`--no-prune`) makes them do all of it, to check that pruning changes nothing.
     bool prune = true;
@@ -48,7 +48,7 @@ struct Capabilities {
 
 class Scene {
 public:
-    std::string path;   // the scene file, for messages
+    std::string path;  // the scene file, for messages
     Camera camera;
     RenderSettings settings;
     std::vector<Material> materials;
@@ -56,11 +56,11 @@ public:
     std::vector<Sphere> spheres;
     std::vector<Primitive> prims;
     std::vector<Light> lights;
-    int background = -1;           // index of the background light, -1 if none
-    Distribution1D lightSelection; // picks lights proportionally to their power
+    int background = -1;            // index of the background light, -1 if none
+    Distribution1D lightSelection;  // picks lights proportionally to their power
     Capabilities caps;
     AABB bounds;
-    Vec3 center;                   // bounding sphere of the geometry and the camera
+    Vec3 center;  // bounding sphere of the geometry and the camera
     float radius = 1.0f;
     BVH bvh;
     // What finalize noticed but did not refuse, one line each (loadScene prints them as

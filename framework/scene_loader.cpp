@@ -18,8 +18,8 @@ struct Statement {
     std::string file;
     int line = 0;
     std::vector<std::string> tokens;
-    size_t pos = 0;                                       // next token to read
-    std::map<std::string, std::vector<std::string>> options;   // key -> its values
+    size_t pos = 0;                                           // next token to read
+    std::map<std::string, std::vector<std::string>> options;  // key -> its values
 
     [[noreturn]] void fail(const std::string& problem) const { throw InputError(file, line, problem); }
     std::string keyword() const { return tokens[0]; }
@@ -40,12 +40,15 @@ struct Statement {
     static int toInt(const Statement& st, const std::string& tok, const std::string& what) {
         int v = 0;
         auto [end, ec] = std::from_chars(tok.data(), tok.data() + tok.size(), v);
-        if (ec != std::errc() || end != tok.data() + tok.size())
-            st.fail("malformed integer '" + tok + "' for " + what);
+        if (ec != std::errc() || end != tok.data() + tok.size()) st.fail("malformed integer '" + tok + "' for " + what);
         return v;
     }
     float number(const std::string& what) { return toFloat(*this, word(what), what); }
-    Vec3 vec3(const std::string& what) { float x = number(what); float y = number(what); return Vec3(x, y, number(what)); }
+    Vec3 vec3(const std::string& what) {
+        float x = number(what);
+        float y = number(what);
+        return Vec3(x, y, number(what));
+    }
 
     // Reads "key value..." pairs to the end of the line; arity gives each allowed key's count.
     void readOptions(const std::map<std::string, int>& arity) {
@@ -61,8 +64,8 @@ struct Statement {
             std::vector<std::string> values;
             for (int i = 0; i < it->second; ++i) {
                 // Too few values: the line ends, or (for numeric options) the next option's name comes.
-                const bool nextKey = pos < tokens.size() && key != "material" && key != "algo" &&
-                                     arity.count(tokens[pos]) > 0;
+                const bool nextKey =
+                    pos < tokens.size() && key != "material" && key != "algo" && arity.count(tokens[pos]) > 0;
                 if (pos >= tokens.size() || nextKey)
                     fail("option '" + key + "' needs " + std::to_string(it->second) + " value(s), got " +
                          std::to_string(i) + (nextKey ? " before '" + tokens[pos] + "'" : ""));
@@ -156,7 +159,8 @@ void checkFileSize(const std::string& path, uint64_t limit, const Fail& fail) {
 Color checkColor(const Statement& st, const std::string& key, const Color& c, bool atMostOne) {
     if (c.r < 0.0f || c.g < 0.0f || c.b < 0.0f) st.fail("'" + key + "' must not be negative");
     if (maxComponent(c) > kMaxEmission)
-        st.fail("'" + key + "' above 1e30: light transport multiplies it by areas, pdfs and cosines in float, "
+        st.fail("'" + key +
+                "' above 1e30: light transport multiplies it by areas, pdfs and cosines in float, "
                 "which would overflow (scale the scene's units instead)");
     if (atMostOne && (c.r > 1.0f || c.g > 1.0f || c.b > 1.0f))
         st.fail("'" + key + "' must be at most 1 (a surface cannot reflect more than it receives)");
@@ -202,8 +206,10 @@ private:
         else if (k == "pointlight") pointLight(st);
         else if (k == "background") background(st);
         else if (k == "render") render(st);
-        else st.fail("unknown keyword '" + k + "' (expected one of: camera, material, sphere, triangle, quad, "
-                     "mesh, pointlight, background, render)");
+        else
+            st.fail("unknown keyword '" + k +
+                    "' (expected one of: camera, material, sphere, triangle, quad, "
+                    "mesh, pointlight, background, render)");
     }
 
     void camera(Statement& st) {
@@ -222,7 +228,8 @@ private:
             st.fail("'resolution' must be between 1 and 16384 pixels in each direction, got " + res[0] + " " + res[1]);
         if (!(glm::length(target - eye) > 0.0f)) st.fail("'eye' and 'target' are the same point");
         const Vec3 f = glm::normalize(target - eye);
-        if (!(glm::length(glm::cross(f, up)) > 1e-6f * glm::length(up))) st.fail("'up' is parallel to the view direction");
+        if (!(glm::length(glm::cross(f, up)) > 1e-6f * glm::length(up)))
+            st.fail("'up' is parallel to the view direction");
         scene_.camera = Camera(eye, target, up, fov, w, h);
         haveCamera_ = true;
     }
@@ -232,7 +239,8 @@ private:
         const std::string type = st.word("a type (diffuse, phong, mirror, dielectric)");
         if (name[0] == '(') st.fail("material name '" + name + "': names starting with '(' are the loader's own");
         if (materialIndex_.count(name))
-            st.fail("material '" + name + "' is defined twice (first on line " + std::to_string(materialLine_[name]) + ")");
+            st.fail("material '" + name + "' is defined twice (first on line " + std::to_string(materialLine_[name]) +
+                    ")");
         materialLine_[name] = st.line;
         Material m;
         m.name = name;
@@ -248,8 +256,9 @@ private:
             m.exponent = st.optNumber("exponent", 0.0f);
             if (m.exponent < 0.0f) st.fail("'exponent' must not be negative");
             if (m.exponent > kMaxPhongExponent)
-                st.fail("'exponent' above 1e7: the lobe would be narrower than float directions can resolve "
-                        "(use 'mirror' for a perfect reflector)");
+                st.fail(
+                    "'exponent' above 1e7: the lobe would be narrower than float directions can resolve "
+                    "(use 'mirror' for a perfect reflector)");
         } else if (type == "mirror") {
             st.readOptions({{"albedo", 3}});
             m.kind = BSDFKind::Mirror;
@@ -329,7 +338,8 @@ private:
         Sphere s;
         s.center = st.optVec3("center", Vec3());
         s.radius = st.optNumber("radius", 0.0f);
-        if (s.radius < 0.0f) st.fail("negative radius " + st.options.at("radius")[0] + " (a sphere's radius must be positive)");
+        if (s.radius < 0.0f)
+            st.fail("negative radius " + st.options.at("radius")[0] + " (a sphere's radius must be positive)");
         if (!(s.radius > 0.0f)) st.fail("'radius' must be positive");
         // Float resolves the sphere's points only to the spacing of its centre's coordinates: a
         // radius of a few such steps is no sphere any more (hits and shadow rays on it are noise).
@@ -360,15 +370,17 @@ private:
         shapeMaterial(st, material, light);
         for (int i = 1; i + 1 < corners; ++i) {
             if (isDegenerate(v[0], v[i], v[i + 1]))
-                st.fail(corners == 3 ? std::string("degenerate triangle: its corners coincide or lie on a line (zero area)")
-                                     : "degenerate quad: corners 1, " + std::to_string(i + 1) + ", " + std::to_string(i + 2) +
-                                           " coincide or lie on a line (zero area)");
+                st.fail(corners == 3
+                            ? std::string("degenerate triangle: its corners coincide or lie on a line (zero area)")
+                            : "degenerate quad: corners 1, " + std::to_string(i + 1) + ", " + std::to_string(i + 2) +
+                                  " coincide or lie on a line (zero area)");
         }
         // The halves (1,2,3) and (1,3,4) of a quad must face the same way; they do not if the
         // corners are not in order around the quad (a bow tie) or it is concave at corner 2 or 4.
         if (corners == 4 && glm::dot(unitNormal(v[0], v[1], v[2]), unitNormal(v[0], v[2], v[3])) <= 0.0)
-            st.fail("the quad's halves (corners 1-2-3 and 1-3-4) face opposite ways: its corners are not in order "
-                    "around its edge, or it is concave at corner 2 or 4 (start at the concave corner)");
+            st.fail(
+                "the quad's halves (corners 1-2-3 and 1-3-4) face opposite ways: its corners are not in order "
+                "around its edge, or it is concave at corner 2 or 4 (start at the concave corner)");
         for (int i = 1; i + 1 < corners; ++i) addTriangle({v[0], v[i], v[i + 1]}, material, light);
     }
 
@@ -404,7 +416,7 @@ private:
         // The scene's material and emission, or, without 'material', the MTL's Kd and Ke.
         int sceneMaterial = -1, sceneLight = -1;
         if (st.has("material") || st.has("emission")) shapeMaterial(st, sceneMaterial, sceneLight);
-        std::map<int, std::pair<int, int>> fromMtl;   // MTL id -> (material, light)
+        std::map<int, std::pair<int, int>> fromMtl;  // MTL id -> (material, light)
         auto mtlMaterial = [&](int id, size_t face) -> std::pair<int, int> {
             if (sceneMaterial >= 0) return {sceneMaterial, sceneLight};
             if (id < 0 || id >= static_cast<int>(mtls.size()))
@@ -449,13 +461,15 @@ private:
                     if (static_cast<size_t>(vi) >= nVerts)
                         objFail(face, "vertex index " + std::to_string(vi + 1) + " out of range (the file has " +
                                           std::to_string(nVerts) + " vertices)");
-                    v.push_back(Vec3(attrib.vertices[3 * vi], attrib.vertices[3 * vi + 1], attrib.vertices[3 * vi + 2]) *
-                                    scale + translate);
+                    v.push_back(
+                        Vec3(attrib.vertices[3 * vi], attrib.vertices[3 * vi + 1], attrib.vertices[3 * vi + 2]) *
+                            scale +
+                        translate);
                 }
                 idx += n;
                 const int mtlId = f < shape.mesh.material_ids.size() ? shape.mesh.material_ids[f] : -1;
                 const auto [material, light] = mtlMaterial(mtlId, face);
-                for (int k = 1; k + 1 < n; ++k) {   // fan triangulation
+                for (int k = 1; k + 1 < n; ++k) {  // fan triangulation
                     if (isDegenerate(v[0], v[k], v[k + 1]))
                         objFail(face, "degenerate face: its corners coincide or lie on a line (zero area)");
                     addTriangle({v[0], v[k], v[k + 1]}, material, light);
@@ -477,7 +491,8 @@ private:
             if (tok.empty()) continue;
             auto fail = [&](const std::string& problem) { throw InputError(objPath, n, problem + meshOf); };
             if (tok[0] == "v") {
-                if (tok.size() < 4) fail("vertex with " + std::to_string(tok.size() - 1) + " coordinates (needs x y z)");
+                if (tok.size() < 4)
+                    fail("vertex with " + std::to_string(tok.size() - 1) + " coordinates (needs x y z)");
                 for (size_t k = 1; k < 4; ++k) {
                     float x = 0.0f;
                     if (parseWhole(tok[k], x) != std::errc() || !std::isfinite(x))
@@ -489,7 +504,7 @@ private:
             } else if (tok[0] == "f") {
                 if (tok.size() < 4)
                     fail("face with " + std::to_string(tok.size() - 1) + " vertices (a face needs at least 3)");
-                if (tok.size() - 1 > 255)   // tinyobjloader keeps a face's corner count in one byte
+                if (tok.size() - 1 > 255)  // tinyobjloader keeps a face's corner count in one byte
                     fail("face with " + std::to_string(tok.size() - 1) +
                          " corners: at most 255 are supported (split it into smaller faces)");
                 for (size_t k = 1; k < tok.size(); ++k) {
@@ -511,13 +526,15 @@ private:
     static void scanMtl(const std::string& mtlPath, const std::string& meshOf) {
         std::ifstream in(mtlPath);
         if (!in) return;
-        checkFileSize(mtlPath, kMaxMeshBytes, [&](const std::string& problem) { throw InputError(mtlPath, 0, problem + meshOf); });
+        checkFileSize(mtlPath, kMaxMeshBytes,
+                      [&](const std::string& problem) { throw InputError(mtlPath, 0, problem + meshOf); });
         std::string s;
         for (int n = 1; std::getline(in, s); ++n) {
             const std::vector<std::string> tok = tokensOf(s);
             if (tok.empty() || (tok[0] != "Kd" && tok[0] != "Ke")) continue;
             auto fail = [&](const std::string& problem) { throw InputError(mtlPath, n, problem + meshOf); };
-            if (tok.size() != 4) fail("'" + tok[0] + "' needs three numbers (r g b), got " + std::to_string(tok.size() - 1));
+            if (tok.size() != 4)
+                fail("'" + tok[0] + "' needs three numbers (r g b), got " + std::to_string(tok.size() - 1));
             for (size_t k = 1; k < 4; ++k) {
                 float x = 0.0f;
                 if (parseWhole(tok[k], x) != std::errc() || !std::isfinite(x))
@@ -569,7 +586,7 @@ private:
     Scene& scene_;
     std::string path_;
     std::map<std::string, int> materialIndex_;
-    std::map<std::string, int> materialLine_;   // where each material of the scene file is defined
+    std::map<std::string, int> materialLine_;  // where each material of the scene file is defined
     bool haveCamera_ = false, haveBackground_ = false;
 };
 
@@ -590,7 +607,8 @@ Scene loadScene(const std::string& path) {
     std::ostringstream ss;
     ss << in.rdbuf();
     Scene scene = parseScene(ss.str(), path);
-    for (const std::string& w : scene.warnings) std::fprintf(stderr, "pathspace: warning: %s: %s\n", path.c_str(), w.c_str());
+    for (const std::string& w : scene.warnings)
+        std::fprintf(stderr, "pathspace: warning: %s: %s\n", path.c_str(), w.c_str());
     return scene;
 }
 

@@ -12,7 +12,7 @@ void runTasks(int items, uint64_t seed, uint32_t iteration, SplatBuffer* splats,
     uint64_t rays = 0;
 #pragma omp parallel reduction(+ : rays)
     {
-        rays += takeRayCount();   // traced by this thread before the loop (in prepare): this iteration's
+        rays += takeRayCount();  // traced by this thread before the loop (in prepare): this iteration's
 #pragma omp for schedule(dynamic, 1)
         for (int t = 0; t < tasks; ++t) {
             Task task;
@@ -27,7 +27,7 @@ void runTasks(int items, uint64_t seed, uint32_t iteration, SplatBuffer* splats,
             taskStats[task.index] = task.stats;
         }
     }
-    for (const SampleStats& s : taskStats) stats += s;   // in task order
+    for (const SampleStats& s : taskStats) stats += s;  // in task order
     stats.rays += rays;
 }
 

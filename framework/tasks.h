@@ -24,9 +24,9 @@ constexpr int kItemsPerTask = 64;
 
 // What one task of an iteration owns.
 struct Task {
-    size_t index = 0;     // items [index * kItemsPerTask, (index + 1) * kItemsPerTask)
-    SampleStats stats;    // this task's NaN/Inf samples and rays
-    SplatTarget splat;    // this task's list of the iteration's SplatBuffer (none: splats are dropped)
+    size_t index = 0;   // items [index * kItemsPerTask, (index + 1) * kItemsPerTask)
+    SampleStats stats;  // this task's NaN/Inf samples and rays
+    SplatTarget splat;  // this task's list of the iteration's SplatBuffer (none: splats are dropped)
 };
 
 // item(i, rng, task) for every i in [0, items), rng = taskRng(seed, iteration, i), in parallel

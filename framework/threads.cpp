@@ -10,9 +10,9 @@ void preferPassiveWaiting(char** argv) {
 #if defined(__linux__)
     if (std::getenv("OMP_WAIT_POLICY") != nullptr) return;
     ::setenv("OMP_WAIT_POLICY", "PASSIVE", 1);
-    ::execv("/proc/self/exe", argv);   // returns only on failure: then go on as we are
+    ::execv("/proc/self/exe", argv);  // returns only on failure: then go on as we are
 #else
-    (void)argv;   // no /proc/self/exe (macOS, Windows): set OMP_WAIT_POLICY=PASSIVE yourself
+    (void)argv;  // no /proc/self/exe (macOS, Windows): set OMP_WAIT_POLICY=PASSIVE yourself
 #endif
 }
 

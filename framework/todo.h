@@ -5,12 +5,13 @@
 #include <cstdio>
 #include <mutex>
 
-#define PS_TODO(piece, value)                                                                        \
-    ([]() {                                                                                          \
-        static std::once_flag once_;                                                                 \
-        std::call_once(once_, [] {                                                                   \
-            std::fprintf(stderr, "pathspace: warning: TODO not done yet: %s (%s:%d)\n", piece,       \
-                         __FILE__, __LINE__);                                                        \
-        });                                                                                          \
-    }(),                                                                                             \
-     value)
+#define PS_TODO(piece, value)                                                                                \
+    (                                                                                                        \
+        []() {                                                                                               \
+            static std::once_flag once_;                                                                     \
+            std::call_once(once_, [] {                                                                       \
+                std::fprintf(stderr, "pathspace: warning: TODO not done yet: %s (%s:%d)\n", piece, __FILE__, \
+                             __LINE__);                                                                      \
+            });                                                                                              \
+        }(),                                                                                                 \
+        value)

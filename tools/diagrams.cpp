@@ -188,8 +188,7 @@ Svg rayTriangle() {
     s.text(p + P{16, -8}, "p", "start", 22, kRed, true);
     s.text({30, 450}, "p = o + t d = b_0 p_0 + b_1 p_1 + b_2 p_2,   b_0 = 1 − b_1 − b_2", "start", 20);
     s.text({30, 480}, "hit ⇔ b_0 ≥ 0, b_1 ≥ 0, b_2 ≥ 0 and 0 < t < t_{max}", "start", 20);
-    s.text({30, 515}, "b_i = area of the sub-triangle opposite p_i / area of the triangle", "start", 18,
-           kGrey);
+    s.text({30, 515}, "b_i = area of the sub-triangle opposite p_i / area of the triangle", "start", 18, kGrey);
     return s;
 }
 
@@ -286,10 +285,8 @@ Svg misPlates() {
 // A box seen in section (floor, ceiling, walls) with an area light in the ceiling.
 // The side facing the camera is open.
 void box(Svg& s, double l, double t, double r, double b, double lightL, double lightR, bool openLeft) {
-    if (openLeft)
-        s.polyline({{l, t}, {r, t}, {r, b}, {l, b}}, kInk, 3);
-    else
-        s.polyline({{r, t}, {l, t}, {l, b}, {r, b}}, kInk, 3);
+    if (openLeft) s.polyline({{l, t}, {r, t}, {r, b}, {l, b}}, kInk, 3);
+    else s.polyline({{r, t}, {l, t}, {l, b}, {r, b}}, kInk, 3);
     s.line({lightL, t}, {lightR, t}, kLight, 9);
 }
 
@@ -325,7 +322,8 @@ Svg neePath() {
     s.text({100, 497}, "BSDF-sampled direction (the walk)", "start", 18);
     s.line({480, 490}, {530, 490}, kLight, 2.5, "10 7");
     s.text({540, 497}, "shadow ray to a sampled light point (NEE)", "start", 18);
-    s.text({40, 528}, "every vertex adds L_e f G V / p_{light}; a BSDF ray that hits the light counts at depth 0 (pt-nee)",
+    s.text({40, 528},
+           "every vertex adds L_e f G V / p_{light}; a BSDF ray that hits the light counts at depth 0 (pt-nee)",
            "start", 18, kGrey);
     s.text({40, 552}, "or with an MIS weight (pt)", "start", 18, kGrey);
     return s;
@@ -437,7 +435,8 @@ Svg pathVertices() {
     s.text(lerp(x1, x2, 0.5) + P{34, 24}, "G(x_1↔x_2)", "start", 18);
     s.text(lerp(x2, x3, 0.5) + P{-30, 44}, "G(x_2↔x_3)", "start", 18);
     s.text({30, 298}, "G(x↔y) = V(x↔y) |cos θ_x| |cos θ_y| / ‖x − y‖²", "start", 19);
-    s.text({30, 342}, "f(x̄) = L_e(x_0→x_1) G(x_0↔x_1) f_s(x_1) G(x_1↔x_2) f_s(x_2) G(x_2↔x_3) W_e(x_2→x_3)", "start", 19);
+    s.text({30, 342}, "f(x̄) = L_e(x_0→x_1) G(x_0↔x_1) f_s(x_1) G(x_1↔x_2) f_s(x_2) G(x_2↔x_3) W_e(x_2→x_3)", "start",
+           19);
     // The splits of a path of length k = 2 (three vertices, s + t = 3).
     s.text({30, 392}, "k = 2: techniques (s, t), s + t = 3, s light vertices and t camera vertices", "start", 19);
     const char* caption[] = {"(0,3): hits the light", "(1,2): next event", "(2,1): light tracing",
@@ -476,17 +475,16 @@ Svg bptTechniques() {
             s.line(v[e], v[e + 1], col, 3.5, joined ? "8 6" : nullptr);
         }
         for (int k = 0; k < 4; ++k) {
-            if (k == 3)
-                s.circle(v[k], 9, k < st ? kLight : kCamera);
-            else
-                s.dot(v[k], k < st ? kLight : kCamera, 8);
+            if (k == 3) s.circle(v[k], 9, k < st ? kLight : kCamera);
+            else s.dot(v[k], k < st ? kLight : kCamera, 8);
         }
         s.text({bx + 95, 350}, caption[st], "middle", 18, st == 4 ? kGrey : kInk);
         std::string w = st == 4 ? "w = 0 (pinhole)" : "w_{" + std::to_string(st) + "," + std::to_string(4 - st) + "}";
         s.text({bx + 95, 380}, w, "middle", 20, st == 4 ? kGrey : kInk, st != 4);
         if (st > 0) s.line({bx - 8, 70}, {bx - 8, 390}, "#dddddd", 2);
     }
-    s.text({30, 430}, "power heuristic:  w_{s,t} = p_{s,t}² / Σ_{i} p_{i,4−i}²,   so  w_{0,4} + w_{1,3} + w_{2,2} + w_{3,1} = 1",
+    s.text({30, 430},
+           "power heuristic:  w_{s,t} = p_{s,t}² / Σ_{i} p_{i,4−i}²,   so  w_{0,4} + w_{1,3} + w_{2,2} + w_{3,1} = 1",
            "start", 20);
     s.text({30, 465}, "p_{s,t}: the area density with which technique (s, t) builds this very path", "start", 18,
            kGrey);

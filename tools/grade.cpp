@@ -41,7 +41,7 @@ struct TestResult {
     std::string lesson, name, message, output;
     int points = 1;
     bool passed = false;
-    bool timedOut = false;   // stopped by the per-test timeout (then message says after how long)
+    bool timedOut = false;  // stopped by the per-test timeout (then message says after how long)
 };
 
 // A bad command line: "grade: MESSAGE (see --help)", exit status 2.
@@ -81,8 +81,8 @@ int pointsOf(const std::string& name) {
 }
 
 std::string xmlUnescape(std::string s) {
-    const std::pair<const char*, const char*> ents[] = {
-        {"&quot;", "\""}, {"&apos;", "'"}, {"&lt;", "<"}, {"&gt;", ">"}, {"&#10;", "\n"}, {"&#13;", "\r"}, {"&amp;", "&"}};
+    const std::pair<const char*, const char*> ents[] = {{"&quot;", "\""}, {"&apos;", "'"}, {"&lt;", "<"}, {"&gt;", ">"},
+                                                        {"&#10;", "\n"},  {"&#13;", "\r"}, {"&amp;", "&"}};
     for (auto [from, to] : ents)
         for (size_t p = 0; (p = s.find(from, p)) != std::string::npos; p += std::string(to).size())
             s.replace(p, std::string(from).size(), to);
@@ -114,8 +114,11 @@ std::string jsonEscape(const std::string& s) {
         case '\n': out += "\\n"; break;
         case '\t': out += "\\t"; break;
         default:
-            if (c < 0x20) { char b[8]; std::snprintf(b, sizeof b, "\\u%04x", c); out += b; }
-            else out += static_cast<char>(c);
+            if (c < 0x20) {
+                char b[8];
+                std::snprintf(b, sizeof b, "\\u%04x", c);
+                out += b;
+            } else out += static_cast<char>(c);
         }
     }
     return out;
@@ -166,7 +169,7 @@ std::map<std::string, TestResult> readJUnit(const fs::path& file) {
         const std::string tag = xml.substr(pos, tagEnd - pos);
         std::string body;
         size_t next = tagEnd + 1;
-        if (xml[tagEnd - 1] != '/') {   // <testcase ...> body </testcase>
+        if (xml[tagEnd - 1] != '/') {  // <testcase ...> body </testcase>
             const size_t close = xml.find("</testcase>", tagEnd);
             body = xml.substr(tagEnd + 1, (close == std::string::npos ? xml.size() : close) - tagEnd - 1);
             next = close == std::string::npos ? xml.size() : close;
@@ -202,7 +205,8 @@ std::set<std::string> timedOutTests(const fs::path& ctestLog) {
         if (!l.empty() && l.back() == '\r') l.pop_back();
         if (l.size() <= tail.size() || l.compare(l.size() - tail.size(), tail.size(), tail) != 0) continue;
         const size_t start = l.find_first_not_of(" \t"), dash = l.find(" - ");
-        if (start == std::string::npos || dash == std::string::npos || !std::isdigit(static_cast<unsigned char>(l[start])))
+        if (start == std::string::npos || dash == std::string::npos ||
+            !std::isdigit(static_cast<unsigned char>(l[start])))
             continue;
         names.insert(l.substr(dash + 3, l.size() - tail.size() - dash - 3));
     }
@@ -251,18 +255,21 @@ int main(int argc, char** argv) {
         else if (a == "--junit") junitIn = fs::absolute(value());
         else if (a == "--expect") {
             expect = value();
-            if (expect != "zero" && expect != "full") { std::cerr << "grade: --expect takes zero or full\n"; return 2; }
-        }
-        else if (a == "--help" || a == "-h") {
-            std::cout << "usage: grade [--submission DIR] [--lessons 0,1|all] [--out DIR] [--timeout SECONDS] [--jobs N]\n"
-                         "       grade --junit FILE [--lessons 0,1|all] [--out DIR] [--expect zero|full]\n"
-                         "Scores each lesson in isolation (that lesson from DIR, the others from solutions/).\n"
-                         "DIR holds lesson folders like assignments/ (default: assignments/). Writes\n"
-                         "OUT/results.json (Gradescope) and OUT/junit.xml (default OUT: ./grade).\n"
-                         "--timeout SECONDS limits each graded test (default 120; a test it stops scores 0 and is\n"
-                         "reported as 'timed out after SECONDS s'); --jobs N builds and tests N at a time (default 2).\n"
-                         "--junit FILE scores the graded tests from an existing CTest JUnit report instead of\n"
-                         "building; --expect zero|full then exits 1 unless every graded test failed / passed.\n";
+            if (expect != "zero" && expect != "full") {
+                std::cerr << "grade: --expect takes zero or full\n";
+                return 2;
+            }
+        } else if (a == "--help" || a == "-h") {
+            std::cout
+                << "usage: grade [--submission DIR] [--lessons 0,1|all] [--out DIR] [--timeout SECONDS] [--jobs N]\n"
+                   "       grade --junit FILE [--lessons 0,1|all] [--out DIR] [--expect zero|full]\n"
+                   "Scores each lesson in isolation (that lesson from DIR, the others from solutions/).\n"
+                   "DIR holds lesson folders like assignments/ (default: assignments/). Writes\n"
+                   "OUT/results.json (Gradescope) and OUT/junit.xml (default OUT: ./grade).\n"
+                   "--timeout SECONDS limits each graded test (default 120; a test it stops scores 0 and is\n"
+                   "reported as 'timed out after SECONDS s'); --jobs N builds and tests N at a time (default 2).\n"
+                   "--junit FILE scores the graded tests from an existing CTest JUnit report instead of\n"
+                   "building; --expect zero|full then exits 1 unless every graded test failed / passed.\n";
             return 0;
         } else usageError("unknown option " + a);
     }
@@ -272,7 +279,8 @@ int main(int argc, char** argv) {
         std::stringstream ss(lessonsArg);
         for (std::string k; std::getline(ss, k, ',');)
             if (!k.empty()) wanted.push_back(wholeNumber("--lessons", k, 0, 99));
-        if (wanted.empty()) usageError("--lessons needs 'all' or lesson numbers such as 0,1,7, got '" + lessonsArg + "'");
+        if (wanted.empty())
+            usageError("--lessons needs 'all' or lesson numbers such as 0,1,7, got '" + lessonsArg + "'");
     }
     out = fs::absolute(out);
     fs::create_directories(out);
@@ -286,12 +294,19 @@ int main(int argc, char** argv) {
     for (const auto& e : fs::directory_iterator(source / "tests")) {
         const std::string n = e.path().filename().string();
         if (e.is_directory() && n.size() > 3 && std::isdigit(n[0]) && std::isdigit(n[1]) && n[2] == '-') {
-            if (lessonsArg == "all") { lessons.push_back(n); continue; }
-            if (std::find(wanted.begin(), wanted.end(), std::stoi(n.substr(0, 2))) != wanted.end()) lessons.push_back(n);
+            if (lessonsArg == "all") {
+                lessons.push_back(n);
+                continue;
+            }
+            if (std::find(wanted.begin(), wanted.end(), std::stoi(n.substr(0, 2))) != wanted.end())
+                lessons.push_back(n);
         }
     }
     std::sort(lessons.begin(), lessons.end());
-    if (lessons.empty()) { std::cerr << "grade: no lesson matches '" << lessonsArg << "'\n"; return 2; }
+    if (lessons.empty()) {
+        std::cerr << "grade: no lesson matches '" << lessonsArg << "'\n";
+        return 2;
+    }
 
     std::vector<TestResult> results;
     std::string junit = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites>\n";
@@ -299,10 +314,11 @@ int main(int argc, char** argv) {
         std::cerr << "grade: " << junitIn.string() << ": no such JUnit report\n";
         return 2;
     }
-    const std::map<std::string, TestResult> reported = junitIn.empty() ? std::map<std::string, TestResult>() : readJUnit(junitIn);
+    const std::map<std::string, TestResult> reported =
+        junitIn.empty() ? std::map<std::string, TestResult>() : readJUnit(junitIn);
     for (const std::string& lesson : lessons) {
         const std::string nn = lesson.substr(0, 2);
-        if (!junitIn.empty()) {   // score from the report, nothing to build
+        if (!junitIn.empty()) {  // score from the report, nothing to build
             for (const std::string& name : declaredTests(source / "tests" / lesson)) {
                 auto it = reported.find(name);
                 TestResult r = it != reported.end() ? it->second : TestResult();
@@ -321,8 +337,8 @@ int main(int argc, char** argv) {
         const bool built =
             run("cmake -S " + quote(source.string()) + " -B " + quote(build.string()) +
                 " -DCMAKE_BUILD_TYPE=Release -DPATHSPACE_TEST_TIMEOUT=" + std::to_string(timeout) +
-                " -DPATHSPACE_STUDENT=" + nn + " -DPATHSPACE_ASSIGNMENTS_DIR=" +
-                quote(submission.string()) + " > " + quote(log.string()) + " 2>&1") == 0 &&
+                " -DPATHSPACE_STUDENT=" + nn + " -DPATHSPACE_ASSIGNMENTS_DIR=" + quote(submission.string()) + " > " +
+                quote(log.string()) + " 2>&1") == 0 &&
             run("cmake --build " + quote(build.string()) + " -j" + std::to_string(jobs) + " --target lesson_" + nn +
                 "_tests >> " + quote(log.string()) + " 2>&1") == 0;
         std::map<std::string, TestResult> ran;
@@ -343,8 +359,8 @@ int main(int argc, char** argv) {
             if (size_t p = suite.find("?>"); p != std::string::npos) suite = suite.substr(p + 2);
             junit += suite + "\n";
         }
-        const std::string buildError = built ? "" : "the lesson did not build; the end of " + log.string() + ":\n" +
-                                                        lastLines(readText(log), 25);
+        const std::string buildError =
+            built ? "" : "the lesson did not build; the end of " + log.string() + ":\n" + lastLines(readText(log), 25);
         for (const std::string& name : declaredTests(source / "tests" / lesson)) {
             TestResult r;
             auto it = ran.find(name);
@@ -355,8 +371,9 @@ int main(int argc, char** argv) {
             r.points = pointsOf(name);
             results.push_back(r);
         }
-        if (!built) junit += "<testsuite name=\"lesson-" + nn + "\"><testcase name=\"build\"><failure message=\"" +
-                             xmlEscape(buildError) + "\"/></testcase></testsuite>\n";
+        if (!built)
+            junit += "<testsuite name=\"lesson-" + nn + "\"><testcase name=\"build\"><failure message=\"" +
+                     xmlEscape(buildError) + "\"/></testcase></testsuite>\n";
     }
     junit += "</testsuites>\n";
     if (junitIn.empty()) std::ofstream(out / "junit.xml") << junit;
@@ -374,21 +391,24 @@ int main(int argc, char** argv) {
         perLesson[r.lesson].first += got;
         perLesson[r.lesson].second += r.points;
         std::printf("%-16s %-70.70s %3d/%-2d  %s\n", r.lesson.c_str(), r.name.c_str(), got, r.points,
-                    r.passed ? "pass" : r.timedOut ? "TIMEOUT" : "FAIL");
+                    r.passed     ? "pass"
+                    : r.timedOut ? "TIMEOUT"
+                                 : "FAIL");
         const std::string why = r.passed ? "" : failureSummary(r);
         if (!r.passed) {
             std::istringstream in(why);
             for (std::string l; std::getline(in, l);) std::printf("%16s     %s\n", "", l.c_str());
         }
-        tests << (i ? ",\n" : "") << "    {\"name\": \"" << jsonEscape(r.lesson + ": " + r.name) << "\", \"score\": " << got
-              << ", \"max_score\": " << r.points << ", \"status\": \"" << (r.passed ? "passed" : "failed")
-              << "\", \"output\": \"" << jsonEscape(why) << "\"}";
+        tests << (i ? ",\n" : "") << "    {\"name\": \"" << jsonEscape(r.lesson + ": " + r.name)
+              << "\", \"score\": " << got << ", \"max_score\": " << r.points << ", \"status\": \""
+              << (r.passed ? "passed" : "failed") << "\", \"output\": \"" << jsonEscape(why) << "\"}";
     }
     std::printf("\n");
     for (const auto& [lesson, s] : perLesson) std::printf("%-16s %d / %d\n", lesson.c_str(), s.first, s.second);
     std::printf("%-16s %d / %d\n", "total", score, maxScore);
     std::ofstream(out / "results.json") << "{\n  \"score\": " << score << ",\n  \"max_score\": " << maxScore
-                                        << ",\n  \"tests\": [\n" << tests.str() << "\n  ]\n}\n";
+                                        << ",\n  \"tests\": [\n"
+                                        << tests.str() << "\n  ]\n}\n";
     std::cerr << "grade: wrote " << (out / "results.json").string()
               << (junitIn.empty() ? " and " + (out / "junit.xml").string() : "") << "\n";
     if (!expect.empty()) {
@@ -397,7 +417,8 @@ int main(int argc, char** argv) {
             if (r.passed != (expect == "full")) wrong += "  " + r.lesson + ": " + r.name + "\n";
         if (!wrong.empty()) {
             std::cerr << "grade: expected every graded test to " << (expect == "full" ? "pass" : "fail")
-                      << "; these did not:\n" << wrong;
+                      << "; these did not:\n"
+                      << wrong;
             return 1;
         }
         std::cerr << "grade: all " << results.size() << " graded tests " << (expect == "full" ? "passed" : "failed")

@@ -64,7 +64,7 @@ std::string marker(const std::string& line, std::string& indent, std::string& re
             return kw;
         }
     }
-    rest = line.substr(i + 3);   // keep the text's own spacing after "//!"
+    rest = line.substr(i + 3);  // keep the text's own spacing after "//!"
     return "TEXT";
 }
 
@@ -80,7 +80,8 @@ std::string makeAssignment(const fs::path& file, std::vector<std::string>* regio
         const std::string m = marker(line, indent, rest);
         const std::string where = file.string() + ":" + std::to_string(lineNo) + ": ";
         if (m == "BEGIN") {
-            if (inRegion) throw Failure(where + "//! BEGIN inside the region opened at line " + std::to_string(regionStart));
+            if (inRegion)
+                throw Failure(where + "//! BEGIN inside the region opened at line " + std::to_string(regionStart));
             inRegion = true;
             regionStart = lineNo;
             if (regions) regions->emplace_back();
@@ -122,8 +123,10 @@ int generate(const fs::path& sol, const fs::path& asg, bool checkOnly) {
         // A file with nothing for the student to write is the lesson's plumbing: it is compiled
         // from lessons/NN-name/ (cmake/lessons.cmake), so the student's folder holds only pieces.
         if (rel.extension() == ".cpp" && text == readText(sol / rel))
-            throw Failure((sol / rel).string() + ": no //! marker, nothing for the student to write: plumbing belongs in "
-                          "lessons/" + rel.parent_path().string() + "/ (cmake/lessons.cmake compiles it from there)");
+            throw Failure((sol / rel).string() +
+                          ": no //! marker, nothing for the student to write: plumbing belongs in "
+                          "lessons/" +
+                          rel.parent_path().string() + "/ (cmake/lessons.cmake compiles it from there)");
         const fs::path target = asg / rel;
         if (fs::exists(target) && readText(target) == text) continue;
         if (checkOnly) {
@@ -139,14 +142,16 @@ int generate(const fs::path& sol, const fs::path& asg, bool checkOnly) {
         for (const fs::path& rel : filesBelow(asg))
             if (!expected.count(rel)) {
                 if (checkOnly) {
-                    std::cerr << "skeleton: " << (asg / rel).string() << " has no solution file " << (sol / rel).string() << "\n";
+                    std::cerr << "skeleton: " << (asg / rel).string() << " has no solution file "
+                              << (sol / rel).string() << "\n";
                     ++stale;
                 } else {
                     fs::remove(asg / rel);
                     std::cout << "skeleton: removed " << (asg / rel).string() << "\n";
                 }
             }
-    if (stale) std::cerr << "skeleton: " << stale << " file(s) out of sync; run: cmake --build build --target assignments\n";
+    if (stale)
+        std::cerr << "skeleton: " << stale << " file(s) out of sync; run: cmake --build build --target assignments\n";
     return stale ? 1 : 0;
 }
 
@@ -155,7 +160,10 @@ std::string normalise(const std::string& s) {
     std::string out;
     bool space = false;
     for (char c : s) {
-        if (c == ' ' || c == '\t' || c == '\r') { space = !out.empty(); continue; }
+        if (c == ' ' || c == '\t' || c == '\r') {
+            space = !out.empty();
+            continue;
+        }
         if (space) out += ' ';
         space = false;
         out += c;
@@ -168,7 +176,8 @@ std::vector<std::pair<std::string, int>> codeLines(const std::vector<std::string
     std::vector<std::pair<std::string, int>> out;
     for (size_t i = 0; i < lines.size(); ++i) {
         const std::string n = normalise(lines[i]);
-        if (!n.empty() && n.compare(0, 2, "//") != 0 && n != "{" && n != "}" && n != "};") out.emplace_back(n, int(i) + 1);
+        if (!n.empty() && n.compare(0, 2, "//") != 0 && n != "{" && n != "}" && n != "};")
+            out.emplace_back(n, int(i) + 1);
     }
     return out;
 }
@@ -178,7 +187,7 @@ std::vector<std::pair<std::string, int>> codeLines(const std::vector<std::string
 // short lines like "for (int i = 0; i < n; ++i) {" occur everywhere and prove nothing.)
 int leaks(const fs::path& sol, const fs::path& tree) {
     constexpr size_t kWindow = 3, kMinShortRegion = 40;
-    std::map<std::string, std::string> secret;   // lines joined by '\n' -> where they come from
+    std::map<std::string, std::string> secret;  // lines joined by '\n' -> where they come from
     std::set<size_t> sizes;
     for (const fs::path& rel : filesBelow(sol)) {
         std::vector<std::vector<std::string>> regions;
@@ -194,7 +203,8 @@ int leaks(const fs::path& sol, const fs::path& tree) {
                 secret.emplace(key, (sol / rel).string());
                 sizes.insert(n);
             };
-            if (code.size() >= kWindow) for (size_t i = 0; i + kWindow <= code.size(); ++i) add(i, kWindow);
+            if (code.size() >= kWindow)
+                for (size_t i = 0; i + kWindow <= code.size(); ++i) add(i, kWindow);
             else if (!code.empty()) add(0, code.size());
         }
     }
@@ -208,7 +218,8 @@ int leaks(const fs::path& sol, const fs::path& tree) {
                 auto it = secret.find(key);
                 if (it == secret.end()) continue;
                 std::cerr << "skeleton: " << (tree / rel).string() << ":" << code[i].second << " holds " << n
-                          << " line(s) of a solution region of " << it->second << ":\n" << key;
+                          << " line(s) of a solution region of " << it->second << ":\n"
+                          << key;
                 ++found;
             }
     }
@@ -221,7 +232,10 @@ int leaks(const fs::path& sol, const fs::path& tree) {
 
 int main(int argc, char** argv) {
     const std::string usage = "usage: skeleton generate|check|leaks SOLUTIONS DIR\n";
-    if (argc != 4) { std::cerr << usage; return 2; }
+    if (argc != 4) {
+        std::cerr << usage;
+        return 2;
+    }
     const std::string cmd = argv[1];
     try {
         if (cmd == "generate") return generate(argv[2], argv[3], false);

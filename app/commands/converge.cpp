@@ -85,7 +85,7 @@ int runConverge(const std::vector<std::string>& args) {
     if (opt.seconds == 0.0 && opt.spp == 0) throw UsageError("'converge' needs --time SECONDS or --spp N");
     if (opt.seconds == 0.0 && reference.empty() && refSeconds == 0.0)
         throw UsageError("'converge' without --time needs --reference REF or --ref-time SECONDS");
-    for (const std::string& a : opt.algos) makeIntegrator(a);   // unknown names fail now, not later
+    for (const std::string& a : opt.algos) makeIntegrator(a);  // unknown names fail now, not later
     // The report's folder and every file in it, checked before the scene is loaded (command.h).
     const std::string name = stem(baseName(scenePath));
     if (outDir.empty()) outDir = "converge-" + name;
@@ -99,9 +99,7 @@ int runConverge(const std::vector<std::string>& args) {
     if (!regionNames.empty()) {
         try {
             opt.regions = materialRegions(scene, regionNames);
-        } catch (const InputError& e) {
-            throw InputError(scenePath, 0, e.what());
-        }
+        } catch (const InputError& e) { throw InputError(scenePath, 0, e.what()); }
     }
     scene.settings.prune = prune;
     for (const std::string& a : opt.algos) printLeftOut(a, *makeIntegrator(a), scene);
@@ -121,7 +119,7 @@ int runConverge(const std::vector<std::string>& args) {
         auto integrator = makeIntegrator(refAlgo);
         RenderOptions ro;
         ro.seconds = refSeconds > 0.0 ? refSeconds : 10.0 * opt.seconds;
-        ro.seed = 1000003;   // independent of the compared runs (seeds 0 .. K-1)
+        ro.seed = 1000003;  // independent of the compared runs (seeds 0 .. K-1)
         ro.threads = opt.threads;
         ro.progress = opt.progress;
         std::cerr << "pathspace: rendering the reference with " << refAlgo << " for " << ro.seconds << " s\n";
@@ -135,8 +133,9 @@ int runConverge(const std::vector<std::string>& args) {
 
     const ConvergenceReport report = runConvergence(scene, ref, opt);
     writeText(outDir + "/convergence.csv", convergenceCsv(name, report));
-    writeText(outDir + "/convergence.svg",
-              convergencePlotSvg(name + ": relMSE against render time (" + std::to_string(opt.seeds) + " seed(s))", report));
+    writeText(
+        outDir + "/convergence.svg",
+        convergencePlotSvg(name + ": relMSE against render time (" + std::to_string(opt.seeds) + " seed(s))", report));
     const std::string table = efficiencyTable(report);
     std::ostringstream budget;
     if (opt.seconds > 0.0) budget << opt.seconds << " s";

@@ -13,9 +13,8 @@ int runInfo(const std::vector<std::string>& args) {
     std::cout << args[0] << ": " << scene.camera.width() << "x" << scene.camera.height() << " pixels, "
               << scene.triangles.size() << " triangles, " << scene.spheres.size() << " spheres, "
               << scene.materials.size() << " materials, " << scene.lights.size() << " lights, BVH depth "
-              << scene.bvh.depth() << "\n  " << scene.caps.describe() << "\n  defaults: spp "
-              << scene.settings.spp << ", maxdepth " << scene.settings.maxDepth << ", algo " << scene.settings.algo
-              << "\n";
+              << scene.bvh.depth() << "\n  " << scene.caps.describe() << "\n  defaults: spp " << scene.settings.spp
+              << ", maxdepth " << scene.settings.maxDepth << ", algo " << scene.settings.algo << "\n";
     for (const PointLightPixel& p : pointLightsInView(scene))
         std::cout << "  point light " << p.light << " is seen directly in pixel (" << p.x << ", " << p.y
                   << "): only light tracing and BPT draw it; converge leaves it out of the errors\n";

@@ -25,7 +25,7 @@ const char* const kUsage = R"(pyramid options:
 )";
 
 constexpr int kMaxLength = 12;
-constexpr float kMaxExposure = 100.0f;   // 2^100 still fits a float
+constexpr float kMaxExposure = 100.0f;  // 2^100 still fits a float
 
 int runPyramid(const std::vector<std::string>& args) {
     std::string scenePath, out;
@@ -53,7 +53,8 @@ int runPyramid(const std::vector<std::string>& args) {
     if (scenePath.empty()) throw UsageError("'pyramid' needs a scene file");
     // Every file this run writes, checked before the scene is loaded (command.h).
     if (out.empty()) out = stem(baseName(scenePath)) + "-pyramid";
-    std::vector<OutputFile> outputs = {{"--out", out + "-unweighted.png", {".png"}}, {"--out", out + "-weighted.png", {".png"}}};
+    std::vector<OutputFile> outputs = {{"--out", out + "-unweighted.png", {".png"}},
+                                       {"--out", out + "-weighted.png", {".png"}}};
     for (int k = 1; k <= maxLength; ++k)
         for (int s = 0; s <= k + 1; ++s) {
             const std::string name = out + "-" + std::to_string(s) + "-" + std::to_string(k + 1 - s);
@@ -65,7 +66,8 @@ int runPyramid(const std::vector<std::string>& args) {
     scene.settings.prune = prune;
     if (spp == 0) spp = scene.settings.spp;
     BptOptions opt;
-    for (const std::string& line : bptLeftOut(scene, opt)) std::cerr << "pathspace: pyramid leaves out " << line << "\n";
+    for (const std::string& line : bptLeftOut(scene, opt))
+        std::cerr << "pathspace: pyramid leaves out " << line << "\n";
     const TechniqueImages t = renderTechniques(scene, maxLength, spp, seed, threads, opt);
     const int w = scene.camera.width(), h = scene.camera.height(), gap = std::max(2, w / 16);
     const int cols = maxLength + 2;
@@ -98,8 +100,10 @@ int runPyramid(const std::vector<std::string>& args) {
                  "a connection at a specular vertex) or found nothing at this spp\n";
     writePNG(out + "-unweighted.png", unweighted, exposure);
     writePNG(out + "-weighted.png", weighted, exposure);
-    std::cout << "pathspace: " << t.stats.nan << " NaN, " << t.stats.inf << " Inf values (counted, left out of the images)\n";
-    std::cout << "pathspace: wrote " << out << "-unweighted.png, " << out << "-weighted.png and " << out << "-S-T[-weighted].pfm\n";
+    std::cout << "pathspace: " << t.stats.nan << " NaN, " << t.stats.inf
+              << " Inf values (counted, left out of the images)\n";
+    std::cout << "pathspace: wrote " << out << "-unweighted.png, " << out << "-weighted.png and " << out
+              << "-S-T[-weighted].pfm\n";
     return 0;
 }
 

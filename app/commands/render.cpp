@@ -65,7 +65,7 @@ int runRender(const std::vector<std::string>& args) {
     // Every file this run writes, checked before the scene is loaded (command.h).
     if (out.empty()) out = stem(baseName(scenePath)) + ".png";
     std::vector<OutputFile> outputs = {{"--out", out, imageExtensions()}};
-    if (stem(out) + ".pfm" != out) outputs.push_back({"--out", stem(out) + ".pfm", {".pfm"}});   // written next to it
+    if (stem(out) + ".pfm" != out) outputs.push_back({"--out", stem(out) + ".pfm", {".pfm"}});  // written next to it
     if (!variancePath.empty()) outputs.push_back({"--variance", variancePath, {".pfm"}});
     if (!reference.empty()) {
         if (csvPath.empty()) csvPath = stem(out) + ".csv";
@@ -81,7 +81,7 @@ int runRender(const std::vector<std::string>& args) {
         algo = scene.settings.algo;
         try {
             integrator = makeIntegrator(algo);
-        } catch (const InputError& e) {   // name the scene line that asked for it
+        } catch (const InputError& e) {  // name the scene line that asked for it
             throw InputError(scenePath, scene.settings.algoLine, e.what());
         }
     } else {
@@ -100,10 +100,10 @@ int runRender(const std::vector<std::string>& args) {
     if (!reference.empty()) {
         ref = readImage(reference);
         if (ref.width != scene.camera.width() || ref.height != scene.camera.height())
-            throw InputError(reference, 0, "reference is " + std::to_string(ref.width) + "x" +
-                                               std::to_string(ref.height) + " but the scene renders " +
-                                               std::to_string(scene.camera.width()) + "x" +
-                                               std::to_string(scene.camera.height()));
+            throw InputError(reference, 0,
+                             "reference is " + std::to_string(ref.width) + "x" + std::to_string(ref.height) +
+                                 " but the scene renders " + std::to_string(scene.camera.width()) + "x" +
+                                 std::to_string(scene.camera.height()));
         csv.open(csvPath);
         if (!csv) throw InputError(csvPath, 0, "cannot open for writing");
         opt.reference = &ref;

@@ -17,7 +17,7 @@ Regions materialRegions(const Scene& scene, const std::vector<std::string>& mate
         while (m < scene.materials.size() && scene.materials[m].name != materials[k]) ++m;
         if (m == scene.materials.size()) {
             std::string known;
-            for (const Material& mat : scene.materials)   // "(emitter)" and the like are not in the file
+            for (const Material& mat : scene.materials)  // "(emitter)" and the like are not in the file
                 if (mat.name.rfind('(', 0) != 0) known += (known.empty() ? "" : ", ") + mat.name;
             throw InputError("no material '" + materials[k] + "' for --regions (the scene has: " + known + ")");
         }
@@ -29,7 +29,8 @@ Regions materialRegions(const Scene& scene, const std::vector<std::string>& mate
         for (int x = 0; x < w; ++x) {
             Ray ray = scene.camera.generateRay(Vec2(x + 0.5f, y + 0.5f));
             SurfacePoint sp;
-            if (scene.intersect(ray, sp) && sp.material >= 0) r.ofPixel[size_t(y) * w + x] = regionOfMaterial[sp.material];
+            if (scene.intersect(ray, sp) && sp.material >= 0)
+                r.ofPixel[size_t(y) * w + x] = regionOfMaterial[sp.material];
         }
     return r;
 }
@@ -58,8 +59,8 @@ std::vector<PointLightPixel> pointLightsInView(const Scene& scene) {
         if (light.kind != LightKind::Point) continue;
         const int n = index++;
         Vec2 raster;
-        if (!camera.rasterPosition(light.position, raster)) continue;   // behind or outside the image
-        SurfacePoint at;   // not on a surface: no offset, no triangle to skip
+        if (!camera.rasterPosition(light.position, raster)) continue;  // behind or outside the image
+        SurfacePoint at;  // not on a surface: no offset, no triangle to skip
         at.p = light.position;
         if (scene.occluded(scene.spawnRayTo(at, camera.position()))) continue;
         PointLightPixel p;
@@ -141,7 +142,7 @@ namespace {
 struct Curve {
     std::string algo;
     std::vector<double> seconds, relMse;
-    ConvergencePoint last;   // seed-averaged final point (spp of seed 0)
+    ConvergencePoint last;  // seed-averaged final point (spp of seed 0)
 };
 
 std::vector<Curve> meanCurves(const ConvergenceReport& report) {
@@ -156,9 +157,12 @@ std::vector<Curve> meanCurves(const ConvergenceReport& report) {
     for (Curve& c : curves) {
         const size_t seeds = lastOf[c.algo].size();
         for (const auto& [spp, pts] : byAlgo[c.algo]) {
-            if (pts.size() != seeds) continue;   // a checkpoint not every seed reached
+            if (pts.size() != seeds) continue;  // a checkpoint not every seed reached
             double s = 0, e = 0;
-            for (const ConvergencePoint* p : pts) { s += p->seconds; e += p->error.relMse; }
+            for (const ConvergencePoint* p : pts) {
+                s += p->seconds;
+                e += p->error.relMse;
+            }
             c.seconds.push_back(s / pts.size());
             c.relMse.push_back(e / pts.size());
         }
@@ -188,48 +192,63 @@ std::string convergencePlotSvg(const std::string& title, const ConvergenceReport
     for (const Curve& c : curves)
         for (size_t i = 0; i < c.seconds.size(); ++i) {
             if (!(c.seconds[i] > 0.0) || !(c.relMse[i] > 0.0)) continue;
-            x0 = std::min(x0, std::log10(c.seconds[i])); x1 = std::max(x1, std::log10(c.seconds[i]));
-            y0 = std::min(y0, std::log10(c.relMse[i])); y1 = std::max(y1, std::log10(c.relMse[i]));
+            x0 = std::min(x0, std::log10(c.seconds[i]));
+            x1 = std::max(x1, std::log10(c.seconds[i]));
+            y0 = std::min(y0, std::log10(c.relMse[i]));
+            y1 = std::max(y1, std::log10(c.relMse[i]));
         }
-    if (x0 > x1) { x0 = -3; x1 = 0; y0 = -3; y1 = 0; }
-    x0 = std::floor(x0); x1 = std::max(std::ceil(x1), x0 + 1);   // whole decades
-    y0 = std::floor(y0); y1 = std::max(std::ceil(y1), y0 + 1);
+    if (x0 > x1) {
+        x0 = -3;
+        x1 = 0;
+        y0 = -3;
+        y1 = 0;
+    }
+    x0 = std::floor(x0);
+    x1 = std::max(std::ceil(x1), x0 + 1);  // whole decades
+    y0 = std::floor(y0);
+    y1 = std::max(std::ceil(y1), y0 + 1);
     auto X = [&](double lx) { return left + (lx - x0) / (x1 - x0) * (W - left - right); };
     auto Y = [&](double ly) { return H - bottom - (ly - y0) / (y1 - y0) * (H - top - bottom); };
     const char* colors[] = {"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd", "#8c564b", "#e377c2", "#17becf"};
 
     std::ostringstream os;
     char buf[512];
-    std::snprintf(buf, sizeof buf,
-                  "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%g\" height=\"%g\" font-family=\"sans-serif\" font-size=\"12\">\n"
-                  "<rect width=\"100%%\" height=\"100%%\" fill=\"white\"/>\n", W, H);
+    std::snprintf(
+        buf, sizeof buf,
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%g\" height=\"%g\" font-family=\"sans-serif\" font-size=\"12\">\n"
+        "<rect width=\"100%%\" height=\"100%%\" fill=\"white\"/>\n",
+        W, H);
     os << buf;
     os << "<text x=\"" << left << "\" y=\"24\" font-size=\"14\">" << title << "</text>\n";
     // Decade grid and labels.
     for (double d = x0; d <= x1 + 1e-9; d += 1) {
-        std::snprintf(buf, sizeof buf, "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"#ddd\"/>\n"
-                                       "<text x=\"%.1f\" y=\"%.1f\" text-anchor=\"middle\">1e%d</text>\n",
+        std::snprintf(buf, sizeof buf,
+                      "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"#ddd\"/>\n"
+                      "<text x=\"%.1f\" y=\"%.1f\" text-anchor=\"middle\">1e%d</text>\n",
                       X(d), Y(y0), X(d), Y(y1), X(d), H - bottom + 18, static_cast<int>(d));
         os << buf;
     }
     for (double d = y0; d <= y1 + 1e-9; d += 1) {
-        std::snprintf(buf, sizeof buf, "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"#ddd\"/>\n"
-                                       "<text x=\"%.1f\" y=\"%.1f\" text-anchor=\"end\">1e%d</text>\n",
+        std::snprintf(buf, sizeof buf,
+                      "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"#ddd\"/>\n"
+                      "<text x=\"%.1f\" y=\"%.1f\" text-anchor=\"end\">1e%d</text>\n",
                       X(x0), Y(d), X(x1), Y(d), left - 6, Y(d) + 4, static_cast<int>(d));
         os << buf;
     }
-    std::snprintf(buf, sizeof buf,
-                  "<text x=\"%.1f\" y=\"%.1f\" text-anchor=\"middle\">seconds</text>\n"
-                  "<text x=\"18\" y=\"%.1f\" text-anchor=\"middle\" transform=\"rotate(-90 18 %.1f)\">relMSE (eps = 0.01)</text>\n",
-                  (X(x0) + X(x1)) / 2, H - 20, (Y(y0) + Y(y1)) / 2, (Y(y0) + Y(y1)) / 2);
+    std::snprintf(
+        buf, sizeof buf,
+        "<text x=\"%.1f\" y=\"%.1f\" text-anchor=\"middle\">seconds</text>\n"
+        "<text x=\"18\" y=\"%.1f\" text-anchor=\"middle\" transform=\"rotate(-90 18 %.1f)\">relMSE (eps = 0.01)</text>\n",
+        (X(x0) + X(x1)) / 2, H - 20, (Y(y0) + Y(y1)) / 2, (Y(y0) + Y(y1)) / 2);
     os << buf;
     // Slope -1 guide through the middle of the plot: error proportional to 1 / time.
     {
         const double cx = (x0 + x1) / 2, cy = (y0 + y1) / 2, h = std::min(x1 - x0, y1 - y0) / 2;
-        std::snprintf(buf, sizeof buf,
-                      "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"#888\" stroke-dasharray=\"6 4\"/>\n"
-                      "<text x=\"%.1f\" y=\"%.1f\" fill=\"#888\">slope -1</text>\n",
-                      X(cx - h), Y(cy + h), X(cx + h), Y(cy - h), X(cx + h) + 4, Y(cy - h));
+        std::snprintf(
+            buf, sizeof buf,
+            "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"#888\" stroke-dasharray=\"6 4\"/>\n"
+            "<text x=\"%.1f\" y=\"%.1f\" fill=\"#888\">slope -1</text>\n",
+            X(cx - h), Y(cy + h), X(cx + h), Y(cy - h), X(cx + h) + 4, Y(cy - h));
         os << buf;
     }
     for (size_t k = 0; k < curves.size(); ++k) {
@@ -266,8 +285,8 @@ std::string efficiencyTable(const ConvergenceReport& report) {
     char line[512];
     for (const Curve& c : curves) {
         const ConvergencePoint& p = c.last;
-        std::snprintf(line, sizeof line, "| %s | %d | %.3f | %.4g | %.4g | %.4g | %llu | %llu |\n", p.algo.c_str(), p.spp,
-                      p.seconds, p.error.relMse, p.error.relMseTrimmed, efficiency(p),
+        std::snprintf(line, sizeof line, "| %s | %d | %.3f | %.4g | %.4g | %.4g | %llu | %llu |\n", p.algo.c_str(),
+                      p.spp, p.seconds, p.error.relMse, p.error.relMseTrimmed, efficiency(p),
                       static_cast<unsigned long long>(p.nan), static_cast<unsigned long long>(p.inf));
         os << line;
     }
@@ -296,7 +315,10 @@ std::string regionTable(const ConvergenceReport& report, const Regions& regions)
 
 Image sideBySide(const std::vector<Image>& images) {
     int w = 0, h = 0;
-    for (const Image& im : images) { w += im.width; h = std::max(h, im.height); }
+    for (const Image& im : images) {
+        w += im.width;
+        h = std::max(h, im.height);
+    }
     Image out(w, h);
     int x0 = 0;
     for (const Image& im : images) {

@@ -22,7 +22,7 @@ namespace ps {
 // region k holds the pixels whose centre ray first hits a surface of material names[k].
 struct Regions {
     std::vector<std::string> names;
-    std::vector<int> ofPixel;   // per pixel, row by row: its region, -1 for none
+    std::vector<int> ofPixel;  // per pixel, row by row: its region, -1 for none
 };
 
 // Throws InputError for a material the scene does not have (the message lists those it has).
@@ -47,10 +47,10 @@ std::vector<bool> leftOutMask(const Scene& scene, const std::vector<PointLightPi
 
 struct ConvergeOptions {
     std::vector<std::string> algos;
-    double seconds = 1.0;   // time budget of each algorithm and seed (0: none)
-    int spp = 0;            // samples per pixel of each run (0: none); with both, whichever first
-    Regions regions;        // empty: no per-region errors
-    int seeds = 1;          // independent runs per algorithm (seeds 0 .. seeds-1), averaged
+    double seconds = 1.0;  // time budget of each algorithm and seed (0: none)
+    int spp = 0;           // samples per pixel of each run (0: none); with both, whichever first
+    Regions regions;       // empty: no per-region errors
+    int seeds = 1;         // independent runs per algorithm (seeds 0 .. seeds-1), averaged
     int threads = 0;
     bool progress = false;
 };
@@ -61,15 +61,15 @@ struct ConvergencePoint {
     int spp = 0;
     double seconds = 0.0;
     ErrorMetrics error;
-    std::vector<double> regionRelMse;   // per region of ConvergeOptions::regions
+    std::vector<double> regionRelMse;  // per region of ConvergeOptions::regions
     uint64_t nan = 0, inf = 0;
 };
 
 struct ConvergenceReport {
-    std::vector<ConvergencePoint> points;   // in the order they were taken
-    std::vector<Image> finalImages;         // per algorithm, seed 0, at the end of the budget
-    double referenceVariance = 0.0;         // mean variance of the reference's pixels (0 if unknown)
-    std::vector<PointLightPixel> leftOut;   // pixels left out of every error (pointLightsInView)
+    std::vector<ConvergencePoint> points;  // in the order they were taken
+    std::vector<Image> finalImages;        // per algorithm, seed 0, at the end of the budget
+    double referenceVariance = 0.0;        // mean variance of the reference's pixels (0 if unknown)
+    std::vector<PointLightPixel> leftOut;  // pixels left out of every error (pointLightsInView)
 };
 
 ConvergenceReport runConvergence(const Scene& scene, const Image& reference, const ConvergeOptions& opt);

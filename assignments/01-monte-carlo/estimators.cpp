@@ -6,7 +6,7 @@
 #include "todo.h"
 
 namespace ps {
-namespace mc {   // two helpers the five estimators share
+namespace mc {  // two helpers the five estimators share
 
 // The sample mean of y_1..y_n (n >= 2) and the estimated variance of that mean.
 Estimate meanOfSamples(const std::vector<double>& y) {
@@ -45,8 +45,7 @@ Estimate estimateStratified(const Function1D& f, double a, double b, int n, Rng&
     return PS_TODO("lesson 01: estimateStratified", Estimate{});
 }
 
-Estimate estimateImportance(const Function1D& f, const Function1D& sample, const Function1D& pdf, int n,
-                            Rng& rng) {
+Estimate estimateImportance(const Function1D& f, const Function1D& sample, const Function1D& pdf, int n, Rng& rng) {
     // TODO(01) x_i = sample(u_i), y_i = f(x_i) / pdf(x_i), or 0 where pdf(x_i) = 0 (Eq. 1.5);
     //          return mc::meanOfSamples of the y_i.
     (void)f; (void)sample; (void)pdf; (void)n; (void)rng;

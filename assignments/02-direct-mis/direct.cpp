@@ -11,8 +11,7 @@ namespace {
 // Shadow ray: does the surface point sp see the sampled light point? (Area lights: both ends
 // offset off their surfaces; point lights: up to the position; background: nothing in the way
 // all the way out of the scene.)
-[[maybe_unused]] bool unoccluded(const Scene& scene, const SurfacePoint& sp, const LightSample& ls,
-                                 LightKind kind) {
+[[maybe_unused]] bool unoccluded(const Scene& scene, const SurfacePoint& sp, const LightSample& ls, LightKind kind) {
     switch (kind) {
     case LightKind::Area: {
         SurfacePoint onLight;
@@ -68,8 +67,7 @@ DirectSample sampleDirectLight(const Scene& scene, const SurfacePoint& sp, const
     return PS_TODO("lesson 02: sampleDirectLight", d);
 }
 
-DirectSample sampleDirectBSDF(const Scene& scene, const SurfacePoint& sp, const Vec3& wo, const Vec2& u,
-                              float uLobe) {
+DirectSample sampleDirectBSDF(const Scene& scene, const SurfacePoint& sp, const Vec3& wo, const Vec2& u, float uLobe) {
     DirectSample d;
     // TODO(02) BSDF sampling (Eq. 2.5):
     //          1. sampleBSDF(material of sp, sp.n, wo, u, uLobe, Transport::Radiance, s); if it

@@ -5,7 +5,8 @@
 
 namespace ps {
 
-bool sampleAdjointBSDF(const Material& m, const Vec3& n, const Vec3& wLight, const Vec2& u, float uLobe, BSDFSample& s) {
+bool sampleAdjointBSDF(const Material& m, const Vec3& n, const Vec3& wLight, const Vec2& u, float uLobe,
+                       BSDFSample& s) {
     // TODO(05) Write the smooth dielectric yourself (Eq. 5.8); do not call sampleBSDF for it:
     //          cosL = dot(n, wLight), false if 0; the particle comes from the outside (index 1)
     //          if cosL > 0, else from the inside (m.ior); ns = n flipped to wLight's side;

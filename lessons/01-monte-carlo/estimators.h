@@ -30,8 +30,7 @@ Estimate estimateStratified(const Function1D& f, double a, double b, int n, Rng&
 // The integral of f over the domain of a sampler from n >= 2 samples x = sample(u), u uniform
 // in [0, 1), each weighted f(x) / pdf(x) (importance sampling, Eq. 1.5). A sample with
 // pdf(x) = 0 contributes 0.
-Estimate estimateImportance(const Function1D& f, const Function1D& sample, const Function1D& pdf, int n,
-                            Rng& rng);
+Estimate estimateImportance(const Function1D& f, const Function1D& sample, const Function1D& pdf, int n, Rng& rng);
 
 // The integral of f over the unit square [0, 1]^2 from n >= 2 uniform points (Eq. 1.1, 1.3).
 Estimate estimatePlain2D(const Function2D& f, int n, Rng& rng);

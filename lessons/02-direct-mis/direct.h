@@ -24,17 +24,17 @@ float pdfLightDirection(const Scene& scene, int light, const Vec3& ref, const Ve
 
 // One sample of the direct illumination at a surface point, taken by one technique.
 struct DirectSample {
-    Color value = Color(0.0f);   // f * Le * |cos theta| / pdf: the technique's own estimate
-                                 // (Eq. 2.4 or 2.5), unweighted; 0 if the sample is invalid,
-                                 // blocked or sees no emitter
-    Vec3 wi = Vec3(0.0f);        // the direction from the surface point towards the light
-    float pdfLight = 0.0f;       // pdf of wi under light sampling (incl. the light's selection
-                                 // probability); for a point light its selection probability
-    float pdfBSDF = 0.0f;        // pdf of wi under BSDF sampling; for a delta lobe the
-                                 // probability of choosing it
-    bool delta = false;          // the sample came from a delta distribution (a point light or
-                                 // a specular lobe): the other technique cannot produce it, its
-                                 // pdf above is 0 and the MIS weight of this sample is 1 (Eq. 2.12)
+    Color value = Color(0.0f);  // f * Le * |cos theta| / pdf: the technique's own estimate
+                                // (Eq. 2.4 or 2.5), unweighted; 0 if the sample is invalid,
+                                // blocked or sees no emitter
+    Vec3 wi = Vec3(0.0f);       // the direction from the surface point towards the light
+    float pdfLight = 0.0f;      // pdf of wi under light sampling (incl. the light's selection
+                                // probability); for a point light its selection probability
+    float pdfBSDF = 0.0f;       // pdf of wi under BSDF sampling; for a delta lobe the
+                                // probability of choosing it
+    bool delta = false;         // the sample came from a delta distribution (a point light or
+                                // a specular lobe): the other technique cannot produce it, its
+                                // pdf above is 0 and the MIS weight of this sample is 1 (Eq. 2.12)
 };
 
 // Light sampling (Eq. 2.4): choose a light by power with uLight, a point on it with uPoint,
@@ -45,17 +45,16 @@ DirectSample sampleDirectLight(const Scene& scene, const SurfacePoint& sp, const
 // BSDF sampling (Eq. 2.5): sample a direction from the BSDF at sp with (u, uLobe), trace it,
 // and return the emission it finds (an area light's front side, or the background where the
 // ray leaves the scene) times the sample's weight f |cos| / pdf.
-DirectSample sampleDirectBSDF(const Scene& scene, const SurfacePoint& sp, const Vec3& wo, const Vec2& u,
-                              float uLobe);
+DirectSample sampleDirectBSDF(const Scene& scene, const SurfacePoint& sp, const Vec3& wo, const Vec2& u, float uLobe);
 
 // The random numbers one direct-illumination estimate uses, drawn by the integrator in a fixed
 // order, so that every estimator sees the same light sample for the same pixel and iteration.
 struct DirectRandom {
-    float uLight = 0.0f;        // which light
-    Vec2 uPoint = Vec2(0.0f);   // where on it
-    Vec2 uBSDF = Vec2(0.0f);    // which direction from the BSDF
-    float uLobe = 0.0f;         // which lobe (reflection or refraction)
-    float uChoice = 0.0f;       // one-sample MIS: which technique
+    float uLight = 0.0f;       // which light
+    Vec2 uPoint = Vec2(0.0f);  // where on it
+    Vec2 uBSDF = Vec2(0.0f);   // which direction from the BSDF
+    float uLobe = 0.0f;        // which lobe (reflection or refraction)
+    float uChoice = 0.0f;      // one-sample MIS: which technique
 };
 
 // Multi-sample MIS (Eq. 2.6): one light sample and one BSDF sample, each weighted by the

@@ -31,7 +31,7 @@ public:
         if (!scene.intersect(ray, sp)) return scene.backgroundRadiance();
         const Vec3 wo = -cameraRay.d;
         Color L(0.0f);
-        if (sp.light >= 0) L += emittedRadiance(scene.lights[sp.light], sp.n, wo);   // 0 bounces
+        if (sp.light >= 0) L += emittedRadiance(scene.lights[sp.light], sp.n, wo);  // 0 bounces
         if (scene.settings.maxDepth < 1) return L;
 
         DirectRandom u;
@@ -55,20 +55,36 @@ private:
 };
 
 // One class per algorithm name, for PS_REGISTER_INTEGRATOR.
-struct DirectLight : DirectIntegrator { DirectLight() : DirectIntegrator(DirectStrategy::Light, Heuristic::Balance) {} };
-struct DirectBSDF : DirectIntegrator { DirectBSDF() : DirectIntegrator(DirectStrategy::BSDF, Heuristic::Balance) {} };
-struct DirectBalance : DirectIntegrator { DirectBalance() : DirectIntegrator(DirectStrategy::MultiSample, Heuristic::Balance) {} };
-struct DirectPower : DirectIntegrator { DirectPower() : DirectIntegrator(DirectStrategy::MultiSample, Heuristic::Power) {} };
-struct DirectMax : DirectIntegrator { DirectMax() : DirectIntegrator(DirectStrategy::MultiSample, Heuristic::Maximum) {} };
-struct DirectOneSample : DirectIntegrator { DirectOneSample() : DirectIntegrator(DirectStrategy::OneSample, Heuristic::Balance) {} };
+struct DirectLight : DirectIntegrator {
+    DirectLight() : DirectIntegrator(DirectStrategy::Light, Heuristic::Balance) {}
+};
+struct DirectBSDF : DirectIntegrator {
+    DirectBSDF() : DirectIntegrator(DirectStrategy::BSDF, Heuristic::Balance) {}
+};
+struct DirectBalance : DirectIntegrator {
+    DirectBalance() : DirectIntegrator(DirectStrategy::MultiSample, Heuristic::Balance) {}
+};
+struct DirectPower : DirectIntegrator {
+    DirectPower() : DirectIntegrator(DirectStrategy::MultiSample, Heuristic::Power) {}
+};
+struct DirectMax : DirectIntegrator {
+    DirectMax() : DirectIntegrator(DirectStrategy::MultiSample, Heuristic::Maximum) {}
+};
+struct DirectOneSample : DirectIntegrator {
+    DirectOneSample() : DirectIntegrator(DirectStrategy::OneSample, Heuristic::Balance) {}
+};
 
 }  // namespace
 
 PS_REGISTER_INTEGRATOR(DirectLight, "direct-light", "direct illumination by light sampling only (lesson 2)");
 PS_REGISTER_INTEGRATOR(DirectBSDF, "direct-bsdf", "direct illumination by BSDF sampling only (lesson 2)");
-PS_REGISTER_INTEGRATOR(DirectBalance, "direct-balance", "direct illumination, light + BSDF sample, balance heuristic (lesson 2)");
-PS_REGISTER_INTEGRATOR(DirectPower, "direct-power", "direct illumination, light + BSDF sample, power heuristic (lesson 2)");
-PS_REGISTER_INTEGRATOR(DirectMax, "direct-max", "direct illumination, light + BSDF sample, maximum heuristic (lesson 2)");
-PS_REGISTER_INTEGRATOR(DirectOneSample, "direct-onesample", "direct illumination, one-sample MIS, balance heuristic (lesson 2)");
+PS_REGISTER_INTEGRATOR(DirectBalance, "direct-balance",
+                       "direct illumination, light + BSDF sample, balance heuristic (lesson 2)");
+PS_REGISTER_INTEGRATOR(DirectPower, "direct-power",
+                       "direct illumination, light + BSDF sample, power heuristic (lesson 2)");
+PS_REGISTER_INTEGRATOR(DirectMax, "direct-max",
+                       "direct illumination, light + BSDF sample, maximum heuristic (lesson 2)");
+PS_REGISTER_INTEGRATOR(DirectOneSample, "direct-onesample",
+                       "direct illumination, one-sample MIS, balance heuristic (lesson 2)");
 
 }  // namespace ps

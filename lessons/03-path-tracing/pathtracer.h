@@ -26,16 +26,16 @@ float survivalProbability(const Color& beta, int bounces);
 
 // One vertex x_k of the camera walk, as the walk shows it to its visitor.
 struct WalkVertex {
-    int bounces = 0;        // k, the bounces made before reaching it: 0 = the camera ray's hit (Eq. 3.3)
-    bool hit = false;       // false: the ray left the scene (sp is not set); the walk ends here
-    SurfacePoint sp;        // the surface point hit
-    Vec3 wo;                // unit, back along the ray that arrived (-ray.d): omega_o,k of Eq. 3.4
-    Color beta;             // the throughput beta_k of the path up to here (Eq. 3.4), divided by
-                            // every survival probability so far (Eq. 3.5)
-    bool specular = true;   // the bounce into this vertex was a delta sample (BSDFSample::delta);
-                            // true at bounces 0 (the camera ray)
-    float pdfPrev = 0.0f;   // solid-angle pdf of the BSDF sample that led here (0 at bounces 0)
-    Vec3 pPrev;             // the previous vertex's position sp.p (bounces >= 1)
+    int bounces = 0;       // k, the bounces made before reaching it: 0 = the camera ray's hit (Eq. 3.3)
+    bool hit = false;      // false: the ray left the scene (sp is not set); the walk ends here
+    SurfacePoint sp;       // the surface point hit
+    Vec3 wo;               // unit, back along the ray that arrived (-ray.d): omega_o,k of Eq. 3.4
+    Color beta;            // the throughput beta_k of the path up to here (Eq. 3.4), divided by
+                           // every survival probability so far (Eq. 3.5)
+    bool specular = true;  // the bounce into this vertex was a delta sample (BSDFSample::delta);
+                           // true at bounces 0 (the camera ray)
+    float pdfPrev = 0.0f;  // solid-angle pdf of the BSDF sample that led here (0 at bounces 0)
+    Vec3 pPrev;            // the previous vertex's position sp.p (bounces >= 1)
 };
 
 // What to do at a vertex; return false to end the walk there. The walk calls it between the

@@ -33,8 +33,8 @@ Color pixelMeasurementSample(const Scene& scene, int px, int py, const Vec3& dir
 
 // A region S of the scene's surfaces (the second sensor of this lesson): a set of primitives.
 struct Region {
-    std::vector<bool> member;   // per primitive of the scene: part of S?
-    double area = 0.0;          // total area of S
+    std::vector<bool> member;  // per primitive of the scene: part of S?
+    double area = 0.0;         // total area of S
     bool contains(uint32_t prim) const { return prim < member.size() && member[prim]; }
 };
 // The region made of every primitive with the given material; throws InputError if there is none.

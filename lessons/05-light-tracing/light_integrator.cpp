@@ -28,8 +28,9 @@ struct LightTracer : Integrator {
 
     std::vector<std::string> leftOut(const Scene& scene) const override {
         if (!onlyLightVertices(scene)) return {};
-        return {"light paths beyond the lights: every surface is specular or black, so no later vertex can be "
-                "connected to the pinhole (lesson 5, Eq. 5.9)"};
+        return {
+            "light paths beyond the lights: every surface is specular or black, so no later vertex can be "
+            "connected to the pinhole (lesson 5, Eq. 5.9)"};
     }
 
     void renderIteration(const Scene& scene, uint32_t iteration, uint64_t seed, Image& out,

@@ -16,12 +16,12 @@ namespace ps {
 
 // The first vertex of a light path and the particle that leaves it (Eq. 5.2).
 struct LightPathStart {
-    bool valid = false;     // false if there is no light or the sample has pdf 0
-    int light = -1;         // index into scene.lights
-    SurfacePoint y0;        // the point on the light (lesson 4's emissionPoint)
-    float pdfA = 0.0f;      // P(l) p_A(y0): the density of choosing y0 (point light: P(l))
-    Ray ray;                // the particle's first ray, leaving y0
-    Color beta;             // the particle's power Le |cos| / (P(l) p_A p_omega) (Eq. 5.2)
+    bool valid = false;  // false if there is no light or the sample has pdf 0
+    int light = -1;      // index into scene.lights
+    SurfacePoint y0;     // the point on the light (lesson 4's emissionPoint)
+    float pdfA = 0.0f;   // P(l) p_A(y0): the density of choosing y0 (point light: P(l))
+    Ray ray;             // the particle's first ray, leaving y0
+    Color beta;          // the particle's power Le |cos| / (P(l) p_A p_omega) (Eq. 5.2)
 };
 
 // Chooses a light by power with uLight and samples a point and a direction on it with
@@ -31,12 +31,12 @@ LightPathStart startLightPath(const Scene& scene, float uLight, const Vec2& uPos
 
 // What connecting a vertex y to the pinhole gives (Eq. 5.3-5.5).
 struct CameraConnection {
-    bool valid = false;      // the camera sees y: in front of it, inside the image, unoccluded
-    Vec2 raster;             // where y lands on the image (camera.rasterPosition)
-    Vec3 wCam;               // unit direction from y towards the pinhole
-    float importance = 0.0f; // W_e^(j)(e -> y) G(y, e): the pixel's sensor (lesson 4, Eq. 4.6)
-                             // times the geometry term cos(theta_e) |cos(theta_y)| / d^2;
-                             // without |cos(theta_y)| when y is not on a surface (a point light)
+    bool valid = false;       // the camera sees y: in front of it, inside the image, unoccluded
+    Vec2 raster;              // where y lands on the image (camera.rasterPosition)
+    Vec3 wCam;                // unit direction from y towards the pinhole
+    float importance = 0.0f;  // W_e^(j)(e -> y) G(y, e): the pixel's sensor (lesson 4, Eq. 4.6)
+                              // times the geometry term cos(theta_e) |cos(theta_y)| / d^2;
+                              // without |cos(theta_y)| when y is not on a surface (a point light)
 };
 
 // Connects y to the camera (Eq. 5.5). onSurface: y lies on a surface with normal y.n (false for
@@ -53,12 +53,12 @@ bool sampleAdjointBSDF(const Material& m, const Vec3& n, const Vec3& wLight, con
 
 // One vertex of the light walk, as the walk shows it to its visitor.
 struct LightWalkVertex {
-    int bounces = 0;                       // 0: y0 on the light; k >= 1: the k-th surface the particle hits
-    const LightPathStart* start = nullptr; // the path's start (light, y0, pdfA, first ray, power)
-    SurfacePoint sp;                       // bounces 0: start->y0; else the surface point hit
-    Vec3 wLight;                           // bounces >= 1: unit, back towards where the particle came from
-    Color beta;                            // the particle's power arriving at sp (Eq. 5.2, 5.7), divided by
-                                           // every survival probability so far; bounces 0: start->beta
+    int bounces = 0;                        // 0: y0 on the light; k >= 1: the k-th surface the particle hits
+    const LightPathStart* start = nullptr;  // the path's start (light, y0, pdfA, first ray, power)
+    SurfacePoint sp;                        // bounces 0: start->y0; else the surface point hit
+    Vec3 wLight;                            // bounces >= 1: unit, back towards where the particle came from
+    Color beta;                             // the particle's power arriving at sp (Eq. 5.2, 5.7), divided by
+                                            // every survival probability so far; bounces 0: start->beta
 };
 
 // What to do at a vertex; return false to end the walk there. The walk calls it before it

@@ -105,12 +105,12 @@ DeltaLobe deltaLobe(const Material& m, const Vec3& n, const Vec3& wLight, const 
         d.valid = glm::length(reflect(wLight, ns) - wCamera) <= kTolerance;
         d.fs = Color(F / aC);
         d.pdfLight = F;
-        d.pdfCamera = fresnelDielectric(aC, etaL, etaOther);   // the same side: the same F
+        d.pdfCamera = fresnelDielectric(aC, etaL, etaOther);  // the same side: the same F
         return d;
     }
     const float eta = etaL / etaC;
     const float sin2T = eta * eta * (1.0f - aL * aL);
-    if (sin2T >= 1.0f) return d;   // total internal reflection: no refracted direction
+    if (sin2T >= 1.0f) return d;  // total internal reflection: no refracted direction
     const float cosT = std::sqrt(1.0f - sin2T);
     const Vec3 t = glm::normalize(-eta * wLight + (eta * aL - cosT) * ns);
     const float FL = fresnelDielectric(aL, etaL, etaC), FC = fresnelDielectric(aC, etaC, etaL);

@@ -101,13 +101,13 @@ Vec3 direction(const PathVertex& a, const PathVertex& b);
 // are coefficients of delta_sigma(w - wCamera), the delta in the solid angle of the outgoing
 // (light-flow) direction wCamera:
 struct DeltaLobe {
-    bool valid = false;      // wCamera is the mirror / refraction direction of wLight (to 1e-3).
-                             // The numbers below are those of the lobe the two sides select
-                             // (reflection on one side, refraction across; 0 under total internal
-                             // reflection) even when valid is false: a walk that chose the
-                             // direction itself may use them (lesson 7: a segment a fraction of a
-                             // millimetre long, where a sphere touches the floor, rounds the
-                             // directions between the stored positions past the tolerance).
+    bool valid = false;  // wCamera is the mirror / refraction direction of wLight (to 1e-3).
+                         // The numbers below are those of the lobe the two sides select
+                         // (reflection on one side, refraction across; 0 under total internal
+                         // reflection) even when valid is false: a walk that chose the
+                         // direction itself may use them (lesson 7: a segment a fraction of a
+                         // millimetre long, where a sphere touches the floor, rounds the
+                         // directions between the stored positions past the tolerance).
     bool refracted = false;
     Color fs;                // f_s |cos theta_wCamera|: the lobe's share of the power (mirror:
                              // albedo; glass: Fresnel F or 1 - F)

@@ -12,7 +12,7 @@ namespace ps {
 namespace {
 
 struct TechniqueIntegrator : Integrator {
-    int k, s;   // k < 0: maxdepth + 1; s < 0: s = k (t = 1)
+    int k, s;  // k < 0: maxdepth + 1; s < 0: s = k (t = 1)
     TechniqueIntegrator(int k_, int s_) : k(k_), s(s_) {}
 
     void renderIteration(const Scene& scene, uint32_t iteration, uint64_t seed, Image& out,
@@ -41,12 +41,15 @@ using PathT1 = FixedS<-1>;
 
 }  // namespace
 
-PS_REGISTER_INTEGRATOR(PathS0, "path-s0", "paths of length maxdepth + 1 by technique s = 0 alone: camera subpath hits a light (lesson 6)");
-PS_REGISTER_INTEGRATOR(PathS1, "path-s1", "paths of length maxdepth + 1 by technique s = 1 alone: next-event estimation (lesson 6)");
+PS_REGISTER_INTEGRATOR(PathS0, "path-s0",
+                       "paths of length maxdepth + 1 by technique s = 0 alone: camera subpath hits a light (lesson 6)");
+PS_REGISTER_INTEGRATOR(PathS1, "path-s1",
+                       "paths of length maxdepth + 1 by technique s = 1 alone: next-event estimation (lesson 6)");
 PS_REGISTER_INTEGRATOR(PathS2, "path-s2", "paths of length maxdepth + 1 by technique s = 2 alone (lesson 6)");
 PS_REGISTER_INTEGRATOR(PathS3, "path-s3", "paths of length maxdepth + 1 by technique s = 3 alone (lesson 6)");
 PS_REGISTER_INTEGRATOR(PathS4, "path-s4", "paths of length maxdepth + 1 by technique s = 4 alone (lesson 6)");
-PS_REGISTER_INTEGRATOR(PathT1, "path-t1", "paths of length maxdepth + 1 by technique t = 1 alone: light tracing (lesson 6)");
+PS_REGISTER_INTEGRATOR(PathT1, "path-t1",
+                       "paths of length maxdepth + 1 by technique t = 1 alone: light tracing (lesson 6)");
 
 RenderResult renderTechnique(const Scene& scene, int k, int s, int iterations, uint64_t seed, int threads) {
     TechniqueIntegrator integrator(k, s);

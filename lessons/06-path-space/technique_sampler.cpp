@@ -8,7 +8,7 @@ namespace ps {
 TechniqueSample sampleTechnique(const Scene& scene, int k, int s, Rng& rng) {
     TechniqueSample ts;
     const int t = k + 1 - s;
-    if (k < 1 || s < 0 || t < 1) return ts;   // t = 0: a ray cannot hit the pinhole
+    if (k < 1 || s < 0 || t < 1) return ts;  // t = 0: a ray cannot hit the pinhole
     Path& x = ts.x;
     x.resize(size_t(k) + 1);
     // The light subpath x0 ... x_{s-1}: a light chosen by power, a point and a direction on it,
@@ -43,7 +43,7 @@ TechniqueSample sampleTechnique(const Scene& scene, int k, int s, Rng& rng) {
         for (int j = k - 1; j >= s; --j) {
             SurfacePoint sp;
             if (!scene.intersect(ray, sp)) {
-                if (j != 0 || scene.background < 0) return ts;   // only x0 may be the background
+                if (j != 0 || scene.background < 0) return ts;  // only x0 may be the background
                 x[0] = backgroundVertex(scene, ray.d);
                 break;
             }
@@ -55,7 +55,7 @@ TechniqueSample sampleTechnique(const Scene& scene, int k, int s, Rng& rng) {
                 return ts;
             ray = scene.spawnRay(sp, b.wi);
         }
-        if (s == 0 && !x[0].onLight) return ts;   // the camera subpath must end on a light
+        if (s == 0 && !x[0].onLight) return ts;  // the camera subpath must end on a light
     } else {
         // t = 1: the pixel is where x_{k-1} projects (lesson 5's splat).
         if (x[size_t(k) - 1].infinite || !camera.rasterPosition(x[size_t(k) - 1].sp.p, ts.raster)) return ts;

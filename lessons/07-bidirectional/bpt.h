@@ -150,8 +150,8 @@ float misWeightRecursive(const PathVertex* y, int s, const PathVertex* z, int t,
 
 struct BptOptions {
     Heuristic heuristic = Heuristic::Power;
-    bool recursive = true;   // misWeightRecursive (else misWeightFull)
-    bool prune = true;       // leave out what the scene cannot use (Eq. 7.12)
+    bool recursive = true;  // misWeightRecursive (else misWeightFull)
+    bool prune = true;      // leave out what the scene cannot use (Eq. 7.12)
 };
 
 // What one pixel sample's techniques gave, for per-technique images (Veach's pyramid).
@@ -174,12 +174,12 @@ std::vector<std::string> bptLeftOut(const Scene& scene, const BptOptions& opt);
 // s + t = k + 1), stored row by row: row k holds s = 0 .. k + 1 (techniqueIndex).
 struct TechniqueImages {
     int maxLength = 0;
-    std::vector<Image> unweighted, weighted;   // per technique, techniqueIndex(s, k)
-    std::vector<Image> unweightedSq;           // per-sample sum of squares (variance), same order
+    std::vector<Image> unweighted, weighted;  // per technique, techniqueIndex(s, k)
+    std::vector<Image> unweightedSq;          // per-sample sum of squares (variance), same order
     int spp = 0;
-    SampleStats stats;                         // NaN/Inf values met (counted, left out of the images)
+    SampleStats stats;  // NaN/Inf values met (counted, left out of the images)
 };
-inline int techniqueIndex(int s, int k) { return (k - 1) * (k + 4) / 2 + s; }   // row k holds s = 0 .. k + 1
+inline int techniqueIndex(int s, int k) { return (k - 1) * (k + 4) / 2 + s; }  // row k holds s = 0 .. k + 1
 inline int techniqueCount(int maxLength) { return techniqueIndex(0, maxLength + 1); }
 // Renders spp samples per pixel with `threads` threads; images are means over the samples and
 // do not depend on the number of threads (t = 1 values are added in a fixed order).

@@ -20,8 +20,8 @@ namespace ps {
 namespace {
 
 struct Pruning {
-    bool s0 = false;          // no light can be hit (point lights only)
-    bool deltaEnds = false;   // connections at specular vertices
+    bool s0 = false;         // no light can be hit (point lights only)
+    bool deltaEnds = false;  // connections at specular vertices
 };
 Pruning pruning(const Scene& scene, const BptOptions& opt) {
     Pruning p;
@@ -39,8 +39,9 @@ std::vector<std::string> bptLeftOut(const Scene& scene, const BptOptions& opt) {
     const Pruning p = pruning(scene, opt);
     if (p.s0) lines.push_back("s = 0 techniques: no light can be hit (point lights only) (Eq. 7.12)");
     if (scene.caps.hasDeltaBSDF())
-        lines.push_back("connections at specular (mirror, glass) vertices, and light vertices on them are not "
-                        "connected to the camera: a delta BSDF is 0 for every given pair of directions (Eq. 7.12)");
+        lines.push_back(
+            "connections at specular (mirror, glass) vertices, and light vertices on them are not "
+            "connected to the camera: a delta BSDF is 0 for every given pair of directions (Eq. 7.12)");
     return lines;
 }
 
@@ -57,7 +58,7 @@ Color bptSample(const Scene& scene, const Vec2& raster, Rng& rng, const BptOptio
         for (int s = 0; s <= std::max(nLight, 1); ++s) {
             if (s + t < 2 || s + t - 2 > maxDepth) continue;
             if (t == 1 && s == 0) continue;
-            if (s > nLight && !(s == 1 && t >= 2)) continue;   // s = 1 samples its own light vertex
+            if (s > nLight && !(s == 1 && t >= 2)) continue;  // s = 1 samples its own light vertex
             if (s == 0 && prune.s0) continue;
             if (prune.deltaEnds && t >= 2 && camera[size_t(t - 1)].specular) continue;
             if (prune.deltaEnds && s >= 2 && light[size_t(s - 1)].specular) continue;
@@ -120,7 +121,7 @@ struct ImageRecorder : TechniqueRecorder {
         Color unweighted, weighted;
     };
     TechniqueImages* images = nullptr;
-    std::vector<Splat>* splats = nullptr;   // this task's t = 1 list
+    std::vector<Splat>* splats = nullptr;  // this task's t = 1 list
     SampleStats* stats = nullptr;
     void add(int s, int t, const Vec2& raster, const Color& unweighted, const Color& weighted) override {
         const int k = s + t - 1;
@@ -173,7 +174,7 @@ TechniqueImages renderTechniques(const Scene& scene, int maxLength, int spp, uin
                      const Vec2 raster = jitteredRaster(pixel, w, rng);
                      bptSample(limited, raster, rng, opt, task.splat, &recorder);
                  });
-        for (auto& list : lists) {   // t = 1, in task order
+        for (auto& list : lists) {  // t = 1, in task order
             for (const ImageRecorder::Splat& sp : list)
                 ImageRecorder::accumulate(out, sp.technique, sp.x, sp.y, sp.unweighted, sp.weighted);
             list.clear();
@@ -185,13 +186,15 @@ TechniqueImages renderTechniques(const Scene& scene, int maxLength, int spp, uin
         for (size_t q = 0; q < out.unweighted[i].pixels.size(); ++q) {
             out.unweighted[i].pixels[q] *= inv;
             out.weighted[i].pixels[q] *= inv;
-            out.unweightedSq[i].pixels[q] *= inv * inv;   // sum of squares / spp^2: the variance of the mean (an upper bound)
+            out.unweightedSq[i].pixels[q] *=
+                inv * inv;  // sum of squares / spp^2: the variance of the mean (an upper bound)
         }
     return out;
 }
 
-PS_REGISTER_INTEGRATOR(BptPower, "bpt",
-                       "bidirectional path tracing: all (s, t) connections, power-heuristic MIS (recursive form) (lesson 7)");
+PS_REGISTER_INTEGRATOR(
+    BptPower, "bpt",
+    "bidirectional path tracing: all (s, t) connections, power-heuristic MIS (recursive form) (lesson 7)");
 PS_REGISTER_INTEGRATOR(BptBalance, "bpt-balance", "bpt with the balance heuristic (lesson 7)");
 PS_REGISTER_INTEGRATOR(BptFull, "bpt-full", "bpt with MIS weights from the full pdf list (lesson 7)");
 

@@ -11,7 +11,7 @@ Connection connect(const Scene& scene, const Subpath& light, const Subpath& came
     if (s == 0) c = connectEmitter(scene, camera.data(), t);
     else if (t == 1) {
         c = connectCamera(scene, light.data(), s);
-        c.sampledLight = light[0];   // the MIS reads y_0 from here whenever s = 1
+        c.sampledLight = light[0];  // the MIS reads y_0 from here whenever s = 1
     } else if (s == 1) c = connectLight(scene, camera.data(), t, uLight, uPos);
     else c = connectVertices(scene, light.data(), s, camera.data(), t);
     if (c.valid) c.rev = connectionPdfs(scene, s == 1 ? &c.sampledLight : light.data(), s, camera.data(), t);

@@ -36,8 +36,7 @@ WatertightRay::WatertightRay(const Ray& ray) {
     //! END
 }
 
-bool intersectTriangle(const Ray& ray, const WatertightRay& wr, const Triangle& tri,
-                       float& t, float& b1, float& b2) {
+bool intersectTriangle(const Ray& ray, const WatertightRay& wr, const Triangle& tri, float& t, float& b1, float& b2) {
     //! TODO(00) Translate the vertices to the ray origin and shear them (Eq. 0.3); compute the
     //!          edge functions U, V, W (Eq. 0.4), recomputed in double when one is exactly 0;
     //!          reject when their signs differ or det = U + V + W is 0 (Eq. 0.5); compare the

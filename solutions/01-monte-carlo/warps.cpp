@@ -108,18 +108,18 @@ Vec2 invertConcentricDisk(const Vec2& p) {
     //! BEGIN
     const float r = std::sqrt(p.x * p.x + p.y * p.y);
     float phi = std::atan2(p.y, p.x);
-    if (phi < -kPi / 4.0f) phi += 2.0f * kPi;   // phi in [-pi/4, 7pi/4)
+    if (phi < -kPi / 4.0f) phi += 2.0f * kPi;  // phi in [-pi/4, 7pi/4)
     float a, b;
-    if (phi < kPi / 4.0f) {              // right wedge: r = a, phi = pi/4 b/a
+    if (phi < kPi / 4.0f) {  // right wedge: r = a, phi = pi/4 b/a
         a = r;
         b = phi * a / (kPi / 4.0f);
-    } else if (phi < 3.0f * kPi / 4.0f) {   // top: r = b, phi = pi/2 - pi/4 a/b
+    } else if (phi < 3.0f * kPi / 4.0f) {  // top: r = b, phi = pi/2 - pi/4 a/b
         b = r;
         a = -(phi - kPi / 2.0f) * b / (kPi / 4.0f);
-    } else if (phi < 5.0f * kPi / 4.0f) {   // left: r = -a (a < 0), phi - pi = pi/4 b/a
+    } else if (phi < 5.0f * kPi / 4.0f) {  // left: r = -a (a < 0), phi - pi = pi/4 b/a
         a = -r;
         b = (phi - kPi) * a / (kPi / 4.0f);
-    } else {                              // bottom: r = -b, phi - 3pi/2 = -pi/4 a/b
+    } else {  // bottom: r = -b, phi - 3pi/2 = -pi/4 a/b
         b = -r;
         a = -(phi - 3.0f * kPi / 2.0f) * b / (kPi / 4.0f);
     }
@@ -162,7 +162,7 @@ Vec3 samplePhongLobe(const Vec2& u, float exponent) {
     //! STUB (void)u; (void)exponent;
     //! STUB return PS_TODO("lesson 01: samplePhongLobe", Vec3(0.0f, 0.0f, 1.0f));
     //! BEGIN
-    const float c = std::pow(1.0f - u.x, 1.0f / (exponent + 1.0f));   // 1 - u.x in (0, 1]
+    const float c = std::pow(1.0f - u.x, 1.0f / (exponent + 1.0f));  // 1 - u.x in (0, 1]
     const float s = std::sqrt(std::max(0.0f, 1.0f - c * c)), phi = kTwoPi * u.y;
     return Vec3(s * std::cos(phi), s * std::sin(phi), c);
     //! END

@@ -11,8 +11,7 @@ namespace {
 // Shadow ray: does the surface point sp see the sampled light point? (Area lights: both ends
 // offset off their surfaces; point lights: up to the position; background: nothing in the way
 // all the way out of the scene.)
-[[maybe_unused]] bool unoccluded(const Scene& scene, const SurfacePoint& sp, const LightSample& ls,
-                                 LightKind kind) {
+[[maybe_unused]] bool unoccluded(const Scene& scene, const SurfacePoint& sp, const LightSample& ls, LightKind kind) {
     switch (kind) {
     case LightKind::Area: {
         SurfacePoint onLight;
@@ -101,7 +100,7 @@ DirectSample sampleDirectLight(const Scene& scene, const SurfacePoint& sp, const
     case LightKind::Point:
         d.pdfLight = select;
         d.delta = true;
-        Le /= ls.dist * ls.dist;   // irradiance I / d^2 at normal incidence
+        Le /= ls.dist * ls.dist;  // irradiance I / d^2 at normal incidence
         break;
     }
     d.pdfBSDF = d.delta ? 0.0f : pdfBSDF(m, sp.n, wo, ls.wi);
@@ -112,8 +111,7 @@ DirectSample sampleDirectLight(const Scene& scene, const SurfacePoint& sp, const
     //! END
 }
 
-DirectSample sampleDirectBSDF(const Scene& scene, const SurfacePoint& sp, const Vec3& wo, const Vec2& u,
-                              float uLobe) {
+DirectSample sampleDirectBSDF(const Scene& scene, const SurfacePoint& sp, const Vec3& wo, const Vec2& u, float uLobe) {
     DirectSample d;
     //! TODO(02) BSDF sampling (Eq. 2.5):
     //!          1. sampleBSDF(material of sp, sp.n, wo, u, uLobe, Transport::Radiance, s); if it

@@ -13,8 +13,8 @@ double sphereSolidAngle(double radius, double distance) {
     //! STUB (void)radius; (void)distance;
     //! STUB return PS_TODO("lesson 02: sphereSolidAngle (exercise)", 0.0);
     //! BEGIN
-    const double s2 = (radius / distance) * (radius / distance);   // sin^2(theta_max)
-    return 2.0 * double(kPi) * s2 / (1.0 + std::sqrt(1.0 - s2));   // 2 pi (1 - cos), no cancellation
+    const double s2 = (radius / distance) * (radius / distance);  // sin^2(theta_max)
+    return 2.0 * double(kPi) * s2 / (1.0 + std::sqrt(1.0 - s2));  // 2 pi (1 - cos), no cancellation
     //! END
 }
 

@@ -19,19 +19,19 @@ float misWeight(Heuristic heuristic, int i, const Technique* techniques, int cou
     //! BEGIN
     const float qi = techniques[i].n * techniques[i].pdf;
     if (!(qi > 0.0f)) return 0.0f;
-    int first = 0;   // the technique with the largest q_k (the first of equals)
+    int first = 0;  // the technique with the largest q_k (the first of equals)
     for (int k = 1; k < count; ++k)
         if (techniques[k].n * techniques[k].pdf > techniques[first].n * techniques[first].pdf) first = k;
     if (heuristic == Heuristic::Maximum) return i == first ? 1.0f : 0.0f;
     const float largest = techniques[first].n * techniques[first].pdf;
     float sum = 0.0f, wi = 0.0f;
     for (int k = 0; k < count; ++k) {
-        const float r = std::max(0.0f, techniques[k].n * techniques[k].pdf) / largest;   // in [0, 1]
+        const float r = std::max(0.0f, techniques[k].n * techniques[k].pdf) / largest;  // in [0, 1]
         const float term = heuristic == Heuristic::Power ? r * r : r;
         sum += term;
         if (k == i) wi = term;
     }
-    return wi / sum;   // sum >= 1: the largest term is exactly 1
+    return wi / sum;  // sum >= 1: the largest term is exactly 1
     //! END
 }
 

@@ -13,7 +13,7 @@ int furnaceDepthForBias(double albedo, double eps) {
     //! STUB return PS_TODO("lesson 03: furnaceDepthForBias (exercise)", 0);
     //! BEGIN
     if (albedo <= 0.0) return 0;
-    const double d = std::ceil(std::log(eps) / std::log(albedo)) - 1.0;   // a^(D+1) <= eps
+    const double d = std::ceil(std::log(eps) / std::log(albedo)) - 1.0;  // a^(D+1) <= eps
     return d < 0.0 ? 0 : int(d);
     //! END
 }

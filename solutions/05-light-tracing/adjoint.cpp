@@ -5,7 +5,8 @@
 
 namespace ps {
 
-bool sampleAdjointBSDF(const Material& m, const Vec3& n, const Vec3& wLight, const Vec2& u, float uLobe, BSDFSample& s) {
+bool sampleAdjointBSDF(const Material& m, const Vec3& n, const Vec3& wLight, const Vec2& u, float uLobe,
+                       BSDFSample& s) {
     //! TODO(05) Write the smooth dielectric yourself (Eq. 5.8); do not call sampleBSDF for it:
     //!          cosL = dot(n, wLight), false if 0; the particle comes from the outside (index 1)
     //!          if cosL > 0, else from the inside (m.ior); ns = n flipped to wLight's side;
@@ -30,7 +31,7 @@ bool sampleAdjointBSDF(const Material& m, const Vec3& n, const Vec3& wLight, con
         const float cosI = std::abs(cosL);
         const float F = fresnelDielectric(cosI, etaFrom, etaTo);
         s.delta = true;
-        s.weight = Color(1.0f);   // reflected or refracted, the particle keeps its power
+        s.weight = Color(1.0f);  // reflected or refracted, the particle keeps its power
         if (uLobe < F) {
             s.wi = reflect(wLight, ns);
             s.pdf = F;

@@ -22,7 +22,7 @@ double pdfTechnique(const Scene& scene, const Path& x, int s) {
     if (k < 1 || s < 0 || t < 1) return 0.0;
     if (s == 0 && (!x[0].onLight || x[0].pointLight)) return 0.0;
     if (s >= 1 && (x[size_t(s) - 1].specular || x[size_t(s)].specular)) return 0.0;
-    if (t == 1 && x[size_t(k) - 1].infinite) return 0.0;   // the background joined straight to the pinhole
+    if (t == 1 && x[size_t(k) - 1].infinite) return 0.0;  // the background joined straight to the pinhole
     double p = 1.0;
     // The light subpath x0 ... x_{s-1} (Eq. 6.8).
     if (s >= 1) {
@@ -30,7 +30,7 @@ double pdfTechnique(const Scene& scene, const Path& x, int s) {
         if (l < 0) return 0.0;
         const EmissionPdf e = pdfEmission(scene, l, x[0].sp.n, direction(x[0], x[1]));
         p *= scene.lightSelectionProb(l);
-        p *= x[0].infinite ? e.pdfW : e.pdfA;   // the background's x0 is a direction
+        p *= x[0].infinite ? e.pdfW : e.pdfA;  // the background's x0 is a direction
         if (s >= 2) {
             if (x[0].infinite) p *= double(e.pdfA) * std::abs(double(glm::dot(x[1].sp.n, x[0].sp.n)));
             else p *= pdfSolidAngleToArea(e.pdfW, x[0], x[1]);

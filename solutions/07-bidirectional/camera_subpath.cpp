@@ -31,8 +31,8 @@ void cameraSubpath(const Scene& scene, Rng& rng, const Vec2& raster, int maxDept
         if (!w.hit && scene.background < 0) return false;
         PathVertex v = w.hit ? surfaceVertex(scene, w.sp) : backgroundVertex(scene, -w.wo);
         v.beta = w.beta;
-        v.pdfFwd = pdfScatter(scene, path.size() >= 2 ? &path[path.size() - 2] : nullptr, path.back(), v,
-                              Transport::Radiance);
+        v.pdfFwd =
+            pdfScatter(scene, path.size() >= 2 ? &path[path.size() - 2] : nullptr, path.back(), v, Transport::Radiance);
         path.push_back(v);
         const size_t k = path.size() - 1;
         if (k >= 2) path[k - 2].pdfRev = pdfScatter(scene, &path[k], path[k - 1], path[k - 2], Transport::Importance);

@@ -26,7 +26,8 @@ ReversePdfs connectionPdfs(const Scene& scene, const PathVertex* y, int s, const
     }
     const PathVertex& yEnd = y[s - 1];
     const PathVertex* yPrev = s >= 2 ? &y[s - 2] : nullptr;
-    r.cameraEnd = s == 1 ? pdfLightToward(scene, yEnd, zEnd) : pdfScatter(scene, yPrev, yEnd, zEnd, Transport::Importance);
+    r.cameraEnd =
+        s == 1 ? pdfLightToward(scene, yEnd, zEnd) : pdfScatter(scene, yPrev, yEnd, zEnd, Transport::Importance);
     if (zPrev) r.cameraPrev = pdfScatter(scene, &yEnd, zEnd, *zPrev, Transport::Importance);
     r.lightEnd = pdfScatter(scene, zPrev, zEnd, yEnd, Transport::Radiance);
     if (yPrev) r.lightPrev = pdfScatter(scene, &zEnd, yEnd, *yPrev, Transport::Radiance);
@@ -45,9 +46,12 @@ Connection connectEmitter(const Scene& scene, const PathVertex* z, int t) {
     //! BEGIN
     Connection c;
     const PathVertex& zEnd = z[t - 1];
-    if (zEnd.infinite) c.value = zEnd.beta * scene.backgroundRadiance();
-    else if (zEnd.onLight)
-        c.value = zEnd.beta * emittedRadiance(scene.lights[size_t(zEnd.sp.light)], zEnd.sp.n, direction(zEnd, z[t - 2]));
+    if (zEnd.infinite) {
+        c.value = zEnd.beta * scene.backgroundRadiance();
+    } else if (zEnd.onLight) {
+        const Light& light = scene.lights[size_t(zEnd.sp.light)];
+        c.value = zEnd.beta * emittedRadiance(light, zEnd.sp.n, direction(zEnd, z[t - 2]));
+    }
     c.valid = !isBlack(c.value);
     return c;
     //! END
@@ -109,7 +113,7 @@ Connection connectLight(const Scene& scene, const PathVertex* z, int t, float uL
     y0.onLight = true;
     y0.pointLight = light.isDelta();
     y0.infinite = light.isInfinite();
-    if (y0.infinite) y0.sp.n = ls.wi;   // towards the background (lesson 6's convention)
+    if (y0.infinite) y0.sp.n = ls.wi;  // towards the background (lesson 6's convention)
     y0.pdfFwd = pdfLightOrigin(scene, y0);
     if (!(y0.pdfFwd > 0.0f && ls.pdf > 0.0f)) return c;
     y0.beta = Color(1.0f / y0.pdfFwd);
@@ -144,7 +148,9 @@ Connection connectVertices(const Scene& scene, const PathVertex* y, int s, const
     if (zEnd.infinite || yEnd.infinite) return c;
     const Vec3 w = direction(zEnd, yEnd);
     if (w == Vec3(0.0f)) return c;
-    const auto material = [&](const PathVertex& v) -> const Material& { return scene.materials[size_t(v.sp.material)]; };
+    const auto material = [&](const PathVertex& v) -> const Material& {
+        return scene.materials[size_t(v.sp.material)];
+    };
     const Color fy = evalBSDF(material(yEnd), yEnd.sp.n, -w, direction(yEnd, y[s - 2]));
     const Color fz = evalBSDF(material(zEnd), zEnd.sp.n, direction(zEnd, z[t - 2]), w);
     c.value = yEnd.beta * fy * geometryTerm(yEnd, zEnd) * fz * zEnd.beta;

@@ -30,7 +30,7 @@ void lightSubpath(const Scene& scene, Rng& rng, int maxDepth, Heuristic h, Subpa
             y0.onLight = true;
             y0.pointLight = light.isDelta();
             y0.infinite = light.isInfinite();
-            if (y0.infinite) y0.sp.n = -start.ray.d;   // towards the background (lesson 6's convention)
+            if (y0.infinite) y0.sp.n = -start.ray.d;  // towards the background (lesson 6's convention)
             y0.pdfFwd = pdfLightOrigin(scene, y0);
             if (!(y0.pdfFwd > 0.0f)) return false;
             y0.beta = Color(1.0f / y0.pdfFwd);

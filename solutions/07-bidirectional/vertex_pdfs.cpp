@@ -14,7 +14,7 @@ float pdfLightOrigin(const Scene& scene, const PathVertex& v) {
     //! STUB return PS_TODO("lesson 07: pdfLightOrigin", 0.0f);
     //! BEGIN
     if (v.sp.light < 0) return 0.0f;
-    const EmissionPdf e = pdfEmission(scene, v.sp.light, v.sp.n, v.sp.n);   // pdfA does not depend on the direction
+    const EmissionPdf e = pdfEmission(scene, v.sp.light, v.sp.n, v.sp.n);  // pdfA does not depend on the direction
     return scene.lightSelectionProb(v.sp.light) * (v.infinite ? e.pdfW : e.pdfA);
     //! END
 }
@@ -52,7 +52,8 @@ float pdfScatter(const Scene& scene, const PathVertex* prev, const PathVertex& c
         const Material& m = scene.materials[size_t(cur.sp.material)];
         const Vec3 wp = direction(cur, *prev);
         if (cur.specular) {
-            const DeltaLobe lobe = mode == Transport::Importance ? deltaLobe(m, cur.sp.n, wp, wn) : deltaLobe(m, cur.sp.n, wn, wp);
+            const DeltaLobe lobe =
+                mode == Transport::Importance ? deltaLobe(m, cur.sp.n, wp, wn) : deltaLobe(m, cur.sp.n, wn, wp);
             pdfW = mode == Transport::Importance ? lobe.pdfLight : lobe.pdfCamera;
         } else {
             pdfW = pdfBSDF(m, cur.sp.n, wp, wn);

@@ -43,12 +43,12 @@ struct Tally {
     }
 };
 // The summary line: a test passes only if every one of its checks passed.
-#define LESSON00_SUMMARY(tally, what)                                                              \
-    CHECK_MESSAGE((tally).failures == 0, "expected all " << (tally).checks << " " << (what)        \
-                                             << " to be right, got " << (tally).failures << " wrong" \
-                                             << std::string((tally).failures > lesson00::Tally::kShown \
-                                                                ? " (the first 5 are shown above)"  \
-                                                                : ""))
+#define LESSON00_SUMMARY(tally, what)                                                                               \
+    CHECK_MESSAGE((tally).failures == 0, "expected all " << (tally).checks << " " << (what) << " to be right, got " \
+                                                         << (tally).failures << " wrong"                            \
+                                                         << std::string((tally).failures > lesson00::Tally::kShown  \
+                                                                            ? " (the first 5 are shown above)"      \
+                                                                            : ""))
 
 // ---------------------------------------------------------------------------------------------
 // Camera: the parameters a test builds a camera from, and the exact ray it must generate.
@@ -143,9 +143,7 @@ inline ExactHit exactHit(const Ray& ray, const Triangle& tri) {
 }
 
 // The point of a triangle at barycentrics (b1, b2), in float, the way Scene computes hit points.
-inline Vec3 pointAt(const Triangle& t, float b1, float b2) {
-    return (1.0f - b1 - b2) * t.p0 + b1 * t.p1 + b2 * t.p2;
-}
+inline Vec3 pointAt(const Triangle& t, float b1, float b2) { return (1.0f - b1 - b2) * t.p0 + b1 * t.p1 + b2 * t.p2; }
 
 inline Vec3 randomUnit(ps::Rng& rng) {
     const float z = 1.0f - 2.0f * rng.uniform(), r = std::sqrt(std::max(0.0f, 1.0f - z * z));

@@ -17,13 +17,13 @@ namespace {
 // A spread of cameras: square and non-square, wide and narrow, odd sizes, the Cornell box's.
 std::vector<CameraSpec> cameras() {
     return {
-        {Vec3(278, 273, -800), Vec3(278, 273, -799), Vec3(0, 1, 0), 39.3f, 256, 256},   // scenes/cornell-box.scene
+        {Vec3(278, 273, -800), Vec3(278, 273, -799), Vec3(0, 1, 0), 39.3f, 256, 256},  // scenes/cornell-box.scene
         {Vec3(0, 0, 0), Vec3(0, 0, -1), Vec3(0, 1, 0), 90.0f, 64, 64},
         {Vec3(1, 2, 3), Vec3(-2, 0.5f, 4), Vec3(0, 0, 1), 60.0f, 320, 180},
         {Vec3(-5, 0.25f, 7), Vec3(3, -1, 2), Vec3(0.25f, 1, 0.5f), 10.0f, 90, 160},
         {Vec3(0.5f, -0.5f, 0.5f), Vec3(0.5f, 1.5f, 0.5f), Vec3(1, 0, 1), 150.0f, 7, 5},
         {Vec3(10, 10, 10), Vec3(0, 0, 0), Vec3(0, 1, 0), 30.0f, 1, 1},
-        {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, -1, 0), 1.0f, 1000, 10},   // a strip: 1 deg high, 82 deg wide
+        {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, -1, 0), 1.0f, 1000, 10},  // a strip: 1 deg high, 82 deg wide
     };
 }
 
@@ -80,7 +80,8 @@ TEST_CASE("rays: rays through the corners of the image and of its corner pixels 
     LESSON00_SUMMARY(tally, "camera rays");
 }
 
-TEST_CASE("rays: rays through the midpoints of the image edges make half the field of view with the view direction [1 pt]") {
+TEST_CASE(
+    "rays: rays through the midpoints of the image edges make half the field of view with the view direction [1 pt]") {
     // The top edge's midpoint (W/2, 0) lies fovY/2 above the view direction; the left edge's
     // midpoint (0, H/2) lies atan(tan(fovY/2) W/H) to its left.
     Tally tally;
@@ -89,8 +90,13 @@ TEST_CASE("rays: rays through the midpoints of the image edges make half the fie
         const float W = float(c.width), H = float(c.height);
         const ExactBasis b = exactBasis(c);
         const double halfY = 0.5 * double(c.fovY) * 3.14159265358979323846 / 180.0;
-        const double halfX = std::atan(b.tanX);   // the horizontal field follows from the aspect ratio
-        struct Edge { float x, y; double angle; DVec3 side; std::string name; };
+        const double halfX = std::atan(b.tanX);  // the horizontal field follows from the aspect ratio
+        struct Edge {
+            float x, y;
+            double angle;
+            DVec3 side;
+            std::string name;
+        };
         const Edge edges[] = {{0.5f * W, 0.0f, halfY, b.u, "top edge midpoint (raster y = 0 is the top row)"},
                               {0.0f, 0.5f * H, halfX, -b.r, "left edge midpoint (raster x = 0 is the left column)"}};
         for (const Edge& ed : edges) {
@@ -100,11 +106,14 @@ TEST_CASE("rays: rays through the midpoints of the image edges make half the fie
             const double angle = std::atan2(glm::length(glm::cross(d, b.f)), glm::dot(d, b.f));
             const bool ok = std::abs(angle - ed.angle) < 2e-6 && glm::dot(d, ed.side) > 0.0;
             if (tally.fail(ok))
-                FAIL_CHECK(c.describe() << "\n  " << ed.name << ": expected a ray " << ed.angle * 180.0 / 3.14159265358979323846
-                                        << " deg from the view direction, towards " << std::string(ed.x == 0.0f ? "the left" : "the top")
+                FAIL_CHECK(c.describe() << "\n  " << ed.name << ": expected a ray "
+                                        << ed.angle * 180.0 / 3.14159265358979323846
+                                        << " deg from the view direction, towards "
+                                        << std::string(ed.x == 0.0f ? "the left" : "the top")
                                         << " of the image\n  got the direction " << str(d) << ", "
                                         << angle * 180.0 / 3.14159265358979323846 << " deg from the view direction, "
-                                        << std::string(glm::dot(d, ed.side) > 0.0 ? "on the right side" : "on the WRONG side"));
+                                        << std::string(glm::dot(d, ed.side) > 0.0 ? "on the right side"
+                                                                                  : "on the WRONG side"));
         }
     }
     LESSON00_SUMMARY(tally, "rays and angles");
@@ -141,9 +150,10 @@ TEST_CASE("rays: non-square images take the horizontal field from the aspect rat
         // 1e-3: the float directions are accurate to ~1e-7, and a step can be as small as 5e-4.
         const bool ok = std::abs(stepX - expected) < 1e-3 * expected && std::abs(stepY - expected) < 1e-3 * expected;
         if (tally.fail(ok))
-            FAIL_CHECK(c.describe() << "\n  expected one pixel to the right and one pixel down to move the point on the "
-                                    << "image plane at distance 1 by 2 tan(fovY/2) / height = " << expected
-                                    << "\n  got " << stepX << " to the right and " << stepY << " down");
+            FAIL_CHECK(
+                c.describe() << "\n  expected one pixel to the right and one pixel down to move the point on the "
+                             << "image plane at distance 1 by 2 tan(fovY/2) / height = " << expected << "\n  got "
+                             << stepX << " to the right and " << stepY << " down");
     }
     LESSON00_SUMMARY(tally, "rays and pixel steps");
 }
@@ -155,11 +165,14 @@ TEST_CASE("rays: rays start at the eye and are unit length with the exact direct
     ps::Rng rng(ps::testseed::seed(1));
     Tally tally;
     for (int k = 0; k < 200; ++k) {
-        const auto grid16 = [&](float range) { return std::round((2.0f * rng.uniform() - 1.0f) * range * 16.0f) / 16.0f; };
+        const auto grid16 = [&](float range) {
+            return std::round((2.0f * rng.uniform() - 1.0f) * range * 16.0f) / 16.0f;
+        };
         CameraSpec c;
         c.eye = Vec3(grid16(100), grid16(100), grid16(100));
         Vec3 off;
-        do off = Vec3(grid16(8), grid16(8), grid16(8)); while (glm::length(off) < 0.5f);
+        do off = Vec3(grid16(8), grid16(8), grid16(8));
+        while (glm::length(off) < 0.5f);
         c.target = c.eye + off;
         do c.up = randomUnit(rng) * (0.5f + 2.0f * rng.uniform());
         while (glm::length(glm::cross(glm::normalize(c.up), glm::normalize(off))) < 0.1f);
@@ -177,9 +190,9 @@ TEST_CASE("rays: rays start at the eye and are unit length with the exact direct
             const bool ok = ray.o == c.eye && std::abs(len - 1.0) < 1e-6 && err <= kDirTol;
             if (tally.fail(ok))
                 FAIL_CHECK(c.describe() << "\n  raster (" << x << ", " << y << ")"
-                                        << "\n  expected origin " << str(c.eye) << ", |d| = 1, direction " << str(expected)
-                                        << "\n  got      origin " << str(ray.o) << ", |d| = " << len << ", direction "
-                                        << str(ray.d) << " (largest component error " << err << ")");
+                                        << "\n  expected origin " << str(c.eye) << ", |d| = 1, direction "
+                                        << str(expected) << "\n  got      origin " << str(ray.o) << ", |d| = " << len
+                                        << ", direction " << str(ray.d) << " (largest component error " << err << ")");
         }
     }
     LESSON00_SUMMARY(tally, "camera rays");
@@ -203,16 +216,17 @@ TEST_CASE("rays: generateRay and Camera::rasterPosition are inverse [1 pt]") {
             const bool inside = cam.rasterPosition(p, back);
             const bool ok = inside && std::abs(back.x - raster.x) < 2e-3f && std::abs(back.y - raster.y) < 2e-3f;
             if (tally.fail(ok))
-                FAIL_CHECK(c.describe() << "\n  generateRay(" << str(raster) << ") = " << str(ray) << "\n  its point "
-                                        << str(p) << " at t = " << t << ": expected rasterPosition " << str(raster)
-                                        << " (to 2e-3 pixels), got "
-                                        << (inside ? str(back) : std::string("outside the image or behind the camera")));
+                FAIL_CHECK(
+                    c.describe() << "\n  generateRay(" << str(raster) << ") = " << str(ray) << "\n  its point "
+                                 << str(p) << " at t = " << t << ": expected rasterPosition " << str(raster)
+                                 << " (to 2e-3 pixels), got "
+                                 << (inside ? str(back) : std::string("outside the image or behind the camera")));
             // point -> rasterPosition -> generateRay: the ray points at the point.
             const ExactBasis b = exactBasis(c);
             const double sx = (2.0 * rng.uniform() - 1.0) * b.tanX, sy = (2.0 * rng.uniform() - 1.0) * b.tanY;
             const Vec3 q = Vec3(DVec3(c.eye) + double(t) * (b.f + sx * b.r + sy * b.u));
             Vec2 r2(-1.0f);
-            if (!cam.rasterPosition(q, r2)) continue;   // rounded to just outside the image
+            if (!cam.rasterPosition(q, r2)) continue;  // rounded to just outside the image
             const Ray toQ = cam.generateRay(r2);
             const DVec3 expected = glm::normalize(DVec3(q) - DVec3(c.eye));
             const double err = maxDiff(toQ.d, expected);

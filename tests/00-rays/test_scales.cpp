@@ -33,15 +33,17 @@ TEST_CASE("rays: hit distances have relative error below 1e-5 at scales 1e-4 and
             const Triangle tri = randomTriangle(scale, rng);
             for (int i = 0; i < 100; ++i) {
                 const float e1 = 0.01f + 0.98f * rng.uniform(), e2 = (1.0f - e1) * (0.01f + 0.98f * rng.uniform());
-                const Vec3 d = directionWithCos(tri.normal(), (i % 2 ? 1.0f : -1.0f) * (0.2f + 0.8f * rng.uniform()), rng);
+                const Vec3 d =
+                    directionWithCos(tri.normal(), (i % 2 ? 1.0f : -1.0f) * (0.2f + 0.8f * rng.uniform()), rng);
                 const Ray ray(pointAt(tri, e1, e2) + scale * (1.0f + 4.0f * rng.uniform()) * d, -d);
                 const double t = exactT(ray, tri);
                 const Hit h = intersect(ray, tri);
                 ++rays;
                 const double err = h.hit ? std::abs(h.t - t) / t : 1.0;
                 if (err >= 1e-5 && ++failures <= 3)
-                    FAIL_CHECK("scale " << scale << ": " << str(ray) << "\n  " << str(tri) << "\n  expected a hit at t = " << t
-                                        << " (relative error < 1e-5), got " << str(h)
+                    FAIL_CHECK("scale " << scale << ": " << str(ray) << "\n  " << str(tri)
+                                        << "\n  expected a hit at t = " << t << " (relative error < 1e-5), got "
+                                        << str(h)
                                         << (h.hit ? " (relative error " + std::to_string(err) + ")" : std::string()));
             }
         }
@@ -50,7 +52,8 @@ TEST_CASE("rays: hit distances have relative error below 1e-5 at scales 1e-4 and
     }
 }
 
-TEST_CASE("rays: a ray leaving a triangle from an offset origin does not hit it again at scales 1e-4 and 1 and 1e4 [1 pt]") {
+TEST_CASE(
+    "rays: a ray leaving a triangle from an offset origin does not hit it again at scales 1e-4 and 1 and 1e4 [1 pt]") {
     // As a renderer does it: a ray hits the triangle; the hit point is computed from the reported
     // barycentrics; a new ray leaves it from offsetRayOrigin(p, n, errScale, w) in a direction w
     // on either side (reflection or transmission), half of them grazing (|cos| = 1e-3). The new
@@ -69,8 +72,8 @@ TEST_CASE("rays: a ray leaving a triangle from an offset origin does not hit it 
                 const Hit first = intersect(in, tri);
                 if (!first.hit) {
                     if (++misses <= 3)
-                        FAIL_CHECK("scale " << scale << ": the incoming ray missed (expected a hit at t = " << exactT(in, tri)
-                                            << ")\n  " << str(in) << "\n  " << str(tri));
+                        FAIL_CHECK("scale " << scale << ": the incoming ray missed (expected a hit at t = "
+                                            << exactT(in, tri) << ")\n  " << str(in) << "\n  " << str(tri));
                     continue;
                 }
                 const Vec3 p = pointAt(tri, first.b1, first.b2);
@@ -81,7 +84,8 @@ TEST_CASE("rays: a ray leaving a triangle from an offset origin does not hit it 
                 if (again.hit && ++rehits <= 3)
                     FAIL_CHECK("scale " << scale << ": a ray leaving the triangle (cos to the normal " << c
                                         << ") hit it again: " << str(again) << " (expected no hit)\n  " << str(out)
-                                        << "\n  " << str(tri) << "\n  it left the point " << str(p) << " of " << str(first));
+                                        << "\n  " << str(tri) << "\n  it left the point " << str(p) << " of "
+                                        << str(first));
             }
         }
         CHECK_MESSAGE(misses == 0, "scale " << scale << ": expected all " << trials << " incoming rays to hit, got "

@@ -27,9 +27,9 @@ bool expectHit(const Ray& ray, const Triangle& tri, double t, double b1, double 
     const bool ok = h.hit && std::abs(h.t - t) <= relTolT * std::abs(t) && std::abs(h.b1 - b1) <= tolB &&
                     std::abs(h.b2 - b2) <= tolB;
     if (tally.fail(ok))
-        FAIL_CHECK(what << "\n  " << str(ray) << "\n  " << str(tri) << "\n  expected a hit at t = " << t << " with b1 = " << b1
-                        << ", b2 = " << b2 << " (tolerances: t relative " << relTolT << ", b " << tolB << ")\n  got "
-                        << str(h));
+        FAIL_CHECK(what << "\n  " << str(ray) << "\n  " << str(tri) << "\n  expected a hit at t = " << t
+                        << " with b1 = " << b1 << ", b2 = " << b2 << " (tolerances: t relative " << relTolT << ", b "
+                        << tolB << ")\n  got " << str(h));
     return ok;
 }
 
@@ -52,15 +52,22 @@ TEST_CASE("rays: WatertightRay picks the dominant axis kz and the shear that map
     // Sx = d[kx] / d[kz], Sy = d[ky] / d[kz], Sz = 1 / d[kz], so the sheared direction is (0, 0, 1);
     // and the map keeps orientation: (kx, ky, kz) is a rotation of (x, y, z) when d[kz] > 0 and
     // one swap away from it when d[kz] < 0.
-    std::vector<Vec3> dirs = {Vec3(1, 0, 0), Vec3(-1, 0, 0), Vec3(0, 1, 0), Vec3(0, -1, 0), Vec3(0, 0, 1), Vec3(0, 0, -1),
-                              glm::normalize(Vec3(0.3f, -0.8f, 0.5f)), glm::normalize(Vec3(-0.9f, 0.2f, 0.1f)),
-                              glm::normalize(Vec3(0.1f, 0.2f, -0.95f)), glm::normalize(Vec3(-0.6f, 0.0f, 0.8f))};
+    std::vector<Vec3> dirs = {Vec3(1, 0, 0),
+                              Vec3(-1, 0, 0),
+                              Vec3(0, 1, 0),
+                              Vec3(0, -1, 0),
+                              Vec3(0, 0, 1),
+                              Vec3(0, 0, -1),
+                              glm::normalize(Vec3(0.3f, -0.8f, 0.5f)),
+                              glm::normalize(Vec3(-0.9f, 0.2f, 0.1f)),
+                              glm::normalize(Vec3(0.1f, 0.2f, -0.95f)),
+                              glm::normalize(Vec3(-0.6f, 0.0f, 0.8f))};
     ps::Rng rng(ps::testseed::seed(3));
     while (dirs.size() < 1000) {
         const Vec3 d = randomUnit(rng);
         Vec3 a = glm::abs(d);
         std::sort(&a[0], &a[0] + 3);
-        if (a[2] - a[1] > 1e-3f) dirs.push_back(d);   // a unique largest component
+        if (a[2] - a[1] > 1e-3f) dirs.push_back(d);  // a unique largest component
     }
     Tally tally;
     for (const Vec3& d : dirs) {
@@ -72,17 +79,20 @@ TEST_CASE("rays: WatertightRay picks the dominant axis kz and the shear that map
         const bool perm = wr.kx >= 0 && wr.kx < 3 && wr.ky >= 0 && wr.ky < 3 && wr.kz >= 0 && wr.kz < 3 &&
                           wr.kx != wr.ky && wr.ky != wr.kz && wr.kx != wr.kz;
         if (!perm) {
-            why << "(kx, ky, kz) = (" << wr.kx << ", " << wr.ky << ", " << wr.kz << ") is not a permutation of (0, 1, 2)";
+            why << "(kx, ky, kz) = (" << wr.kx << ", " << wr.ky << ", " << wr.kz
+                << ") is not a permutation of (0, 1, 2)";
         } else if (wr.kz != kzExpected) {
             why << "expected kz = " << kzExpected << " (the largest |d| component), got kz = " << wr.kz;
         } else {
             const double dz = d[wr.kz], sx = d[wr.kx] / dz, sy = d[wr.ky] / dz, sz = 1.0 / dz;
-            if (std::abs(wr.Sx - sx) > 1e-6 || std::abs(wr.Sy - sy) > 1e-6 || std::abs(wr.Sz - sz) > 1e-6 * std::abs(sz))
-                why << "with (kx, ky, kz) = (" << wr.kx << ", " << wr.ky << ", " << wr.kz << "): expected (Sx, Sy, Sz) = ("
-                    << sx + 0.0 << ", " << sy + 0.0 << ", " << sz << "), got (" << wr.Sx << ", " << wr.Sy << ", " << wr.Sz << ")";
+            if (std::abs(wr.Sx - sx) > 1e-6 || std::abs(wr.Sy - sy) > 1e-6 ||
+                std::abs(wr.Sz - sz) > 1e-6 * std::abs(sz))
+                why << "with (kx, ky, kz) = (" << wr.kx << ", " << wr.ky << ", " << wr.kz
+                    << "): expected (Sx, Sy, Sz) = (" << sx + 0.0 << ", " << sy + 0.0 << ", " << sz << "), got ("
+                    << wr.Sx << ", " << wr.Sy << ", " << wr.Sz << ")";
             else if (evenPermutation(wr.kx, wr.ky, wr.kz) != (dz > 0.0))
-                why << "(kx, ky, kz) = (" << wr.kx << ", " << wr.ky << ", " << wr.kz << ") with d[kz] " << (dz > 0 ? "> 0" : "< 0")
-                    << " flips orientation: swap kx and ky exactly when d[kz] < 0";
+                why << "(kx, ky, kz) = (" << wr.kx << ", " << wr.ky << ", " << wr.kz << ") with d[kz] "
+                    << (dz > 0 ? "> 0" : "< 0") << " flips orientation: swap kx and ky exactly when d[kz] < 0";
         }
         if (tally.fail(why.str().empty())) FAIL_CHECK("direction d = " << str(d) << ": " << why.str());
     }
@@ -111,7 +121,8 @@ TEST_CASE("rays: triangle hits report the exact t and barycentrics [2 pts]") {
                 Vec3 d(0.0f);
                 d[axis] = side;
                 const Ray ray(p - 2.5f * d, d);
-                expectHit(ray, kTilted, 2.5, b[0], b[1], 1e-6, 1e-6, "a ray along a coordinate axis to a tilted triangle", tally);
+                expectHit(ray, kTilted, 2.5, b[0], b[1], 1e-6, 1e-6,
+                          "a ray along a coordinate axis to a tilted triangle", tally);
             }
     }
     // 3. Oblique rays from both sides to known points of a general triangle: t = |p - o| and
@@ -121,7 +132,8 @@ TEST_CASE("rays: triangle hits report the exact t and barycentrics [2 pts]") {
     for (int i = 0; i < 1000; ++i) {
         const double e1 = 0.02 + 0.96 * rng.uniform(), e2 = (1.0 - e1) * (0.02 + 0.96 * rng.uniform());
         const DVec3 p = (1.0 - e1 - e2) * DVec3(kGeneral.p0) + e1 * DVec3(kGeneral.p1) + e2 * DVec3(kGeneral.p2);
-        const Vec3 side = directionWithCos(kGeneral.normal(), (i % 2 ? 1.0f : -1.0f) * (0.2f + 0.8f * rng.uniform()), rng);
+        const Vec3 side =
+            directionWithCos(kGeneral.normal(), (i % 2 ? 1.0f : -1.0f) * (0.2f + 0.8f * rng.uniform()), rng);
         const Vec3 o = Vec3(p) + (1.0f + 4.0f * rng.uniform()) * side;
         const DVec3 dd = p - DVec3(o);
         const Ray ray(o, Vec3(glm::normalize(dd)));
@@ -141,16 +153,17 @@ TEST_CASE("rays: rays just beside each edge miss and rays just inside hit [1 pt]
             const Vec3 a = v[i % 3], b = v[(i + 1) % 3], opposite = v[(i + 2) % 3];
             const float s = 0.01f + 0.98f * rng.uniform();
             const Vec3 onEdge = (1.0f - s) * a + s * b;
-            Vec3 out = glm::normalize(glm::cross(b - a, n));   // in the plane, across the edge
+            Vec3 out = glm::normalize(glm::cross(b - a, n));     // in the plane, across the edge
             if (glm::dot(out, opposite - a) > 0.0f) out = -out;  // away from the triangle
             const float delta = 1e-4f * glm::length(b - a);
             const Vec3 d = directionWithCos(n, (i % 2 ? 1.0f : -1.0f) * (0.1f + 0.9f * rng.uniform()), rng);
             const Ray outside(onEdge + delta * out + 2.0f * d, -d), inside(onEdge - delta * out + 2.0f * d, -d);
-            const std::string where = "edge p" + std::to_string(i % 3) + "-p" + std::to_string((i + 1) % 3) +
-                                      " at s = " + std::to_string(s);
+            const std::string where =
+                "edge p" + std::to_string(i % 3) + "-p" + std::to_string((i + 1) % 3) + " at s = " + std::to_string(s);
             expectMiss(outside, tri, "a ray passing 1e-4 edge lengths OUTSIDE the " + where, tally);
             const ExactHit e = exactHit(inside, tri);
-            expectHit(inside, tri, e.t, e.b1, e.b2, 1e-5, 1e-5, "a ray passing 1e-4 edge lengths INSIDE the " + where, tally);
+            expectHit(inside, tri, e.t, e.b1, e.b2, 1e-5, 1e-5, "a ray passing 1e-4 edge lengths INSIDE the " + where,
+                      tally);
         }
     }
     LESSON00_SUMMARY(tally, "rays");
@@ -164,7 +177,8 @@ TEST_CASE("rays: back-facing triangles are hit too and both windings give the sa
     for (int i = 0; i < 400; ++i) {
         Triangle tri;
         do {
-            for (Vec3* p : {&tri.p0, &tri.p1, &tri.p2}) *p = 2.0f * Vec3(rng.uniform(), rng.uniform(), rng.uniform()) - 1.0f;
+            for (Vec3* p : {&tri.p0, &tri.p1, &tri.p2})
+                *p = 2.0f * Vec3(rng.uniform(), rng.uniform(), rng.uniform()) - 1.0f;
         } while (tri.area() < 0.1f);
         const Triangle flipped{tri.p0, tri.p2, tri.p1};
         const float e1 = 0.05f + 0.9f * rng.uniform(), e2 = (1.0f - e1) * (0.05f + 0.9f * rng.uniform());
@@ -175,8 +189,10 @@ TEST_CASE("rays: back-facing triangles are hit too and both windings give the sa
         const ExactHit e = exactHit(ray, tri);
         expectHit(ray, tri, e.t, e.b1, e.b2, 1e-5, 1e-5,
                   std::string("winding (p0, p1, p2), seen from the ") + (front ? "front" : "back"), tally);
-        expectHit(ray, flipped, e.t, e.b2, e.b1, 1e-5, 1e-5,
-                  std::string("winding (p0, p2, p1) (b1 and b2 exchanged), seen from the ") + (front ? "back" : "front"), tally);
+        expectHit(
+            ray, flipped, e.t, e.b2, e.b1, 1e-5, 1e-5,
+            std::string("winding (p0, p2, p1) (b1 and b2 exchanged), seen from the ") + (front ? "back" : "front"),
+            tally);
     }
     LESSON00_SUMMARY(tally, "hits");
 }
@@ -192,11 +208,12 @@ TEST_CASE("rays: rays parallel to the triangle's plane miss and slightly tilted 
     for (const Vec3& d : dirs)
         for (float dz : {0.0f, 1e-3f, -1e-3f}) {
             const Ray ray(interior - 5.0f * d + Vec3(0, 0, dz), d);
-            expectMiss(ray, kFlat,
-                       dz == 0.0f ? "a ray in the triangle's plane, through it" : "a ray parallel to the plane, 1e-3 off it",
-                       tally);
+            expectMiss(
+                ray, kFlat,
+                dz == 0.0f ? "a ray in the triangle's plane, through it" : "a ray parallel to the plane, 1e-3 off it",
+                tally);
             if (dz != 0.0f) {
-                const Ray tilted(ray.o, glm::normalize(interior - ray.o));   // tilted by ~2e-4 rad
+                const Ray tilted(ray.o, glm::normalize(interior - ray.o));  // tilted by ~2e-4 rad
                 // At this grazing angle float rounding of the direction moves the hit by ~1e-3:
                 // the expected values are those of the float ray, computed exactly.
                 const ExactHit e = exactHit(tilted, kFlat);

@@ -96,7 +96,8 @@ Vec3 onTiltedPlane(float x, float y, float z0) { return Vec3(x, y, z0 + 0.5f * x
 
 }  // namespace
 
-TEST_CASE("rays: watertight: rays through the shared edges and the centre of a triangle fan never fall through [2 pts]") {
+TEST_CASE(
+    "rays: watertight: rays through the shared edges and the centre of a triangle fan never fall through [2 pts]") {
     ps::Rng rng(ps::testseed::seed(9));
     const std::vector<Vec3> dirs = testDirections(100, rng);
 
@@ -119,7 +120,8 @@ TEST_CASE("rays: watertight: rays through the shared edges and the centre of a t
         std::vector<Target> targets = {{c, "the fan's centre vertex"}};
         for (size_t k = 0; k < rim.size(); ++k)
             for (float s : {0.125f, 0.25f, 0.5f, 0.75f, 0.875f})
-                targets.push_back({c + s * (rim[k] - c), "the point s = " + std::to_string(s) + " of spoke " + std::to_string(k)});
+                targets.push_back(
+                    {c + s * (rim[k] - c), "the point s = " + std::to_string(s) + " of spoke " + std::to_string(k)});
         checkNoRayFallsThrough(fan, glm::normalize(Vec3(-0.5f, 0.25f, 1.0f)), targets, dirs, 4.0f, "planar dyadic fan");
     }
 
@@ -137,7 +139,8 @@ TEST_CASE("rays: watertight: rays through the shared edges and the centre of a t
         std::vector<Target> targets = {{c, "the fan's centre vertex"}};
         for (size_t k = 0; k < rim.size(); ++k)
             for (float s : {0.01f, 0.3f, 0.8f})
-                targets.push_back({c + s * (rim[k] - c), "the point s = " + std::to_string(s) + " of spoke " + std::to_string(k)});
+                targets.push_back(
+                    {c + s * (rim[k] - c), "the point s = " + std::to_string(s) + " of spoke " + std::to_string(k)});
         // Not within ~11 degrees of the plane: the fold's slope is up to 0.02 per unit.
         std::vector<Vec3> steep;
         for (const Vec3& d : dirs)
@@ -162,15 +165,21 @@ TEST_CASE("rays: watertight: rays through the shared edges and vertices of a mes
             for (int i = 0; i < n; ++i) {
                 const Vec3 a = V(i, j), b = V(i + 1, j), c = V(i + 1, j + 1), d = V(i, j + 1);
                 Triangle t1, t2;
-                if ((i + j) % 2 == 0) { t1 = {a, b, c}; t2 = {a, c, d}; }
-                else { t1 = {a, b, d}; t2 = {b, c, d}; }
+                if ((i + j) % 2 == 0) {
+                    t1 = {a, b, c};
+                    t2 = {a, c, d};
+                } else {
+                    t1 = {a, b, d};
+                    t2 = {b, c, d};
+                }
                 std::swap(t2.p1, t2.p2);
                 grid.push_back(t1);
                 grid.push_back(t2);
             }
         std::vector<Target> targets;
         const auto edgePoints = [&](const Vec3& a, const Vec3& b, const std::string& name) {
-            for (float s : {0.25f, 0.5f, 0.75f}) targets.push_back({a + s * (b - a), name + " at s = " + std::to_string(s)});
+            for (float s : {0.25f, 0.5f, 0.75f})
+                targets.push_back({a + s * (b - a), name + " at s = " + std::to_string(s)});
         };
         for (int j = 0; j <= n; ++j)
             for (int i = 0; i <= n; ++i) {
@@ -183,7 +192,8 @@ TEST_CASE("rays: watertight: rays through the shared edges and vertices of a mes
                     else edgePoints(V(i + 1, j), V(i, j + 1), "the diagonal edge of the square at " + ij);
                 }
             }
-        checkNoRayFallsThrough(grid, glm::normalize(Vec3(-0.5f, 0.25f, 1.0f)), targets, dirs, 4.0f, "tilted dyadic 8x8 grid");
+        checkNoRayFallsThrough(grid, glm::normalize(Vec3(-0.5f, 0.25f, 1.0f)), targets, dirs, 4.0f,
+                               "tilted dyadic 8x8 grid");
     }
 
     // 2. A 16x16 grid at an awkward offset and spacing (no coordinate is dyadic), at z = 0.29:

@@ -48,7 +48,7 @@ struct SphereWarp {
     std::function<Vec3(const Vec2&)> sample;
     std::function<float(const Vec3&)> pdf;
     std::function<Vec2(const Vec3&)> invert;
-    bool hemisphere;   // the pdf is 0 below the horizon z = 0
+    bool hemisphere;  // the pdf is 0 below the horizon z = 0
 };
 
 inline SphereWarp phongWarp(float n) {
@@ -66,8 +66,7 @@ inline std::vector<SphereWarp> sphereWarps(const std::vector<float>& phongExpone
          ps::invertUniformSphere, false},
         {"uniform hemisphere", ps::sampleUniformHemisphere, ps::uniformHemispherePdf, ps::invertUniformHemisphere,
          true},
-        {"cosine hemisphere", ps::sampleCosineHemisphere, ps::cosineHemispherePdf, ps::invertCosineHemisphere,
-         true},
+        {"cosine hemisphere", ps::sampleCosineHemisphere, ps::cosineHemispherePdf, ps::invertCosineHemisphere, true},
     };
     for (float n : phongExponents) w.push_back(phongWarp(n));
     return w;

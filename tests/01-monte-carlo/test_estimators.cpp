@@ -47,12 +47,12 @@ void checkUnbiased(const std::string& what, double reference, uint64_t seed, con
     ps::stats::Welford w;
     for (const Estimate& e : repeat(100, seed, run)) w.add(e.value);
     const ps::stats::TTestResult t = ps::stats::tTest(w, reference, alpha(), 0.005);
-    CHECK_MESSAGE(t.passed, what << " (100 independent runs): expected " << reference << ", got " << t.mean
-                                 << " +- " << t.stdError << ". " << t.report);
+    CHECK_MESSAGE(t.passed, what << " (100 independent runs): expected " << reference << ", got " << t.mean << " +- "
+                                 << t.stdError << ". " << t.report);
 }
 
 struct Spread {
-    double empirical = 0.0, reported = 0.0;   // variance of the values; mean reported variance
+    double empirical = 0.0, reported = 0.0;  // variance of the values; mean reported variance
 };
 template <class Run>
 Spread spread(int runs, uint64_t seed, const Run& run) {

@@ -33,7 +33,8 @@ TEST_CASE("estimators: the sample mean reports the variance s^2 / n with the unb
                       << "the variance of the samples, not of their mean (1/n missing)?)");
 }
 
-TEST_CASE("estimators: stratified sampling puts exactly one sample in each stratum, and reports Eq. 1.4's variance [2 pts]") {
+TEST_CASE(
+    "estimators: stratified sampling puts exactly one sample in each stratum, and reports Eq. 1.4's variance [2 pts]") {
     // 1D: [0, 5] in 5 strata of width 1; f is 0, 1, 0, 2, 0 on the strata (constant on each),
     // and records where it was called. Value = sum h f = 3; second differences -2, 3, -4, so the
     // variance is N / (6 M) sum d^2 = 5 / 18 * 29.
@@ -83,8 +84,9 @@ TEST_CASE("estimators: stratified sampling puts exactly one sample in each strat
         bool once = outside == 0;
         for (int c = 0; c < 9; ++c) once = once && hits[c] == 1;
         CHECK_MESSAGE(once, "3 x 3 cells: expected exactly one sample in each cell (" << outside << " outside)");
-        CHECK_MESSAGE(near(e.value, 16.0 / 9.0), "stratified 2D: expected the value 16 h^2 = 1.7778, got " << e.value
-                                                     << " (ratio " << e.value / (16.0 / 9.0) << "; 3: h instead of h^2?)");
+        CHECK_MESSAGE(near(e.value, 16.0 / 9.0), "stratified 2D: expected the value 16 h^2 = 1.7778, got "
+                                                     << e.value << " (ratio " << e.value / (16.0 / 9.0)
+                                                     << "; 3: h instead of h^2?)");
         CHECK_MESSAGE(near(e.variance, 2.0 / 81.0),
                       "stratified 2D, rows 0 1 0 / 5 5 5 / 0 0 0: expected 9 / (6 * 3) * 4 h^4 = 0.024691, got "
                           << e.variance << " (ratio " << e.variance / (2.0 / 81.0)

@@ -24,12 +24,15 @@ TEST_CASE("exercise: the Phong BRDF's normalisation C(n) reflects everything at 
     for (double n : {0.0, 1.0, 2.5, 10.0, 100.0, 10000.0}) {
         const double integral = cosPowerHemisphereIntegral(n, 200000);
         const double c = ps::phongBRDFNormalization(n);
-        CHECK_MESSAGE(std::abs(c * integral - 1.0) < 1e-6,
-                      "phongBRDFNormalization(" << n << "): expected C(n) with C(n) * (integral of cos^(n+1) over the "
-                      "hemisphere = " << integral << ") = 1, i.e. C = " << 1.0 / integral << ", got " << c
-                      << " (ratio " << c * integral
-                      << (std::abs(c / ((n + 1.0) / (2.0 * 3.14159265358979323846)) - 1.0) < 1e-6
-                              ? "; that is (n+1)/2pi, the sampling pdf's constant: the reflectance has one more cos theta)"
-                              : ")"));
+        CHECK_MESSAGE(
+            std::abs(c * integral - 1.0) < 1e-6,
+            "phongBRDFNormalization("
+                << n
+                << "): expected C(n) with C(n) * (integral of cos^(n+1) over the "
+                   "hemisphere = "
+                << integral << ") = 1, i.e. C = " << 1.0 / integral << ", got " << c << " (ratio " << c * integral
+                << (std::abs(c / ((n + 1.0) / (2.0 * 3.14159265358979323846)) - 1.0) < 1e-6
+                        ? "; that is (n+1)/2pi, the sampling pdf's constant: the reflectance has one more cos theta)"
+                        : ")"));
     }
 }

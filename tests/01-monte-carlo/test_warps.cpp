@@ -15,23 +15,23 @@ using ps::kPi;
 
 namespace {
 
-constexpr int kThetaBins = 51, kPhiBins = 102;   // odd: the horizon lies inside a row of cells
+constexpr int kThetaBins = 51, kPhiBins = 102;  // odd: the horizon lies inside a row of cells
 constexpr int kPlanarBins = 51;
 constexpr float kLastBelowOne = 1.0f - 0x1p-24f;  // the largest float in [0, 1)
 
 // Pearson's chi-square of a direction warp against its own pdf over the sphere.
 void chiSquareSphere(const SphereWarp& w, const std::string& file, int samples, uint64_t seed) {
     const ps::stats::ChiSquareResult r = ps::stats::chiSquareSphere(
-        w.sample, [&](const Vec3& d) { return double(w.pdf(d)); }, kThetaBins, kPhiBins, samples, ps::testseed::seed(seed), alpha(),
-        dumpPath(file));
+        w.sample, [&](const Vec3& d) { return double(w.pdf(d)); }, kThetaBins, kPhiBins, samples,
+        ps::testseed::seed(seed), alpha(), dumpPath(file));
     CHECK_MESSAGE(r.passed, w.name << ": the samples do not follow the pdf. " << r.report);
 }
 
 void chiSquarePlanar(const PlanarWarp& w, const std::string& file, const Vec2& lo, const Vec2& hi, int samples,
                      uint64_t seed) {
     const ps::stats::ChiSquareResult r = ps::stats::chiSquarePlanar(
-        w.sample, [&](const Vec2& p) { return double(w.pdf(p)); }, lo, hi, kPlanarBins, samples, ps::testseed::seed(seed), alpha(),
-        dumpPath(file));
+        w.sample, [&](const Vec2& p) { return double(w.pdf(p)); }, lo, hi, kPlanarBins, samples,
+        ps::testseed::seed(seed), alpha(), dumpPath(file));
     CHECK_MESSAGE(r.passed, w.name << ": the samples do not follow the pdf. " << r.report);
 }
 
@@ -100,7 +100,8 @@ double jacobianPlanar(const PlanarWarp& w, const Vec2& u, float h) {
 std::vector<Vec2> interiorGrid() {
     std::vector<Vec2> us;
     for (int i = 0; i < 23; ++i)
-        for (int j = 0; j < 29; ++j) us.emplace_back(0.05f + 0.9f * (i + 0.5f) / 23.0f, 0.05f + 0.9f * (j + 0.5f) / 29.0f);
+        for (int j = 0; j < 29; ++j)
+            us.emplace_back(0.05f + 0.9f * (i + 0.5f) / 23.0f, 0.05f + 0.9f * (j + 0.5f) / 29.0f);
     return us;
 }
 
@@ -154,7 +155,8 @@ TEST_CASE("warps: uniform hemisphere matches its pdf (chi-square) [1 pt]") {
 }
 
 TEST_CASE("warps: concentric disk matches its pdf (chi-square) [2 pts]") {
-    chiSquarePlanar(planarWarps()[0], "concentric-disk", Vec2(-1.0f), Vec2(1.0f), 1000 * kPlanarBins * kPlanarBins, 103);
+    chiSquarePlanar(planarWarps()[0], "concentric-disk", Vec2(-1.0f), Vec2(1.0f), 1000 * kPlanarBins * kPlanarBins,
+                    103);
 }
 
 TEST_CASE("warps: cosine hemisphere matches its pdf (chi-square) [2 pts]") {
@@ -186,9 +188,8 @@ TEST_CASE("warps: every pdf integrates to 1 over its domain [2 pts]") {
     }
     const PlanarWarp disk = planarWarps()[0];
     const double integral = integrateOverDisk(disk.pdf);
-    CHECK_MESSAGE(std::abs(integral - 1.0) < 1e-3,
-                  disk.name << ": the pdf integrates to " << integral
-                            << " over the disk of radius 1.5, expected 1 (+- 1e-3)");
+    CHECK_MESSAGE(std::abs(integral - 1.0) < 1e-3, disk.name << ": the pdf integrates to " << integral
+                                                             << " over the disk of radius 1.5, expected 1 (+- 1e-3)");
 }
 
 TEST_CASE("warps: pdf(sample(u)) is 1 / Jacobian of the warp (Eq. 1.6) [3 pts]") {
@@ -202,9 +203,9 @@ TEST_CASE("warps: pdf(sample(u)) is 1 / Jacobian of the warp (Eq. 1.6) [3 pts]")
             if (disky && nearConcentricKink(u, h)) continue;
             const Vec3 d = w.sample(u);
             const double jac = jacobianSphere(w, u, h), p = w.pdf(d);
-            f.add(std::abs(p * jac - 1.0) < 1e-2, "u = " + str(u) + ": sample " + str(d) + ", pdf " +
-                                                      num(p) + ", solid angle per unit u-area " +
-                                                      num(jac) + ", product " + num(p * jac));
+            f.add(std::abs(p * jac - 1.0) < 1e-2, "u = " + str(u) + ": sample " + str(d) + ", pdf " + num(p) +
+                                                      ", solid angle per unit u-area " + num(jac) + ", product " +
+                                                      num(p * jac));
         }
         f.check();
     }
@@ -215,9 +216,9 @@ TEST_CASE("warps: pdf(sample(u)) is 1 / Jacobian of the warp (Eq. 1.6) [3 pts]")
             if (disky && nearConcentricKink(u, h)) continue;
             const Vec2 p = w.sample(u);
             const double jac = jacobianPlanar(w, u, h), q = w.pdf(p);
-            f.add(std::abs(q * jac - 1.0) < 1e-2, "u = " + str(u) + ": sample " + str(p) + ", pdf " +
-                                                      num(q) + ", area per unit u-area " +
-                                                      num(jac) + ", product " + num(q * jac));
+            f.add(std::abs(q * jac - 1.0) < 1e-2, "u = " + str(u) + ": sample " + str(p) + ", pdf " + num(q) +
+                                                      ", area per unit u-area " + num(jac) + ", product " +
+                                                      num(q * jac));
         }
         f.check();
     }
@@ -270,8 +271,8 @@ TEST_CASE("warps: Phong lobe stays finite and right for exponents 0 to 1e6 [2 pt
             const Vec3 d = w.sample(u);
             const float p = w.pdf(d);
             const bool finite = std::isfinite(d.x) && std::isfinite(d.y) && std::isfinite(d.z);
-            const bool ok = finite && std::abs(glm::length(d) - 1.0f) < 1e-5f && d.z >= 0.0f && std::isfinite(p) &&
-                            p > 0.0f;
+            const bool ok =
+                finite && std::abs(glm::length(d) - 1.0f) < 1e-5f && d.z >= 0.0f && std::isfinite(p) && p > 0.0f;
             f.add(ok, "u = " + str(u) + ": sample " + str(d) + ", pdf " + num(p));
         }
         f.check();
@@ -281,9 +282,9 @@ TEST_CASE("warps: Phong lobe stays finite and right for exponents 0 to 1e6 [2 pt
         const double below = w.pdf(Vec3(0.6f, 0.0f, -0.8f));
         CHECK_MESSAGE(below == 0.0, w.name << ": pdf below the horizon (0.6, 0, -0.8): expected 0, got " << below);
         const double mean = oneMinusCos / kSamples, expected = 1.0 / (double(n) + 2.0);
-        CHECK_MESSAGE(std::abs(mean / expected - 1.0) < 0.05,
-                      w.name << ": mean of 1 - cos(alpha) over " << kSamples << " samples: expected " << expected
-                             << " (+- 5 %), got " << mean);
+        CHECK_MESSAGE(std::abs(mean / expected - 1.0) < 0.05, w.name << ": mean of 1 - cos(alpha) over " << kSamples
+                                                                     << " samples: expected " << expected
+                                                                     << " (+- 5 %), got " << mean);
     }
 }
 
@@ -295,7 +296,8 @@ TEST_CASE("warps: samples lie in their domain and cover it [1 pt]") {
         for (float b : edges) us.emplace_back(a, b);
 
     for (const SphereWarp& w : sphereWarps({})) {
-        Failures f{w.name + (w.hemisphere ? ": samples must be unit vectors with z >= 0" : ": samples must be unit vectors")};
+        Failures f{w.name +
+                   (w.hemisphere ? ": samples must be unit vectors with z >= 0" : ": samples must be unit vectors")};
         Vec3 lo(ps::kInf), hi(-ps::kInf);
         for (const Vec2& u : us) {
             const Vec3 d = w.sample(u);
@@ -327,8 +329,8 @@ TEST_CASE("warps: samples lie in their domain and cover it [1 pt]") {
     fd.check();
     ft.check();
     CHECK_MESSAGE((lo.x < -0.99f && hi.x > 0.99f && lo.y < -0.99f && hi.y > 0.99f),
-                  "concentric disk: the samples do not cover the disk: they span " << str(lo) << " to " << str(hi)
-                                                                                   << ", expected about (-1, -1) to (1, 1)");
+                  "concentric disk: the samples do not cover the disk: they span "
+                      << str(lo) << " to " << str(hi) << ", expected about (-1, -1) to (1, 1)");
     CHECK_MESSAGE((b1Max > 0.99f && b2Max > 0.99f && sumMin < 0.01f),
                   "uniform triangle: the samples do not reach all three corners: largest b1 "
                       << b1Max << ", largest b2 " << b2Max << ", smallest b1 + b2 " << sumMin

@@ -43,8 +43,8 @@ inline double alpha() { return ps::testalpha::perTest(kStatisticalTests); }
 
 // The estimators of the lesson, by their names in the render command.
 inline const std::vector<std::string>& estimators() {
-    static const std::vector<std::string> names = {"direct-light", "direct-bsdf",  "direct-balance",
-                                                   "direct-power", "direct-max", "direct-onesample"};
+    static const std::vector<std::string> names = {"direct-light", "direct-bsdf", "direct-balance",
+                                                   "direct-power", "direct-max",  "direct-onesample"};
     return names;
 }
 
@@ -53,9 +53,9 @@ using ps::testrender::Render;
 using ps::testrender::render;
 
 // Every test render must be free of NaN and Inf samples.
-#define LESSON02_CHECK_FINITE(r)                                                                   \
-    CHECK_MESSAGE((r).stats.bad() == 0, (r).algo << ": expected 0 NaN and 0 Inf samples, got "      \
-                                                 << (r).stats.nan << " NaN and " << (r).stats.inf << " Inf")
+#define LESSON02_CHECK_FINITE(r)                                                                                \
+    CHECK_MESSAGE((r).stats.bad() == 0, (r).algo << ": expected 0 NaN and 0 Inf samples, got " << (r).stats.nan \
+                                                 << " NaN and " << (r).stats.inf << " Inf")
 
 // The stored reference images (tests/02-direct-mis/data, README section 4 says how they are made).
 inline ps::Image readData(const std::string& name) {

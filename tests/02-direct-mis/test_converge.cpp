@@ -11,7 +11,7 @@ using namespace lesson02;
 
 namespace {
 
-constexpr int kSpp = 8192;   // a few thousand samples: every estimator's pixel means are near normal here
+constexpr int kSpp = 8192;  // a few thousand samples: every estimator's pixel means are near normal here
 
 void checkConverges(const std::string& algo, uint64_t seed) {
     const ps::Scene scene = ps::loadScene(sourcePath("tests/02-direct-mis/data/plates-moderate.scene"));
@@ -19,9 +19,10 @@ void checkConverges(const std::string& algo, uint64_t seed) {
     const Render r = render(scene, algo, kSpp, ps::testseed::seed(seed));
     LESSON02_CHECK_FINITE(r);
     const ps::stats::ZTestResult z = ps::stats::zTestImages(r.mean, r.variance, ref, refVar, alpha());
-    CHECK_MESSAGE(z.passed, algo << " on the moderate plates (32 x 32, " << kSpp << " spp, seed " << seed
-                                 << "): expected the reference image within its noise (a = yours, b = the reference), got\n  "
-                                 << z.report);
+    CHECK_MESSAGE(z.passed,
+                  algo << " on the moderate plates (32 x 32, " << kSpp << " spp, seed " << seed
+                       << "): expected the reference image within its noise (a = yours, b = the reference), got\n  "
+                       << z.report);
 }
 
 }  // namespace

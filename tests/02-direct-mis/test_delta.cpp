@@ -47,14 +47,16 @@ TEST_CASE("direct: a point light's sample carries f I cos / d^2 (Eq. 2.4) [1 pt]
         const double got = d.value.g;
         if (!(std::abs(got - expected) <= 1e-4 * expected && d.delta) && ++failures <= 3)
             FAIL_CHECK("floor point " << str(sp.p) << " under the point light (1, 2, 1) of intensity 8, d^2 = " << d2
-                       << ": expected a delta sample of value (albedo / pi) I cos / d^2 = " << expected << ", got "
-                       << got << " (delta " << d.delta << ", ratio " << got / expected << "; d^2 = " << d2
-                       << " or d = " << std::sqrt(d2) << " times too bright: the 1/d^2 missing?)");
+                                      << ": expected a delta sample of value (albedo / pi) I cos / d^2 = " << expected
+                                      << ", got " << got << " (delta " << d.delta << ", ratio " << got / expected
+                                      << "; d^2 = " << d2 << " or d = " << std::sqrt(d2)
+                                      << " times too bright: the 1/d^2 missing?)");
     }
     CHECK_MESSAGE(failures == 0, "expected every point-light sample to be right, got " << failures << " wrong");
 }
 
-TEST_CASE("direct: a BSDF sample off a mirror has light pdf 0 and MIS weight 1, so MIS sees the lamp's full radiance in it (Eq. 2.12) [1 pt]") {
+TEST_CASE(
+    "direct: a BSDF sample off a mirror has light pdf 0 and MIS weight 1, so MIS sees the lamp's full radiance in it (Eq. 2.12) [1 pt]") {
     const ps::Scene scene = ps::parseScene(kMirrorScene, "mirror floor (test_delta.cpp)");
     ps::Ray ray(scene.camera.position(), glm::normalize(Vec3(0.0f) - scene.camera.position()));
     ps::SurfacePoint sp;
@@ -71,14 +73,16 @@ TEST_CASE("direct: a BSDF sample off a mirror has light pdf 0 and MIS weight 1, 
         u.uChoice = rng.uniform();
         const ps::DirectSample b = ps::sampleDirectBSDF(scene, sp, wo, u.uBSDF, u.uLobe);
         const Color multi = ps::directMultiSample(scene, sp, wo, ps::Heuristic::Power, u);
-        const bool ok = b.delta && b.pdfLight == 0.0f && std::abs(sum(b.value) - 3.0) <= 1e-4 &&
-                        std::abs(sum(multi) - 3.0) <= 1e-4;
+        const bool ok =
+            b.delta && b.pdfLight == 0.0f && std::abs(sum(b.value) - 3.0) <= 1e-4 && std::abs(sum(multi) - 3.0) <= 1e-4;
         if (!ok && ++failures <= 3)
-            FAIL_CHECK("the mirror floor at " << str(sp.p) << " reflects the lamp of radiance 1: expected the BSDF sample "
-                       << "to be delta with pdfLight 0 and value (1, 1, 1), and directMultiSample (power) to be (1, 1, 1) "
-                       << "(weight 1); got delta " << b.delta << ", pdfLight " << b.pdfLight << ", value "
-                       << str(b.value) << ", directMultiSample " << str(multi) << " (ratio " << sum(multi) / 3.0
-                       << "; below 1: the delta sample got a light pdf, Eq. 2.12?)");
+            FAIL_CHECK(
+                "the mirror floor at "
+                << str(sp.p) << " reflects the lamp of radiance 1: expected the BSDF sample "
+                << "to be delta with pdfLight 0 and value (1, 1, 1), and directMultiSample (power) to be (1, 1, 1) "
+                << "(weight 1); got delta " << b.delta << ", pdfLight " << b.pdfLight << ", value " << str(b.value)
+                << ", directMultiSample " << str(multi) << " (ratio " << sum(multi) / 3.0
+                << "; below 1: the delta sample got a light pdf, Eq. 2.12?)");
     }
     CHECK_MESSAGE(failures == 0, "expected every BSDF sample off the mirror to be right, got " << failures << " wrong");
 }

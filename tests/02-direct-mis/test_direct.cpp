@@ -71,7 +71,10 @@ Samples sampleLi(const ps::Scene& scene, const std::string& algo, const Vec3& x,
     for (int i = 0; i < n; ++i) {
         ps::Rng rng = ps::taskRng(ps::testseed::seed(seed), 0, uint32_t(i));
         const Color c = pixel->Li(scene, ray, rng);
-        if (!ps::isFinite(c)) { ++s.bad; continue; }
+        if (!ps::isFinite(c)) {
+            ++s.bad;
+            continue;
+        }
         s.w.add(sum(c));
     }
     return s;
@@ -84,7 +87,8 @@ void checkLambert(const std::string& algo, int n, uint64_t seed) {
     for (const Vec3& x : {Vec3(0.2f, 0.0f, 0.1f), Vec3(1.5f, 0.0f, 2.5f)}) {
         const double expected = expectedRadianceSum(glm::dvec3(x));
         const Samples s = sampleLi(scene, algo, x, n, seed++);
-        CHECK_MESSAGE(s.bad == 0, algo << " at floor point " << str(x) << ": expected 0 NaN or Inf samples, got " << s.bad);
+        CHECK_MESSAGE(s.bad == 0,
+                      algo << " at floor point " << str(x) << ": expected 0 NaN or Inf samples, got " << s.bad);
         const ps::stats::TTestResult t = ps::stats::tTest(s.w, expected, alpha(), 0.005);
         CHECK_MESSAGE(t.passed, algo << ", radiance (R + G + B) leaving the floor point " << str(x)
                                      << " under two polygonal lights, " << n << " samples: expected (albedo / pi) E = "
@@ -99,8 +103,9 @@ TEST_CASE("direct: area pdfs become solid-angle pdfs (Eq. 2.3) [1 pt]") {
     struct Case {
         float pdfA, dist, cosAtLight, expected;
     };
-    for (const Case& c : {Case{2.0f, 3.0f, 0.5f, 36.0f}, Case{0.25f, 10.0f, 1.0f, 25.0f}, Case{1e-4f, 1e3f, 0.1f, 1000.0f},
-                          Case{1.0f, 1.0f, 0.0f, 0.0f}, Case{1.0f, 2.0f, -0.5f, 0.0f}}) {
+    for (const Case& c :
+         {Case{2.0f, 3.0f, 0.5f, 36.0f}, Case{0.25f, 10.0f, 1.0f, 25.0f}, Case{1e-4f, 1e3f, 0.1f, 1000.0f},
+          Case{1.0f, 1.0f, 0.0f, 0.0f}, Case{1.0f, 2.0f, -0.5f, 0.0f}}) {
         const float got = ps::pdfAToSolidAngle(c.pdfA, c.dist, c.cosAtLight);
         CHECK_MESSAGE(std::abs(got - c.expected) <= 1e-5f * c.expected,
                       "pdfAToSolidAngle(pdfA " << c.pdfA << ", dist " << c.dist << ", cos " << c.cosAtLight
@@ -110,16 +115,16 @@ TEST_CASE("direct: area pdfs become solid-angle pdfs (Eq. 2.3) [1 pt]") {
     const ps::Scene scene = ps::parseScene(kPolygonScene, "polygon-lights (test_direct.cpp)");
     const Vec3 ref(0.2f, 0.0f, 0.1f);
     for (int l = 0; l < 2; ++l) {
-        const Vec3 p = l == 0 ? Vec3(0.1f, 2.25f, 0.15f) : Vec3(2.0f, 1.5f, 1.1666667f);   // inside each light
+        const Vec3 p = l == 0 ? Vec3(0.1f, 2.25f, 0.15f) : Vec3(2.0f, 1.5f, 1.1666667f);  // inside each light
         const Vec3 n = ps::Triangle{Vec3(kLights[l].v[0]), Vec3(kLights[l].v[1]), Vec3(kLights[l].v[2])}.normal();
         const double d = glm::length(glm::dvec3(ref - p)), cosL = glm::dot(glm::dvec3(n), glm::dvec3(ref - p)) / d;
         const double expected = scene.lightSelectionProb(l) / scene.lights[l].area * d * d / cosL;
         const float got = ps::pdfLightDirection(scene, l, ref, p, n);
         CHECK_MESSAGE(std::abs(got - expected) <= 1e-4 * expected,
                       "pdfLightDirection(light " << l << ", from " << str(ref) << " to " << str(p) << "): expected "
-                                                 << "P(light) / area * d^2 / cos = " << scene.lightSelectionProb(l) << " / "
-                                                 << scene.lights[l].area << " * " << d * d << " / " << cosL << " = "
-                                                 << expected << ", got " << got);
+                                                 << "P(light) / area * d^2 / cos = " << scene.lightSelectionProb(l)
+                                                 << " / " << scene.lights[l].area << " * " << d * d << " / " << cosL
+                                                 << " = " << expected << ", got " << got);
     }
 }
 
@@ -139,8 +144,9 @@ TEST_CASE("direct: light and BSDF samples carry f Le cos / pdf and the pdfs of b
     int failures = 0, checked[2] = {0, 0};
     for (int technique = 0; technique < 2; ++technique)
         for (int i = 0; i < 2000; ++i) {
-            const ps::DirectSample d = technique == 0 ? ps::sampleDirectLight(scene, sp, wo, rng.uniform(), rng.uniform2())
-                                                      : ps::sampleDirectBSDF(scene, sp, wo, rng.uniform2(), rng.uniform());
+            const ps::DirectSample d = technique == 0
+                                           ? ps::sampleDirectLight(scene, sp, wo, rng.uniform(), rng.uniform2())
+                                           : ps::sampleDirectBSDF(scene, sp, wo, rng.uniform2(), rng.uniform());
             ps::Ray toLight = scene.spawnRay(sp, d.wi);
             ps::SurfacePoint y;
             const bool hitsLight = glm::length(d.wi) > 0.5f && scene.intersect(toLight, y) && y.light >= 0;
@@ -155,22 +161,25 @@ TEST_CASE("direct: light and BSDF samples carry f Le cos / pdf and the pdfs of b
             const double cosY = -glm::dot(glm::dvec3(y.n), glm::dvec3(d.wi)), cosX = std::abs(d.wi.y);
             const double pdfLight = scene.lightSelectionProb(y.light) / scene.lights[y.light].area * dist * dist / cosY;
             const double pdfBSDF = cosX / 3.14159265358979323846;
-            const glm::dvec3 value = glm::dvec3(kAlbedo) / 3.14159265358979323846 * glm::dvec3(scene.lights[y.light].Le) *
-                                     cosX / (technique == 0 ? pdfLight : pdfBSDF);
+            const glm::dvec3 value = glm::dvec3(kAlbedo) / 3.14159265358979323846 *
+                                     glm::dvec3(scene.lights[y.light].Le) * cosX /
+                                     (technique == 0 ? pdfLight : pdfBSDF);
             auto close = [](double a, double b) { return std::abs(a - b) <= 2e-3 * std::abs(b) + 1e-12; };
             const bool ok = close(d.pdfLight, pdfLight) && close(d.pdfBSDF, pdfBSDF) && close(d.value.r, value.r) &&
                             close(d.value.g, value.g) && close(d.value.b, value.b) && !d.delta;
             if (!ok && ++failures <= 3)
                 FAIL_CHECK((technique == 0 ? "light" : "BSDF")
-                           << " sample from " << str(sp.p) << " towards " << str(d.wi) << " (light " << y.light << " at "
-                           << str(y.p) << "):\n  expected pdfLight " << pdfLight << ", pdfBSDF " << pdfBSDF << ", value ("
-                           << value.r << ", " << value.g << ", " << value.b << "), delta 0\n  got      pdfLight "
-                           << d.pdfLight << ", pdfBSDF " << d.pdfBSDF << ", value " << str(d.value) << ", delta " << d.delta);
+                           << " sample from " << str(sp.p) << " towards " << str(d.wi) << " (light " << y.light
+                           << " at " << str(y.p) << "):\n  expected pdfLight " << pdfLight << ", pdfBSDF " << pdfBSDF
+                           << ", value (" << value.r << ", " << value.g << ", " << value.b
+                           << "), delta 0\n  got      pdfLight " << d.pdfLight << ", pdfBSDF " << d.pdfBSDF
+                           << ", value " << str(d.value) << ", delta " << d.delta);
         }
-    CHECK_MESSAGE((checked[0] > 1000 && checked[1] > 50),
-                  "expected most light samples (got " << checked[0] << " of 2000) and some BSDF samples (got " << checked[1]
-                                                      << " of 2000) to reach a light");
-    CHECK_MESSAGE(failures == 0, "expected every sample that reaches a light to be right, got " << failures << " wrong");
+    CHECK_MESSAGE((checked[0] > 1000 && checked[1] > 50), "expected most light samples (got "
+                                                              << checked[0] << " of 2000) and some BSDF samples (got "
+                                                              << checked[1] << " of 2000) to reach a light");
+    CHECK_MESSAGE(failures == 0,
+                  "expected every sample that reaches a light to be right, got " << failures << " wrong");
 }
 
 TEST_CASE("direct: light sampling gives Lambert's irradiance from polygonal lights (t-test) [2 pts]") {
@@ -191,7 +200,8 @@ TEST_CASE("direct: one-sample MIS gives Lambert's irradiance from polygonal ligh
     checkLambert("direct-onesample", 120000, 150);
 }
 
-TEST_CASE("direct: multi-sample and one-sample MIS weight each sample by the heuristic they are given (Eq. 2.6, 2.11) [1 pt]") {
+TEST_CASE(
+    "direct: multi-sample and one-sample MIS weight each sample by the heuristic they are given (Eq. 2.6, 2.11) [1 pt]") {
     // The two combined estimators, called with the same random numbers as your own light and
     // BSDF samples, must return exactly what Eq. 2.6 and 2.11 make of those samples with YOUR
     // misWeight and the heuristic passed in (the unbiasedness tests above cannot tell the
@@ -223,8 +233,9 @@ TEST_CASE("direct: multi-sample and one-sample MIS weight each sample by the heu
                     const ps::Heuristic H = heuristics[h];
                     const Color multi = ps::misWeight(H, 1.0f, a.pdfLight, 1.0f, a.pdfBSDF) * a.value +
                                         ps::misWeight(H, 1.0f, b.pdfBSDF, 1.0f, b.pdfLight) * b.value;
-                    const Color one = u.uChoice < c ? a.value * (ps::misWeight(H, c, a.pdfLight, 1.0f - c, a.pdfBSDF) / c)
-                                                    : b.value * (ps::misWeight(H, 1.0f - c, b.pdfBSDF, c, b.pdfLight) / (1.0f - c));
+                    const Color one =
+                        u.uChoice < c ? a.value * (ps::misWeight(H, c, a.pdfLight, 1.0f - c, a.pdfBSDF) / c)
+                                      : b.value * (ps::misWeight(H, 1.0f - c, b.pdfBSDF, c, b.pdfLight) / (1.0f - c));
                     const Color gotMulti = ps::directMultiSample(scene, sp, wo, H, u);
                     const Color gotOne = ps::directOneSample(scene, sp, wo, H, u);
                     auto close = [](const Color& p, const Color& q) {
@@ -234,16 +245,21 @@ TEST_CASE("direct: multi-sample and one-sample MIS weight each sample by the heu
                     };
                     if (!close(gotMulti, multi) && ++failures <= 3)
                         FAIL_CHECK("directMultiSample(" << names[h] << ") at " << str(sp.p) << ": expected w_light "
-                                   << "* light sample + w_bsdf * BSDF sample = " << str(multi) << " (light sample "
-                                   << str(a.value) << ", pdfs " << a.pdfLight << " / " << a.pdfBSDF << "; BSDF sample "
-                                   << str(b.value) << ", pdfs " << b.pdfBSDF << " / " << b.pdfLight << "), got " << str(gotMulti));
+                                                        << "* light sample + w_bsdf * BSDF sample = " << str(multi)
+                                                        << " (light sample " << str(a.value) << ", pdfs " << a.pdfLight
+                                                        << " / " << a.pdfBSDF << "; BSDF sample " << str(b.value)
+                                                        << ", pdfs " << b.pdfBSDF << " / " << b.pdfLight << "), got "
+                                                        << str(gotMulti));
                     if (!close(gotOne, one) && ++failures <= 3)
-                        FAIL_CHECK("directOneSample(" << names[h] << ") at " << str(sp.p) << " with uChoice " << u.uChoice
-                                   << ": expected " << (u.uChoice < c ? "w_light * light sample / c" : "w_bsdf * BSDF sample / (1 - c)")
+                        FAIL_CHECK("directOneSample("
+                                   << names[h] << ") at " << str(sp.p) << " with uChoice " << u.uChoice << ": expected "
+                                   << (u.uChoice < c ? "w_light * light sample / c" : "w_bsdf * BSDF sample / (1 - c)")
                                    << " = " << str(one) << " (weights with n = c, 1 - c), got " << str(gotOne));
                 }
             }
         }
-    CHECK_MESSAGE(both >= 100, "expected at least 100 cases where both the light and the BSDF sample reach a light, got " << both);
-    CHECK_MESSAGE(failures == 0, "expected every combined estimate to be the weighted sum of its samples, got " << failures << " wrong");
+    CHECK_MESSAGE(both >= 100,
+                  "expected at least 100 cases where both the light and the BSDF sample reach a light, got " << both);
+    CHECK_MESSAGE(failures == 0, "expected every combined estimate to be the weighted sum of its samples, got "
+                                     << failures << " wrong");
 }

@@ -16,10 +16,10 @@ namespace {
 double sphereSolidAngleNumeric(double r, double d, int m) {
     const double pi = 3.14159265358979323846, betaMax = std::acos(r / d), h = betaMax / m;
     auto g = [&](double b) {
-        const double yx = r * std::sin(b), yz = d - r * std::cos(b);      // y (phi = 0)
-        const double nx = std::sin(b), nz = -std::cos(b);                   // normal at y
+        const double yx = r * std::sin(b), yz = d - r * std::cos(b);  // y (phi = 0)
+        const double nx = std::sin(b), nz = -std::cos(b);             // normal at y
         const double dist2 = yx * yx + yz * yz, dist = std::sqrt(dist2);
-        const double cosY = std::max(0.0, -(nx * yx + nz * yz) / dist);      // towards the viewer
+        const double cosY = std::max(0.0, -(nx * yx + nz * yz) / dist);  // towards the viewer
         return cosY / dist2 * r * r * std::sin(b);
     };
     double sum = g(0.0) + g(betaMax);
@@ -35,9 +35,13 @@ TEST_CASE("exercise: the solid angle of a sphere, from close by to far away (Eq.
         const double expected = sphereSolidAngleNumeric(c[0], c[1], 20000);
         const double got = ps::sphereSolidAngle(c[0], c[1]);
         CHECK_MESSAGE(std::abs(got / expected - 1.0) < 1e-6,
-                      "sphereSolidAngle(radius " << c[0] << ", distance " << c[1] << "): expected " << expected
-                      << " sr (numerical integral over the visible cap), got " << got << " (ratio " << got / expected
-                      << "; far away it must approach pi r^2 / d^2 = " << 3.14159265358979 * c[0] * c[0] / (c[1] * c[1])
-                      << (got > 0.0 && c[0] / c[1] < 1e-4 ? "; off only for small r / d: cancellation in 1 - cos theta_max)" : ")"));
+                      "sphereSolidAngle(radius "
+                          << c[0] << ", distance " << c[1] << "): expected " << expected
+                          << " sr (numerical integral over the visible cap), got " << got << " (ratio "
+                          << got / expected << "; far away it must approach pi r^2 / d^2 = "
+                          << 3.14159265358979 * c[0] * c[0] / (c[1] * c[1])
+                          << (got > 0.0 && c[0] / c[1] < 1e-4
+                                  ? "; off only for small r / d: cancellation in 1 - cos theta_max)"
+                                  : ")"));
     }
 }

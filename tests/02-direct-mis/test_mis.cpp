@@ -73,7 +73,8 @@ TEST_CASE("mis: the weights of all techniques sum to 1 for any sample [2 pts]") 
             }
             ok = ok && std::abs(sum - 1.0) <= 1e-5;
             if (!ok && ++failures <= 3)
-                FAIL_CHECK(name(h) << " heuristic, techniques " << describe(t) << ":\n  expected weights in [0, 1] (0 where the pdf is 0) summing to 1, got "
+                FAIL_CHECK(name(h) << " heuristic, techniques " << describe(t)
+                                   << ":\n  expected weights in [0, 1] (0 where the pdf is 0) summing to 1, got "
                                    << got.str() << " (sum " << sum << ")");
         }
         CHECK_MESSAGE(failures == 0, name(h) << " heuristic: expected the weights of all " << sets
@@ -84,7 +85,7 @@ TEST_CASE("mis: the weights of all techniques sum to 1 for any sample [2 pts]") 
 TEST_CASE("mis: the weights are the balance, power and maximum heuristics (Eq. 2.7-2.9) [2 pts]") {
     // Fixed cases first (easy to check by hand), then 1000 random sets per heuristic with pdfs
     // in [1e-3, 1e3], against the formulas in double (relative error <= 1e-5).
-    const std::vector<Technique> two = {{1.0f, 3.0f}, {2.0f, 1.0f}};   // q = 3 and 2
+    const std::vector<Technique> two = {{1.0f, 3.0f}, {2.0f, 1.0f}};  // q = 3 and 2
     CHECK_MESSAGE(std::abs(ps::misWeight(Heuristic::Balance, 0, two.data(), 2) - 0.6f) < 1e-6f,
                   "balance, techniques " << describe(two) << ": expected w_0 = 3 / (3 + 2) = 0.6, got "
                                          << ps::misWeight(Heuristic::Balance, 0, two.data(), 2));
@@ -94,12 +95,13 @@ TEST_CASE("mis: the weights are the balance, power and maximum heuristics (Eq. 2
     CHECK_MESSAGE(ps::misWeight(Heuristic::Maximum, 0, two.data(), 2) == 1.0f,
                   "maximum, techniques " << describe(two) << ": expected w_0 = 1 (q_0 = 3 is the largest), got "
                                          << ps::misWeight(Heuristic::Maximum, 0, two.data(), 2));
-    const std::vector<Technique> tie = {{1.0f, 2.0f}, {2.0f, 1.0f}, {1.0f, 0.5f}};   // q = 2, 2, 0.5
+    const std::vector<Technique> tie = {{1.0f, 2.0f}, {2.0f, 1.0f}, {1.0f, 0.5f}};  // q = 2, 2, 0.5
     CHECK_MESSAGE((ps::misWeight(Heuristic::Maximum, 0, tie.data(), 3) == 1.0f &&
                    ps::misWeight(Heuristic::Maximum, 1, tie.data(), 3) == 0.0f),
                   "maximum, techniques " << describe(tie) << " (q_0 = q_1 = 2): expected w = 1, 0, 0 (the first "
-                                         << "of equals wins), got " << ps::misWeight(Heuristic::Maximum, 0, tie.data(), 3)
-                                         << ", " << ps::misWeight(Heuristic::Maximum, 1, tie.data(), 3));
+                                         << "of equals wins), got "
+                                         << ps::misWeight(Heuristic::Maximum, 0, tie.data(), 3) << ", "
+                                         << ps::misWeight(Heuristic::Maximum, 1, tie.data(), 3));
     ps::Rng rng(ps::testseed::seed(22));
     for (Heuristic h : kHeuristics) {
         int failures = 0, checks = 0;
@@ -158,20 +160,22 @@ TEST_CASE("mis: a point light's next-event sample has weight exactly 1 (Eq. 2.12
                 FAIL_CHECK(name(h) << " heuristic, techniques (n " << n << ", pdf " << p
                                    << ") and (n 0.5, pdf 0): expected weight exactly 1, got " << w);
         }
-    CHECK_MESSAGE(wrong == 0, "expected weight exactly 1 whenever the other technique's pdf is 0, got " << wrong << " wrong");
+    CHECK_MESSAGE(wrong == 0,
+                  "expected weight exactly 1 whenever the other technique's pdf is 0, got " << wrong << " wrong");
 
     // 2. Light samples of a point light are delta samples: pdfBSDF = 0, a positive value.
     const ps::Scene scene = loadSceneAt("scenes/cornell-point-light.scene", 16, 16);
-    const Vec3 eye(278, 273, -800), floor(278, 0, 30);   // the floor, in front of the blocks
+    const Vec3 eye(278, 273, -800), floor(278, 0, 30);  // the floor, in front of the blocks
     ps::Ray ray(eye, glm::normalize(floor - eye));
     ps::SurfacePoint sp;
     REQUIRE(scene.intersect(ray, sp));
     const ps::DirectSample d = ps::sampleDirectLight(scene, sp, -ray.d, 0.5f, Vec2(0.5f));
-    CHECK_MESSAGE((d.delta && d.pdfBSDF == 0.0f && d.pdfLight == 1.0f && sum(d.value) > 0.0),
-                  "a light sample of the Cornell box's point light from the floor point " << str(sp.p)
-                      << ": expected delta = true, pdfBSDF = 0, pdfLight = 1 (the only light) and a positive value, got delta = "
-                      << d.delta << ", pdfBSDF = " << d.pdfBSDF << ", pdfLight = " << d.pdfLight << ", value "
-                      << str(d.value));
+    CHECK_MESSAGE(
+        (d.delta && d.pdfBSDF == 0.0f && d.pdfLight == 1.0f && sum(d.value) > 0.0),
+        "a light sample of the Cornell box's point light from the floor point "
+            << str(sp.p)
+            << ": expected delta = true, pdfBSDF = 0, pdfLight = 1 (the only light) and a positive value, got delta = "
+            << d.delta << ", pdfBSDF = " << d.pdfBSDF << ", pdfLight = " << d.pdfLight << ", value " << str(d.value));
 
     // 3. So with a point light as the only light, every MIS estimator gives exactly the
     //    light-sampling image (the BSDF samples find no emitter; all draw the same numbers).
@@ -186,12 +190,12 @@ TEST_CASE("mis: a point light's next-event sample has weight exactly 1 (Eq. 2.12
         int differ = 0, first = -1;
         for (size_t i = 0; i < mis.mean.pixels.size(); ++i)
             if (mis.mean.pixels[i] != light.mean.pixels[i] && differ++ == 0) first = int(i);
-        CHECK_MESSAGE(differ == 0, algo << " on the point-lit Cornell box (16 x 16, 4 spp, seed 24): expected exactly "
-                                        << "the direct-light image (next-event weight 1, BSDF samples find no "
-                                        << "emitter), got " << differ << " different pixels; the first, ("
-                                        << first % 16 << ", " << first / 16 << "): "
-                                        << (first >= 0 ? str(mis.mean.pixels[first]) + " instead of " +
-                                                             str(light.mean.pixels[first])
-                                                       : std::string()));
+        CHECK_MESSAGE(differ == 0,
+                      algo << " on the point-lit Cornell box (16 x 16, 4 spp, seed 24): expected exactly "
+                           << "the direct-light image (next-event weight 1, BSDF samples find no "
+                           << "emitter), got " << differ << " different pixels; the first, (" << first % 16 << ", "
+                           << first / 16 << "): "
+                           << (first >= 0 ? str(mis.mean.pixels[first]) + " instead of " + str(light.mean.pixels[first])
+                                          : std::string()));
     }
 }

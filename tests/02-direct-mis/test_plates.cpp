@@ -30,15 +30,18 @@ TEST_CASE("direct: on Veach's plates the power heuristic beats the better single
     const Render power = render(scene, "direct-power", kSpp, ps::testseed::seed(41));
     for (const Render* r : {&light, &bsdf, &power}) LESSON02_CHECK_FINITE(*r);
     const ps::Image black(ref.width, ref.height);
-    const std::string plates[] = {"back plate (exponent 10000)", "second plate (exponent 1000)", "third plate (exponent 100)",
-                            "front plate (exponent 10)"};
+    const std::string plates[] = {"back plate (exponent 10000)", "second plate (exponent 1000)",
+                                  "third plate (exponent 100)", "front plate (exponent 10)"};
     for (int p = 0; p < 4; ++p) {
         const double eL = plateRelMse(light.mean, ref, mask, p), eB = plateRelMse(bsdf.mean, ref, mask, p);
         const double eP = plateRelMse(power.mean, ref, mask, p), eBlack = plateRelMse(black, ref, mask, p);
         // A black plate (nothing estimated) has relMSE eBlack; an estimate must do far better.
-        CHECK_MESSAGE((eP <= 1.1 * std::min(eL, eB) && eP < 0.25 * eBlack),
-                      plates[p] << ", " << kSpp << " spp (seed " << ps::testseed::seed(41) << "), relMSE against the reference: expected "
-                                << "the power heuristic's <= 1.1 min(light sampling, BSDF sampling) and < 1/4 of a black image's, got power "
-                                << eP << ", light " << eL << ", BSDF " << eB << ", black " << eBlack);
+        CHECK_MESSAGE(
+            (eP <= 1.1 * std::min(eL, eB) && eP < 0.25 * eBlack),
+            plates[p]
+                << ", " << kSpp << " spp (seed " << ps::testseed::seed(41)
+                << "), relMSE against the reference: expected "
+                << "the power heuristic's <= 1.1 min(light sampling, BSDF sampling) and < 1/4 of a black image's, got power "
+                << eP << ", light " << eL << ", BSDF " << eB << ", black " << eBlack);
     }
 }

@@ -47,8 +47,9 @@ struct Estimator {
     ps::Color (*Li)(const ps::Scene&, const ps::Ray&, ps::Rng&, int);
 };
 inline const std::vector<Estimator>& estimators() {
-    static const std::vector<Estimator> e = {
-        {"pt-bsdf (LiRandomWalk)", ps::LiRandomWalk}, {"pt-nee (LiNextEvent)", ps::LiNextEvent}, {"pt (LiMIS)", ps::LiMIS}};
+    static const std::vector<Estimator> e = {{"pt-bsdf (LiRandomWalk)", ps::LiRandomWalk},
+                                             {"pt-nee (LiNextEvent)", ps::LiNextEvent},
+                                             {"pt (LiMIS)", ps::LiMIS}};
     return e;
 }
 
@@ -73,7 +74,7 @@ using ps::testrender::sum;
 enum class Enclosure { Cube, Sphere };
 inline ps::Scene furnace(Enclosure shape, float albedo, float Le) {
     const std::string path = sourcePath(shape == Enclosure::Cube ? "scenes/furnace.scene"
-                                                                  : "tests/03-path-tracing/data/furnace-sphere.scene");
+                                                                 : "tests/03-path-tracing/data/furnace-sphere.scene");
     std::string s = std::regex_replace(readText(path), std::regex("albedo 0\\.5 0\\.5 0\\.5"),
                                        "albedo " + num(albedo) + " " + num(albedo) + " " + num(albedo));
     s = std::regex_replace(s, std::regex("emission 1 1 1"), "emission " + num(Le) + " " + num(Le) + " " + num(Le));
@@ -115,7 +116,10 @@ inline Samples sampleLi(const ps::Scene& scene, const Estimator& e, int maxDepth
         ps::Rng rng = ps::taskRng(ps::testseed::seed(seed), 0, uint32_t(i));
         const Vec3 d = ps::sampleUniformSphere(rng.uniform2());
         const Color c = e.Li(scene, ps::Ray(scene.camera.position(), d), rng, maxDepth);
-        if (!ps::isFinite(c)) { ++s.bad; continue; }
+        if (!ps::isFinite(c)) {
+            ++s.bad;
+            continue;
+        }
         const double v = sum(c);
         s.w.add(v);
         s.min = std::min(s.min, v);

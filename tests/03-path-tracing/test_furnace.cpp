@@ -16,7 +16,7 @@ namespace {
 struct FurnaceCase {
     float albedo;
     int D;
-    int samples;   // enough for the power check with every estimator
+    int samples;  // enough for the power check with every estimator
 };
 constexpr FurnaceCase kCases[] = {{0.5f, 5, 50000}, {0.8f, 10, 120000}, {0.99f, 30, 60000}};
 
@@ -26,7 +26,8 @@ void checkFurnace(const Estimator& e, uint64_t seed) {
         const ps::Scene scene = furnace(Enclosure::Sphere, c.albedo, 1.0f);
         const double expected = 3.0 * furnaceRadiance(c.albedo, 1.0, c.D);
         const Samples s = sampleLi(scene, e, c.D, samples, seed++);
-        CHECK_MESSAGE(s.bad == 0, e.name << ", closed furnace albedo " << c.albedo << ": expected 0 NaN or Inf samples, got " << s.bad);
+        CHECK_MESSAGE(s.bad == 0, e.name << ", closed furnace albedo " << c.albedo
+                                         << ": expected 0 NaN or Inf samples, got " << s.bad);
         const ps::stats::TTestResult t = ps::stats::tTest(s.w, expected, alpha(), 0.002);
         CHECK_MESSAGE(t.passed, e.name << ", sphere furnace (albedo " << c.albedo << ", Le 1, maxdepth " << c.D << "), "
                                        << samples << " rays: expected L = (1 - a^(D+1)) / (1 - a) = " << expected / 3.0
@@ -58,16 +59,19 @@ TEST_CASE("path tracing: closed furnace with albedo 1 terminates and returns (D 
     const double expected = 3.0 * (D + 1);
     const Samples walk = sampleLi(cube, estimators()[0], D, 2000, 341);
     CHECK_MESSAGE((walk.bad == 0 && walk.w.n == 2000 && walk.min == expected && walk.max == expected),
-                  "pt-bsdf (LiRandomWalk), closed cube furnace (albedo 1, Le 1, maxdepth " << D << "): expected every sample to be "
-                      << "exactly (D + 1) Le = " << D + 1 << " per channel (R + G + B = " << expected << "), got R + G + B from "
-                      << walk.min << " to " << walk.max << " (" << walk.bad << " NaN or Inf)");
+                  "pt-bsdf (LiRandomWalk), closed cube furnace (albedo 1, Le 1, maxdepth "
+                      << D << "): expected every sample to be "
+                      << "exactly (D + 1) Le = " << D + 1 << " per channel (R + G + B = " << expected
+                      << "), got R + G + B from " << walk.min << " to " << walk.max << " (" << walk.bad
+                      << " NaN or Inf)");
     uint64_t seed = 342;
     for (const Estimator& e : {estimators()[1], estimators()[2]}) {
         const Samples s = sampleLi(sphere, e, D, 20000, seed++);
         CHECK_MESSAGE(s.bad == 0, e.name << ", closed furnace albedo 1: expected 0 NaN or Inf samples, got " << s.bad);
         const ps::stats::TTestResult t = ps::stats::tTest(s.w, expected, alpha(), 0.002);
-        CHECK_MESSAGE(t.passed, e.name << ", sphere furnace (albedo 1, Le 1, maxdepth " << D << "): expected (D + 1) Le = "
-                                       << D + 1 << " per channel (R + G + B = " << expected << "), got R + G + B = " << t.mean
+        CHECK_MESSAGE(t.passed, e.name << ", sphere furnace (albedo 1, Le 1, maxdepth " << D
+                                       << "): expected (D + 1) Le = " << D + 1
+                                       << " per channel (R + G + B = " << expected << "), got R + G + B = " << t.mean
                                        << " +- " << t.stdError << "\n  " << t.report);
     }
 }
@@ -78,9 +82,10 @@ TEST_CASE("path tracing: closed furnace with albedo 0 returns exactly Le [1 pt]"
     const ps::Scene scene = furnace(Enclosure::Cube, 0.0f, 0.25f);
     for (const Estimator& e : estimators()) {
         const Samples s = sampleLi(scene, e, 8, 500, 351);
-        CHECK_MESSAGE((s.bad == 0 && s.w.n == 500 && s.min == 0.75 && s.max == 0.75),
-                      e.name << ", closed cube furnace (albedo 0, Le 0.25, maxdepth 8): expected every sample to be exactly Le "
-                             << "(R + G + B = 0.75), got R + G + B from " << s.min << " to " << s.max << " (" << s.bad
-                             << " NaN or Inf)");
+        CHECK_MESSAGE(
+            (s.bad == 0 && s.w.n == 500 && s.min == 0.75 && s.max == 0.75),
+            e.name << ", closed cube furnace (albedo 0, Le 0.25, maxdepth 8): expected every sample to be exactly Le "
+                   << "(R + G + B = 0.75), got R + G + B from " << s.min << " to " << s.max << " (" << s.bad
+                   << " NaN or Inf)");
     }
 }

@@ -21,7 +21,8 @@ quad -2 3 -5  2 3 -5  2 3 -1  -2 3 -1  emission 1 1 1
 
 }  // namespace
 
-TEST_CASE("path tracing: a lamp seen only in a mirror has its full radiance with every estimator (Eq. 3.6, 3.7) [1 pt]") {
+TEST_CASE(
+    "path tracing: a lamp seen only in a mirror has its full radiance with every estimator (Eq. 3.6, 3.7) [1 pt]") {
     const ps::Scene scene = ps::parseScene(kMirrorScene, "mirror floor (test_mirror.cpp)");
     const ps::Ray ray(scene.camera.position(), glm::normalize(Vec3(0.0f) - scene.camera.position()));
     for (const Estimator& e : estimators())
@@ -36,7 +37,8 @@ TEST_CASE("path tracing: a lamp seen only in a mirror has its full radiance with
                     ++wrong;
                 }
             }
-            CHECK_MESSAGE(wrong == 0, e.name << ", maxdepth " << maxDepth << ": the camera ray sees the lamp (radiance 1) "
+            CHECK_MESSAGE(wrong == 0, e.name << ", maxdepth " << maxDepth
+                                             << ": the camera ray sees the lamp (radiance 1) "
                                              << "in the mirror floor: expected (1, 1, 1) in every sample, got "
                                              << str(worst) << " in " << wrong << " of 16 (ratio " << sum(worst) / 3.0
                                              << "; 0: the emission after a delta bounce was not counted, the specular "

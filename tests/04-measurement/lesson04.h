@@ -73,7 +73,7 @@ inline ImagePlane planeOf(const ps::Camera& cam) {
     p.f = glm::dvec3(cam.forward());
     const glm::dvec3 dr(cam.generateRay(Vec2(float(cam.width()), 0.5f * cam.height())).d);
     const glm::dvec3 du(cam.generateRay(Vec2(0.5f * cam.width(), 0.0f)).d);
-    const glm::dvec3 rr = dr / glm::dot(dr, p.f) - p.f, uu = du / glm::dot(du, p.f) - p.f;   // on the plane z = 1
+    const glm::dvec3 rr = dr / glm::dot(dr, p.f) - p.f, uu = du / glm::dot(du, p.f) - p.f;  // on the plane z = 1
     p.tx = glm::length(rr);
     p.ty = glm::length(uu);
     p.r = rr / p.tx;

@@ -30,22 +30,27 @@ double triangleSolidAngle(D3 a, D3 b, D3 c) {
 
 TEST_CASE("exercise: W_e of a pinhole whose image plane is at distance f (Eq. 4.E1) [1 pt]") {
     struct Case {
-        double area, f, x, y;   // image area on the plane z = f, the patch's centre (x, y, f)
+        double area, f, x, y;  // image area on the plane z = f, the patch's centre (x, y, f)
     };
-    const Case cases[] = {{1.0, 1.0, 0.0, 0.0}, {0.5, 1.0, 0.3, -0.2}, {8.6e-4, 0.035, 0.012, 0.009},
-                          {1200.0, 20.0, -15.0, 11.0}, {4.0, 2.0, 1.9, 1.9}};
+    const Case cases[] = {{1.0, 1.0, 0.0, 0.0},
+                          {0.5, 1.0, 0.3, -0.2},
+                          {8.6e-4, 0.035, 0.012, 0.009},
+                          {1200.0, 20.0, -15.0, 11.0},
+                          {4.0, 2.0, 1.9, 1.9}};
     for (const Case& c : cases) {
-        const double h = 1e-4 * c.f;   // the patch's side
+        const double h = 1e-4 * c.f;  // the patch's side
         const D3 p00{c.x - h / 2, c.y - h / 2, c.f}, p10{c.x + h / 2, c.y - h / 2, c.f};
         const D3 p11{c.x + h / 2, c.y + h / 2, c.f}, p01{c.x - h / 2, c.y + h / 2, c.f};
         const double omega = triangleSolidAngle(p00, p10, p11) + triangleSolidAngle(p00, p11, p01);
         const double cosTheta = c.f / std::sqrt(c.x * c.x + c.y * c.y + c.f * c.f);
-        const double expected = (h * h / c.area) / (omega * cosTheta);   // W_e cos(theta) omega = h^2 / A
+        const double expected = (h * h / c.area) / (omega * cosTheta);  // W_e cos(theta) omega = h^2 / A
         const double got = ps::pinholeImportance(c.area, c.f, cosTheta);
-        CHECK_MESSAGE(std::abs(got / expected - 1.0) < 1e-5,
-                      "pinholeImportance(A " << c.area << ", f " << c.f << ", cos theta " << cosTheta << "): expected "
-                      << expected << " (a patch of the image plane of area a must get W_e cos theta d omega = a / A), got "
-                      << got << " (ratio " << got / expected << "; a ratio of 1/f^2 = " << 1.0 / (c.f * c.f)
-                      << " is the plane at distance 1; a power of cos theta off shows as a ratio that changes with theta)");
+        CHECK_MESSAGE(
+            std::abs(got / expected - 1.0) < 1e-5,
+            "pinholeImportance(A "
+                << c.area << ", f " << c.f << ", cos theta " << cosTheta << "): expected " << expected
+                << " (a patch of the image plane of area a must get W_e cos theta d omega = a / A), got " << got
+                << " (ratio " << got / expected << "; a ratio of 1/f^2 = " << 1.0 / (c.f * c.f)
+                << " is the plane at distance 1; a power of cos theta off shows as a ratio that changes with theta)");
     }
 }

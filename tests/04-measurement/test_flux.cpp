@@ -27,7 +27,10 @@ FluxResult measureFlux(const ps::Scene& scene, int n, uint64_t seed) {
     for (int i = 0; i < n; ++i) {
         ps::Rng rng = ps::taskRng(ps::testseed::seed(seed), 0, uint32_t(i));
         const Color c = ps::fluxParticle(scene, S, rng);
-        if (!ps::isFinite(c)) { ++r.bad; continue; }
+        if (!ps::isFinite(c)) {
+            ++r.bad;
+            continue;
+        }
         r.w.add(sum(c));
     }
     return r;
@@ -42,7 +45,8 @@ void checkFlux(const std::string& what, const FluxResult& r, double expected, in
 
 }  // namespace
 
-TEST_CASE("measurement: flux through a patch under a point light equals I times its solid angle (Eq. 4.14, t-test) [2 pts]") {
+TEST_CASE(
+    "measurement: flux through a patch under a point light equals I times its solid angle (Eq. 4.14, t-test) [2 pts]") {
     // A point light of intensity I = (2, 3, 4) W/sr at height h = 1 above the rectangle
     // [-0.3, 0.7] x [-0.2, 0.5] of the plane y = 0 (off centre). The flux through it is I Omega,
     // Omega the solid angle the rectangle subtends at the light: with F(x, z) =
@@ -51,17 +55,20 @@ TEST_CASE("measurement: flux through a patch under a point light equals I times 
     const std::string text = std::string("camera eye 0 3 -4  target 0 0 0  fov 40  resolution 4 4\n") +
                              "material sensor diffuse albedo 0 0 0\n"
                              "quad -0.3 0 -0.2  -0.3 0 0.5  0.7 0 0.5  0.7 0 -0.2  material sensor\n"
-                             "pointlight position 0 1 0  intensity 2 3 4\n" + kDecoy;
+                             "pointlight position 0 1 0  intensity 2 3 4\n" +
+                             kDecoy;
     const ps::Scene scene = ps::parseScene(text, "point light over a patch (test_flux.cpp)");
     const double h = 1.0, x0 = -0.3, x1 = 0.7, z0 = -0.2, z1 = 0.5;
     const auto F = [&](double x, double z) { return std::atan(x * z / (h * std::sqrt(x * x + z * z + h * h))); };
     const double omega = F(x1, z1) - F(x0, z1) - F(x1, z0) + F(x0, z0);
     const int n = 2000000;
-    checkFlux("point light I = (2, 3, 4) at height 1 over the patch [-0.3, 0.7] x [-0.2, 0.5] (solid angle " + num(omega) + " sr)",
+    checkFlux("point light I = (2, 3, 4) at height 1 over the patch [-0.3, 0.7] x [-0.2, 0.5] (solid angle " +
+                  num(omega) + " sr)",
               measureFlux(scene, n, 4201), (2.0 + 3.0 + 4.0) * omega, n);
 }
 
-TEST_CASE("measurement: flux through a patch under a square area light equals pi A Le times the form factor (Eq. 4.15, t-test) [2 pts]") {
+TEST_CASE(
+    "measurement: flux through a patch under a square area light equals pi A Le times the form factor (Eq. 4.15, t-test) [2 pts]") {
     // A 1 x 1 square light of radiance Le = (1, 2, 3) facing down at height c = 1, directly over
     // a 1 x 1 patch. The flux the patch receives is pi A Le F, F the form factor of two directly
     // opposed parallel a x b rectangles at distance c (X = a/c, Y = b/c):
@@ -71,13 +78,15 @@ TEST_CASE("measurement: flux through a patch under a square area light equals pi
     const std::string text = std::string("camera eye 0 3 -4  target 0 0 0  fov 40  resolution 4 4\n") +
                              "material sensor diffuse albedo 0 0 0\n"
                              "quad -0.5 0 -0.5  -0.5 0 0.5  0.5 0 0.5  0.5 0 -0.5  material sensor\n"
-                             "quad -0.5 1 -0.5  0.5 1 -0.5  0.5 1 0.5  -0.5 1 0.5  emission 1 2 3\n" + kDecoy;
+                             "quad -0.5 1 -0.5  0.5 1 -0.5  0.5 1 0.5  -0.5 1 0.5  emission 1 2 3\n" +
+                             kDecoy;
     const ps::Scene scene = ps::parseScene(text, "square light over a patch (test_flux.cpp)");
     const double X = 1.0, Y = 1.0;
-    const double F = 2.0 / (kPi * X * Y) *
-                     (0.5 * std::log((1 + X * X) * (1 + Y * Y) / (1 + X * X + Y * Y)) +
-                      X * std::sqrt(1 + Y * Y) * std::atan(X / std::sqrt(1 + Y * Y)) +
-                      Y * std::sqrt(1 + X * X) * std::atan(Y / std::sqrt(1 + X * X)) - X * std::atan(X) - Y * std::atan(Y));
+    const double F =
+        2.0 / (kPi * X * Y) *
+        (0.5 * std::log((1 + X * X) * (1 + Y * Y) / (1 + X * X + Y * Y)) +
+         X * std::sqrt(1 + Y * Y) * std::atan(X / std::sqrt(1 + Y * Y)) +
+         Y * std::sqrt(1 + X * X) * std::atan(Y / std::sqrt(1 + X * X)) - X * std::atan(X) - Y * std::atan(Y));
     // The same form factor by a direct midpoint integration of cos cos / (pi r^2) over both squares.
     double numeric = 0.0;
     const int m = 24;
@@ -88,7 +97,8 @@ TEST_CASE("measurement: flux through a patch under a square area light equals pi
             numeric += 1.0 / (kPi * r2 * r2);
         }
     numeric /= double(m * m) * double(m * m);
-    REQUIRE_MESSAGE(std::abs(numeric - F) < 1e-3, "the test's own form factor: closed form " << num(F) << ", numerical " << num(numeric));
+    REQUIRE_MESSAGE(std::abs(numeric - F) < 1e-3,
+                    "the test's own form factor: closed form " << num(F) << ", numerical " << num(numeric));
     const int n = 1200000;
     checkFlux("square light 1 x 1, Le = (1, 2, 3), at distance 1 over a 1 x 1 patch (form factor " + num(F) + ")",
               measureFlux(scene, n, 4301), (1.0 + 2.0 + 3.0) * kPi * 1.0 * F, n);

@@ -36,7 +36,10 @@ void checkPixel(int px, int py, int n, uint64_t seed) {
         const double u1 = rng.uniformDouble(), u2 = rng.uniformDouble();
         const Vec3 dir(sampleCone(u1, u2, oneMinusCosMax, axis));
         const Color s = ps::pixelMeasurementSample(scene, px, py, dir, float(pdf), rng, scene.settings.maxDepth);
-        if (!ps::isFinite(s)) { ++bad; continue; }
+        if (!ps::isFinite(s)) {
+            ++bad;
+            continue;
+        }
         if (!ps::isBlack(s)) ++inside;
         w.add(sum(s));
     }
@@ -48,13 +51,14 @@ void checkPixel(int px, int py, int n, uint64_t seed) {
     const double pValue = ps::stats::normalTwoSided(z);
     const bool powered = se <= 0.004 * expected;
     CHECK_MESSAGE(bad == 0, "pixel (" << px << ", " << py << "): expected 0 NaN or Inf samples, got " << bad);
-    CHECK_MESSAGE((pValue >= alpha() && powered),
-                  "Cornell box (32 x 32, maxdepth 8), pixel (" << px << ", " << py << "), " << n
-                      << " directions uniform in a cone around the pixel (" << inside
-                      << " of them gave a non-zero sample): expected the path-traced pixel, R + G + B = " << num(expected)
-                      << " +- " << num(refSd) << ", got <W_e^(j), L> = " << num(w.mean) << " +- " << num(se) << " (z = "
-                      << num(z, 4) << ", p = " << num(pValue, 3) << ", alpha = " << num(alpha(), 3) << ")"
-                      << std::string(powered ? "" : "; standard error above 0.4 % of the expected value: too noisy to tell"));
+    CHECK_MESSAGE(
+        (pValue >= alpha() && powered),
+        "Cornell box (32 x 32, maxdepth 8), pixel ("
+            << px << ", " << py << "), " << n << " directions uniform in a cone around the pixel (" << inside
+            << " of them gave a non-zero sample): expected the path-traced pixel, R + G + B = " << num(expected)
+            << " +- " << num(refSd) << ", got <W_e^(j), L> = " << num(w.mean) << " +- " << num(se)
+            << " (z = " << num(z, 4) << ", p = " << num(pValue, 3) << ", alpha = " << num(alpha(), 3) << ")"
+            << std::string(powered ? "" : "; standard error above 0.4 % of the expected value: too noisy to tell"));
 }
 
 }  // namespace

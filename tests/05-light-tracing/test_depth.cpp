@@ -9,7 +9,8 @@
 
 using namespace lesson05;
 
-TEST_CASE("light tracing: maxdepth 1 and 2 connect every bounce, the last one included (point light in a sphere, t-test) [1 pt]") {
+TEST_CASE(
+    "light tracing: maxdepth 1 and 2 connect every bounce, the last one included (point light in a sphere, t-test) [1 pt]") {
     constexpr int kIterations = 3000;
     constexpr double a = 0.5;
     uint64_t seed = 5451;
@@ -20,7 +21,8 @@ TEST_CASE("light tracing: maxdepth 1 and 2 connect every bounce, the last one in
           << "sphere center 0 0 0  radius 1  material wall\n"
           << "pointlight position 0 0 0  intensity 1 1 1\n"
           << "render maxdepth " << D << "\n";
-        const ps::Scene scene = ps::parseScene(s.str(), "point light in a sphere, maxdepth " + num(D) + " (test_depth.cpp)");
+        const ps::Scene scene =
+            ps::parseScene(s.str(), "point light in a sphere, maxdepth " + num(D) + " (test_depth.cpp)");
         std::unique_ptr<ps::Integrator> lt = ps::makeIntegrator("lt");
         ps::stats::Welford w;
         ps::SampleStats stats;
@@ -34,10 +36,11 @@ TEST_CASE("light tracing: maxdepth 1 and 2 connect every bounce, the last one in
         const double expected = a / 3.14159265358979323846 * (1.0 - std::pow(a, D)) / (1.0 - a);
         CHECK_MESSAGE(stats.bad() == 0, "maxdepth " << D << ": expected 0 NaN or Inf samples, got " << stats.bad());
         const ps::stats::TTestResult t = ps::stats::tTest(w, expected, alpha(), 0.01);
-        CHECK_MESSAGE(t.passed, "lt, point light (I = 1) in a diffuse sphere of radius 1 (albedo 0.5), maxdepth " << D
-                                    << ": expected every pixel to be L = a I / pi (1 - a^D) / (1 - a) = " << num(expected)
-                                    << ", got a mean of " << num(t.mean) << " +- " << num(t.stdError) << " (ratio "
-                                    << num(t.mean / expected) << "; " << (D == 1 ? "0" : "2/3")
-                                    << ": the last bounce not connected, the maximum depth off by one?)\n  " << t.report);
+        CHECK_MESSAGE(t.passed,
+                      "lt, point light (I = 1) in a diffuse sphere of radius 1 (albedo 0.5), maxdepth "
+                          << D << ": expected every pixel to be L = a I / pi (1 - a^D) / (1 - a) = " << num(expected)
+                          << ", got a mean of " << num(t.mean) << " +- " << num(t.stdError) << " (ratio "
+                          << num(t.mean / expected) << "; " << (D == 1 ? "0" : "2/3")
+                          << ": the last bounce not connected, the maximum depth off by one?)\n  " << t.report);
     }
 }

@@ -13,16 +13,17 @@ TEST_CASE("exercise: how radiance scales across a refraction, from Snell's law (
     for (const auto& e : etas) {
         const double etaFrom = e[0], etaTo = e[1];
         auto thetaT = [&](double ti) { return std::asin(etaFrom / etaTo * std::sin(ti)); };
-        for (double ti : {0.1, 0.4, 0.6}) {   // below the critical angle of every pair (0.73 for 1.5 -> 1)
+        for (double ti : {0.1, 0.4, 0.6}) {  // below the critical angle of every pair (0.73 for 1.5 -> 1)
             const double h = 1e-6, tt = thetaT(ti);
             const double dtt = (thetaT(ti + h) - thetaT(ti - h)) / (2.0 * h);
             const double expected = std::cos(ti) * std::sin(ti) / (std::cos(tt) * std::sin(tt) * dtt);
             const double got = ps::refractedRadianceScale(etaFrom, etaTo);
             CHECK_MESSAGE(std::abs(got / expected - 1.0) < 1e-6,
-                          "refractedRadianceScale(from eta " << etaFrom << " to eta " << etaTo << "), at theta_i "
-                          << ti << ": expected L_t / L_i = " << expected << " (flux conserved through Snell's beam), got "
-                          << got << " (ratio " << got / expected << (std::abs(got * expected - 1.0) < 1e-6 ? ": upside down" : "")
-                          << ")");
+                          "refractedRadianceScale(from eta "
+                              << etaFrom << " to eta " << etaTo << "), at theta_i " << ti
+                              << ": expected L_t / L_i = " << expected << " (flux conserved through Snell's beam), got "
+                              << got << " (ratio " << got / expected
+                              << (std::abs(got * expected - 1.0) < 1e-6 ? ": upside down" : "") << ")");
         }
     }
 }

@@ -24,17 +24,20 @@ TEST_CASE("light tracing: a point light in view lights exactly its pixel with I 
     const Render r = render(scene, "lt", 4, ps::testseed::seed(5801));
     const double cosE = double(glm::dot(glm::normalize(glm::dvec3(p)), glm::dvec3(0.0, 0.0, 1.0)));
     const double d2 = glm::dot(glm::dvec3(p), glm::dvec3(p));
-    const double expected = 16.0 * 16.0 / (4.0 * cosE * cosE * cosE * d2);   // per unit of I
+    const double expected = 16.0 * 16.0 / (4.0 * cosE * cosE * cosE * d2);  // per unit of I
     int others = 0;
     for (int y = 0; y < 16; ++y)
         for (int x = 0; x < 16; ++x)
             if (!(x == 5 && y == 9) && sum(r.mean.at(x, y)) != 0.0) ++others;
     const Color got = r.mean.at(5, 9);
-    const bool ok = std::abs(got.r - expected) <= 1e-3 * expected && std::abs(got.g - 2.0 * expected) <= 2e-3 * expected &&
+    const bool ok = std::abs(got.r - expected) <= 1e-3 * expected &&
+                    std::abs(got.g - 2.0 * expected) <= 2e-3 * expected &&
                     std::abs(got.b - 3.0 * expected) <= 3e-3 * expected;
     CHECK_MESSAGE(ok, "point light (I = 1 2 3) at distance 2 in view through pixel (5, 9): expected that pixel to be "
-                          << "I (w h) / (A cos^3 d^2) = (" << expected << ", " << 2.0 * expected << ", " << 3.0 * expected
-                          << "), got (" << got.r << ", " << got.g << ", " << got.b << ") (ratio " << got.r / expected
+                          << "I (w h) / (A cos^3 d^2) = (" << expected << ", " << 2.0 * expected << ", "
+                          << 3.0 * expected << "), got (" << got.r << ", " << got.g << ", " << got.b << ") (ratio "
+                          << got.r / expected
                           << "; below 1 and noisy: a cosine taken at the point light, which has no surface?)");
-    CHECK_MESSAGE(others == 0, "expected every other pixel black (nothing else in the scene), got " << others << " lit");
+    CHECK_MESSAGE(others == 0,
+                  "expected every other pixel black (nothing else in the scene), got " << others << " lit");
 }

@@ -9,7 +9,8 @@
 
 using namespace lesson05;
 
-TEST_CASE("light tracing: a point light in a sphere gives the analytic radiance at radii 1e-3, 1 and 1e3 (t-test) [2 pts]") {
+TEST_CASE(
+    "light tracing: a point light in a sphere gives the analytic radiance at radii 1e-3, 1 and 1e3 (t-test) [2 pts]") {
     constexpr int D = 6, kIterations = 2000;
     constexpr double a = 0.5;
     uint64_t seed = 5401;
@@ -20,7 +21,8 @@ TEST_CASE("light tracing: a point light in a sphere gives the analytic radiance 
           << "sphere center 0 0 0  radius " << num(R) << "  material wall\n"
           << "pointlight position 0 0 0  intensity " << num(R * R) << " " << num(R * R) << " " << num(R * R) << "\n"
           << "render maxdepth " << D << "\n";
-        const ps::Scene scene = ps::parseScene(s.str(), "point light in a sphere of radius " + num(R) + " (test_point_light.cpp)");
+        const ps::Scene scene =
+            ps::parseScene(s.str(), "point light in a sphere of radius " + num(R) + " (test_point_light.cpp)");
         std::unique_ptr<ps::Integrator> lt = ps::makeIntegrator("lt");
         ps::stats::Welford w;
         ps::SampleStats stats;
@@ -34,10 +36,12 @@ TEST_CASE("light tracing: a point light in a sphere gives the analytic radiance 
         const double expected = a * (R * R) / (3.14159265358979323846 * R * R) * (1.0 - std::pow(a, D)) / (1.0 - a);
         CHECK_MESSAGE(stats.bad() == 0, "radius " << R << ": expected 0 NaN or Inf samples, got " << stats.bad());
         const ps::stats::TTestResult t = ps::stats::tTest(w, expected, alpha(), 0.005);
-        CHECK_MESSAGE(t.passed, "lt, point light (I = R^2) in a diffuse sphere of radius "
-                                    << R << " (albedo 0.5, maxdepth " << D << "), 16 x 16 pixels, " << kIterations
-                                    << " iterations of 256 light paths: expected every pixel to be L = a I / (pi R^2) (1 - a^D) / (1 - a) = "
-                                    << num(expected) << ", got a mean of " << num(t.mean) << " +- " << num(t.stdError) << "\n  "
-                                    << t.report);
+        CHECK_MESSAGE(
+            t.passed,
+            "lt, point light (I = R^2) in a diffuse sphere of radius "
+                << R << " (albedo 0.5, maxdepth " << D << "), 16 x 16 pixels, " << kIterations
+                << " iterations of 256 light paths: expected every pixel to be L = a I / (pi R^2) (1 - a^D) / (1 - a) = "
+                << num(expected) << ", got a mean of " << num(t.mean) << " +- " << num(t.stdError) << "\n  "
+                << t.report);
     }
 }

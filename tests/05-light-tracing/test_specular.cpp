@@ -37,7 +37,8 @@ SpecularCoverage specularCoverage(const ps::Scene& scene) {
             uint32_t first = ps::kNoPrimitive;
             for (int j = 0; j <= 5; ++j)
                 for (int i = 0; i <= 5; ++i) {
-                    ps::Ray ray = scene.camera.generateRay(Vec2(x + std::min(i / 5.0f, 0.99999f), y + std::min(j / 5.0f, 0.99999f)));
+                    ps::Ray ray = scene.camera.generateRay(
+                        Vec2(x + std::min(i / 5.0f, 0.99999f), y + std::min(j / 5.0f, 0.99999f)));
                     ps::SurfacePoint sp;
                     const bool specular = scene.intersect(ray, sp) && scene.materials[sp.material].isDelta();
                     if (i == 0 && j == 0) first = specular ? sp.prim : ps::kNoPrimitive;
@@ -50,14 +51,15 @@ SpecularCoverage specularCoverage(const ps::Scene& scene) {
 
 }  // namespace
 
-TEST_CASE("light tracing: glass and mirror spheres seen directly are black, the rest equals the path tracer (z-test) [2 pts]") {
+TEST_CASE(
+    "light tracing: glass and mirror spheres seen directly are black, the rest equals the path tracer (z-test) [2 pts]") {
     const ps::Scene scene = loadSceneAt("scenes/cornell-spheres.scene", 32, 32);
     const ps::Image ref = ps::readPFM(sourcePath("tests/05-light-tracing/data/cornell-spheres-32.pfm"));
     const ps::Image refVar = ps::readPFM(sourcePath("tests/05-light-tracing/data/cornell-spheres-32-variance.pfm"));
     constexpr int kIterations = 1500;
     const Render r = render(scene, "lt", kIterations, ps::testseed::seed(5201));
-    CHECK_MESSAGE(r.stats.bad() == 0, "lt on cornell-spheres: expected 0 NaN and 0 Inf samples, got " << r.stats.nan << " NaN and "
-                                                                                                     << r.stats.inf << " Inf");
+    CHECK_MESSAGE(r.stats.bad() == 0, "lt on cornell-spheres: expected 0 NaN and 0 Inf samples, got "
+                                          << r.stats.nan << " NaN and " << r.stats.inf << " Inf");
     const SpecularCoverage cov = specularCoverage(scene);
     // The spheres' own pixels: exactly black under light tracing; in the path tracer's image they
     // show the room (black only where the mirror reflects the open front of the box).
@@ -68,16 +70,21 @@ TEST_CASE("light tracing: glass and mirror spheres seen directly are black, the 
             if (!cov.all[k]) continue;
             ++covered;
             if (!ps::isBlack(r.mean.pixels[k]) && ++lit <= 3)
-                FAIL_CHECK("lt on cornell-spheres: pixel (" << x << ", " << y << ") sees only the glass or mirror sphere: expected "
-                                                            "exactly 0 (no light path can end with a specular vertex before the "
-                                                            "pinhole), got "
-                                                            << str(r.mean.pixels[k]));
+                FAIL_CHECK("lt on cornell-spheres: pixel ("
+                           << x << ", " << y
+                           << ") sees only the glass or mirror sphere: expected "
+                              "exactly 0 (no light path can end with a specular vertex before the "
+                              "pinhole), got "
+                           << str(r.mean.pixels[k]));
             if (sum(ref.pixels[k]) > 0.0) ++refLit;
         }
-    REQUIRE_MESSAGE(covered >= 40, "test setup: expected at least 40 pixels entirely covered by the spheres, found " << covered);
-    CHECK_MESSAGE(lit == 0, "lt on cornell-spheres: " << lit << " of the " << covered << " pixels that see only a specular sphere are not black");
-    CHECK_MESSAGE(refLit >= covered * 9 / 10, "test setup: the path-traced reference should be lit in most of those pixels, it is in "
-                                                 << refLit << " of " << covered);
+    REQUIRE_MESSAGE(covered >= 40,
+                    "test setup: expected at least 40 pixels entirely covered by the spheres, found " << covered);
+    CHECK_MESSAGE(lit == 0, "lt on cornell-spheres: " << lit << " of the " << covered
+                                                      << " pixels that see only a specular sphere are not black");
+    CHECK_MESSAGE(refLit >= covered * 9 / 10,
+                  "test setup: the path-traced reference should be lit in most of those pixels, it is in "
+                      << refLit << " of " << covered);
     // Everywhere else (pixels whose 3 x 3 neighbourhood holds no specular surface at all): the
     // light tracer equals the path tracer, the caustics under the glass sphere included.
     std::vector<bool> diffuse(cov.any.size(), false);
@@ -93,30 +100,34 @@ TEST_CASE("light tracing: glass and mirror spheres seen directly are black, the 
             diffuse[size_t(y) * 32 + x] = clear;
             nDiffuse += clear;
         }
-    const ps::stats::ZTestResult z =
-        ps::stats::zTestImages(select(r.mean, diffuse), select(r.variance, diffuse), select(ref, diffuse), select(refVar, diffuse), alpha());
-    CHECK_MESSAGE(z.passed, "lt on cornell-spheres (32 x 32, maxdepth 8, " << kIterations << " x 1024 light paths), the " << nDiffuse
-                                                                           << " pixels away from the spheres: expected the path-traced "
-                                                                              "reference within its noise (x is the index among those "
-                                                                              "pixels: a = yours, b = the reference), got\n  "
-                                                                           << z.report);
+    const ps::stats::ZTestResult z = ps::stats::zTestImages(select(r.mean, diffuse), select(r.variance, diffuse),
+                                                            select(ref, diffuse), select(refVar, diffuse), alpha());
+    CHECK_MESSAGE(z.passed, "lt on cornell-spheres (32 x 32, maxdepth 8, "
+                                << kIterations << " x 1024 light paths), the " << nDiffuse
+                                << " pixels away from the spheres: expected the path-traced "
+                                   "reference within its noise (x is the index among those "
+                                   "pixels: a = yours, b = the reference), got\n  "
+                                << z.report);
 }
 
-TEST_CASE("light tracing: a lamp inside a glass globe: the power of particles leaving the glass is kept (Eq. 5.8, z-test) [2 pts]") {
+TEST_CASE(
+    "light tracing: a lamp inside a glass globe: the power of particles leaving the glass is kept (Eq. 5.8, z-test) [2 pts]") {
     const ps::Scene scene = loadSceneAt("scenes/glass-lamp.scene", 8, 8);
     const ps::Image ref = ps::readPFM(sourcePath("tests/05-light-tracing/data/glass-lamp-8.pfm"));
     const ps::Image refVar = ps::readPFM(sourcePath("tests/05-light-tracing/data/glass-lamp-8-variance.pfm"));
     constexpr int kIterations = 4000;
     const Render r = render(scene, "lt", kIterations, ps::testseed::seed(5301));
-    CHECK_MESSAGE(r.stats.bad() == 0, "lt on glass-lamp: expected 0 NaN and 0 Inf samples, got " << r.stats.nan << " NaN and "
-                                                                                                 << r.stats.inf << " Inf");
+    CHECK_MESSAGE(r.stats.bad() == 0, "lt on glass-lamp: expected 0 NaN and 0 Inf samples, got "
+                                          << r.stats.nan << " NaN and " << r.stats.inf << " Inf");
     const double ratio = total(r.mean) / total(ref);
     const ps::stats::ZTestResult z = ps::stats::zTestImages(r.mean, r.variance, ref, refVar, alpha());
-    CHECK_MESSAGE(z.passed, "lt on glass-lamp (8 x 8, maxdepth 8, " << kIterations << " x 64 light paths): expected the path-traced "
-                                                                         "reference within its noise, got an image "
-                                                                      << num(ratio, 4)
-                                                                      << " times as bright as the reference (2.25 = 1.5^2 would be the "
-                                                                         "radiance rule applied to particles; a = yours, b = the "
-                                                                         "reference)\n  "
-                                                                      << z.report);
+    CHECK_MESSAGE(z.passed, "lt on glass-lamp (8 x 8, maxdepth 8, "
+                                << kIterations
+                                << " x 64 light paths): expected the path-traced "
+                                   "reference within its noise, got an image "
+                                << num(ratio, 4)
+                                << " times as bright as the reference (2.25 = 1.5^2 would be the "
+                                   "radiance rule applied to particles; a = yours, b = the "
+                                   "reference)\n  "
+                                << z.report);
 }

@@ -17,7 +17,7 @@ std::string text(std::ostream& o) { return static_cast<std::ostringstream&>(o).s
 struct Seen {
     ps::LightWalkVertex v;
     bool hasStart = false;
-    ps::LightPathStart start;   // a copy of *v.start (the walk's own dies with it)
+    ps::LightPathStart start;  // a copy of *v.start (the walk's own dies with it)
 };
 
 std::vector<Seen> recordWalk(const ps::Scene& scene, ps::Rng& rng, int maxDepth, int stopAt = -1) {
@@ -41,7 +41,9 @@ std::string bounceList(const std::vector<Seen>& seen) {
 }
 
 bool closeColor(const Color& a, const Color& b) {
-    auto close = [](float x, float y) { return std::abs(x - y) <= 1e-5f * std::max(std::abs(x), std::abs(y)) + 1e-30f; };
+    auto close = [](float x, float y) {
+        return std::abs(x - y) <= 1e-5f * std::max(std::abs(x), std::abs(y)) + 1e-30f;
+    };
     return close(a.r, b.r) && close(a.g, b.g) && close(a.b, b.b);
 }
 bool closePoint(const Vec3& a, const Vec3& b) { return glm::length(a - b) <= 1e-4f * (1.0f + ps::maxAbsComponent(b)); }
@@ -67,15 +69,18 @@ std::string replay(const ps::Scene& scene, ps::Rng rng, int maxDepth, const std:
         if (seen.empty()) return "";
         return text(why << "startLightPath gives no valid start here, expected no vertex, got " << seen.size());
     }
-    if (seen.empty()) return "expected y0 (startLightPath with the walk's first numbers, uniform, uniform2, uniform2) first, the visitor was never called";
+    if (seen.empty())
+        return "expected y0 (startLightPath with the walk's first numbers, uniform, uniform2, uniform2) first, the visitor was never called";
     const Seen& y0 = seen[0];
     if (y0.v.bounces != 0 || !y0.hasStart || y0.start.light != start.light || !closePoint(y0.v.sp.p, start.y0.p) ||
         !closeColor(y0.v.beta, start.beta))
-        return text(why << "expected the first vertex to be y0 = startLightPath(rng.uniform(), rng.uniform2(), rng.uniform2()).y0 = "
-                    << str(start.y0.p) << " on light " << start.light << " (bounces 0, start set, beta = start.beta "
-                    << str(start.beta) << "), got bounces " << y0.v.bounces << ", point " << str(y0.v.sp.p) << ", light "
-                    << (y0.hasStart ? std::to_string(y0.start.light) : std::string("? (start not set)")) << ", beta "
-                    << str(y0.v.beta));
+        return text(
+            why
+            << "expected the first vertex to be y0 = startLightPath(rng.uniform(), rng.uniform2(), rng.uniform2()).y0 = "
+            << str(start.y0.p) << " on light " << start.light << " (bounces 0, start set, beta = start.beta "
+            << str(start.beta) << "), got bounces " << y0.v.bounces << ", point " << str(y0.v.sp.p) << ", light "
+            << (y0.hasStart ? std::to_string(y0.start.light) : std::string("? (start not set)")) << ", beta "
+            << str(y0.v.beta));
     Color beta = start.beta, throughput(1.0f);
     ps::Ray ray = start.ray;
     for (int k = 1;; ++k) {
@@ -85,24 +90,27 @@ std::string replay(const ps::Scene& scene, ps::Rng rng, int maxDepth, const std:
         else if (!scene.intersect(ray, sp)) end = "the particle left the scene (a miss is not a vertex)";
         if (!end.empty()) {
             if (seen.size() == size_t(k)) return "";
-            return text(why << "expected " << k << " vertices, bounces 0 .. " << k - 1 << " (then " << end << "), the visitor was shown "
-                        << seen.size() << " (bounces " << bounceList(seen) << ")");
+            return text(why << "expected " << k << " vertices, bounces 0 .. " << k - 1 << " (then " << end
+                            << "), the visitor was shown " << seen.size() << " (bounces " << bounceList(seen) << ")");
         }
         if (seen.size() <= size_t(k))
             return text(why << "the visitor was shown " << seen.size() << " vertices (bounces " << bounceList(seen)
-                        << "), expected the particle's hit with " << k << " bounces too (at " << str(sp.p) << ")");
+                            << "), expected the particle's hit with " << k << " bounces too (at " << str(sp.p) << ")");
         const ps::LightWalkVertex& v = seen[size_t(k)].v;
         why << "vertex " << k << ": ";
         if (v.bounces != k) return text(why << "expected bounces = " << k << ", got " << v.bounces);
-        if (!closePoint(v.sp.p, sp.p)) return text(why << "expected the hit point " << str(sp.p) << ", got " << str(v.sp.p));
+        if (!closePoint(v.sp.p, sp.p))
+            return text(why << "expected the hit point " << str(sp.p) << ", got " << str(v.sp.p));
         if (glm::length(v.wLight + ray.d) > 1e-6f)
             return text(why << "expected wLight = -ray.d = " << str(-ray.d) << ", got " << str(v.wLight));
         if (!closeColor(v.beta, beta))
-            return text(why << "expected the particle's power beta = " << str(beta) << " (start.beta times the adjoint weights, "
-                        << "each survivor divided by q = survivalProbability(throughput, bounces), the throughput since the light "
-                        << "being " << str(throughput) << "), got " << str(v.beta));
+            return text(
+                why
+                << "expected the particle's power beta = " << str(beta) << " (start.beta times the adjoint weights, "
+                << "each survivor divided by q = survivalProbability(throughput, bounces), the throughput since the light "
+                << "being " << str(throughput) << "), got " << str(v.beta));
         why.str("");
-        if (k == maxDepth) continue;   // the loop's next round ends it
+        if (k == maxDepth) continue;  // the loop's next round ends it
         ps::BSDFSample s;
         bool sampled;
         if (inOrder) {
@@ -110,10 +118,10 @@ std::string replay(const ps::Scene& scene, ps::Rng rng, int maxDepth, const std:
             const float uLobe = rng.uniform();
             sampled = ps::sampleAdjointBSDF(scene.materials[size_t(sp.material)], sp.n, -ray.d, u, uLobe, s);
         } else {
-            sampled = ps::sampleAdjointBSDF(scene.materials[size_t(sp.material)], sp.n, -ray.d, rng.uniform2(), rng.uniform(), s);
+            sampled = ps::sampleAdjointBSDF(scene.materials[size_t(sp.material)], sp.n, -ray.d, rng.uniform2(),
+                                            rng.uniform(), s);
         }
-        if (!sampled)
-            end = "its adjoint BSDF sample failed";
+        if (!sampled) end = "its adjoint BSDF sample failed";
         else {
             beta *= s.weight;
             throughput *= s.weight;
@@ -127,8 +135,9 @@ std::string replay(const ps::Scene& scene, ps::Rng rng, int maxDepth, const std:
         }
         if (!end.empty()) {
             if (seen.size() == size_t(k) + 1) return "";
-            return text(why << "expected the walk to end after vertex " << k << " (" << end << "), the visitor was shown "
-                        << seen.size() << " vertices (bounces " << bounceList(seen) << ")");
+            return text(why << "expected the walk to end after vertex " << k << " (" << end
+                            << "), the visitor was shown " << seen.size() << " vertices (bounces " << bounceList(seen)
+                            << ")");
         }
         ray = scene.spawnRay(sp, s.wi);
     }
@@ -148,18 +157,24 @@ TEST_CASE("light walk: y0 first, then one vertex per bounce up to maxdepth, and 
             ps::Rng rng = ps::taskRng(ps::testseed::seed(591), uint32_t(D), uint32_t(i));
             ps::Rng copy = rng;
             const std::vector<Seen> seen = recordWalk(scene, rng, D);
-            const ps::LightPathStart start = ps::startLightPath(scene, copy.uniform(), copy.uniform2(), copy.uniform2());
+            const ps::LightPathStart start =
+                ps::startLightPath(scene, copy.uniform(), copy.uniform2(), copy.uniform2());
             bool ok = seen.size() == size_t(D) + 1 && seen[0].hasStart && closePoint(seen[0].v.sp.p, start.y0.p);
             for (size_t k = 0; ok && k < seen.size(); ++k) ok = seen[k].v.bounces == int(k);
             std::string hint;
-            if (seen.size() == size_t(D) + 2) hint = ": one vertex too many, the walk must end right after visiting the vertex with bounces == maxDepth";
-            else if (seen.size() == size_t(D)) hint = ": one vertex too few, the vertex with bounces == maxDepth must be visited too";
+            if (seen.size() == size_t(D) + 2)
+                hint =
+                    ": one vertex too many, the walk must end right after visiting the vertex with bounces == maxDepth";
+            else if (seen.size() == size_t(D))
+                hint = ": one vertex too few, the vertex with bounces == maxDepth must be visited too";
             else if (seen.empty()) hint = ": the visitor was never called";
             else if (!seen[0].hasStart || !closePoint(seen[0].v.sp.p, start.y0.p))
-                hint = ": the first vertex must be y0 = startLightPath(...).y0 = " + str(start.y0.p) + ", with start set";
-            CHECK_MESSAGE(ok, "closed cube furnace (albedo 1: q = 1), maxdepth " << D << ", walk " << i << ": expected " << D + 1
-                                  << " vertices, y0 (bounces 0) then bounces 1 .. " << D << ", got " << seen.size() << " (bounces "
-                                  << bounceList(seen) << ")" << hint);
+                hint =
+                    ": the first vertex must be y0 = startLightPath(...).y0 = " + str(start.y0.p) + ", with start set";
+            CHECK_MESSAGE(ok, "closed cube furnace (albedo 1: q = 1), maxdepth "
+                                  << D << ", walk " << i << ": expected " << D + 1
+                                  << " vertices, y0 (bounces 0) then bounces 1 .. " << D << ", got " << seen.size()
+                                  << " (bounces " << bounceList(seen) << ")" << hint);
             if (!ok) break;
         }
     }
@@ -168,13 +183,15 @@ TEST_CASE("light walk: y0 first, then one vertex per bounce up to maxdepth, and 
     const std::vector<Seen> seen = recordWalk(scene, rng, 10, 0);
     for (int n = 0; n < 5; ++n) copy.uniform();
     const bool sameNumbers = rng.uniform() == copy.uniform() && rng.uniform() == copy.uniform();
-    CHECK_MESSAGE((seen.size() == 1 && sameNumbers),
-                  "closed cube furnace, maxdepth 10, a visitor that returns false at y0: expected 1 visit and no random number "
-                  "drawn after startLightPath's five, got "
-                      << seen.size() << " visits" << (sameNumbers ? "" : " and more numbers drawn"));
+    CHECK_MESSAGE(
+        (seen.size() == 1 && sameNumbers),
+        "closed cube furnace, maxdepth 10, a visitor that returns false at y0: expected 1 visit and no random number "
+        "drawn after startLightPath's five, got "
+            << seen.size() << " visits" << (sameNumbers ? "" : " and more numbers drawn"));
 }
 
-TEST_CASE("light walk: the particle's power and the roulette follow the adjoint BSDF, q from the throughput since the light (Eq. 5.7, 3.5) [2 pts]") {
+TEST_CASE(
+    "light walk: the particle's power and the roulette follow the adjoint BSDF, q from the throughput since the light (Eq. 5.7, 3.5) [2 pts]") {
     // 200 walks in each of three scenes, replayed here with a copy of the walk's generator: a
     // coloured furnace whose walls emit 50 (start.beta is large, so a roulette on beta instead of
     // the throughput since the light would never fire; maxdepth 60), the Cornell spheres (glass
@@ -190,7 +207,8 @@ TEST_CASE("light walk: the particle's power and the roulette follow the adjoint 
         std::string s = readText(sourcePath("scenes/furnace.scene"));
         s = std::regex_replace(s, std::regex("albedo 0\\.5 0\\.5 0\\.5"), "albedo 0.9 0.6 0.3");
         s = std::regex_replace(s, std::regex("emission 1 1 1"), "emission 50 50 50");
-        cases.push_back({"closed cube furnace, albedo (0.9, 0.6, 0.3), emission 50", ps::parseScene(s, "furnace (test_walk.cpp)"), 60});
+        cases.push_back({"closed cube furnace, albedo (0.9, 0.6, 0.3), emission 50",
+                         ps::parseScene(s, "furnace (test_walk.cpp)"), 60});
     }
     cases.push_back({"cornell-spheres.scene", loadSceneAt("scenes/cornell-spheres.scene", 32, 32), 8});
     cases.push_back({"cornell-background.scene", loadSceneAt("scenes/cornell-background.scene", 32, 32), 8});
@@ -202,12 +220,14 @@ TEST_CASE("light walk: the particle's power and the roulette follow the adjoint 
             const std::vector<Seen> seen = recordWalk(c.scene, rng, c.maxDepth);
             std::string wrong = replay(c.scene, before, c.maxDepth, seen, false);
             if (!wrong.empty() && replay(c.scene, before, c.maxDepth, seen, true).empty()) wrong.clear();
-            CHECK_MESSAGE(wrong.empty(), c.name << ", maxdepth " << c.maxDepth << ", light path " << i << ": " << wrong);
+            CHECK_MESSAGE(wrong.empty(),
+                          c.name << ", maxdepth " << c.maxDepth << ", light path " << i << ": " << wrong);
             if (!wrong.empty()) break;
             ++checked;
             long_ += seen.size() > 5;
         }
         CHECK_MESSAGE(checked == 200, c.name << ": " << checked << " of 200 walks as expected");
-        if (c.maxDepth == 60) CHECK_MESSAGE(long_ > 20, "test setup: the furnace should give walks long enough for the roulette");
+        if (c.maxDepth == 60)
+            CHECK_MESSAGE(long_ > 20, "test setup: the furnace should give walks long enough for the roulette");
     }
 }

@@ -108,7 +108,7 @@ inline ps::PathVertex pointLightVertex(const ps::Scene& scene) {
     const int l = lightOfKind(scene, ps::LightKind::Point);
     ps::PathVertex v;
     v.sp.p = scene.lights[size_t(l)].position;
-    v.sp.n = Vec3(0.0f, 1.0f, 0.0f);   // meaningless at a point light: must not be used
+    v.sp.n = Vec3(0.0f, 1.0f, 0.0f);  // meaningless at a point light: must not be used
     v.sp.light = l;
     v.onLight = true;
     v.pointLight = true;
@@ -120,7 +120,12 @@ inline std::string describe(const ps::Path& x) {
     std::ostringstream s;
     for (size_t i = 0; i < x.size(); ++i) {
         const ps::PathVertex& v = x[i];
-        s << (i ? " -> " : "") << "x" << i << (v.pointLight ? " (point light) " : v.onLight ? " (light) " : v.pinhole ? " (pinhole) " : v.specular ? " (specular) " : " ")
+        s << (i ? " -> " : "") << "x" << i
+          << (v.pointLight ? " (point light) "
+              : v.onLight  ? " (light) "
+              : v.pinhole  ? " (pinhole) "
+              : v.specular ? " (specular) "
+                           : " ")
           << str(v.sp.p);
     }
     return s.str();

@@ -22,7 +22,7 @@ double G(const DVec3& a, const DVec3& na, bool pointA, const DVec3& b, const DVe
 double sensor(const ps::Scene& scene, const DVec3& p) {
     const DVec3 e = d3(scene.camera.position()), f = d3(scene.camera.forward());
     const double cosT = glm::dot(glm::normalize(p - e), f);
-    const double ty = std::tan(30.0 * kPi / 180.0), A = 4.0 * ty * ty;   // fov 60, square image
+    const double ty = std::tan(30.0 * kPi / 180.0), A = 4.0 * ty * ty;  // fov 60, square image
     return 16.0 * 16.0 / (A * std::pow(cosT, 4));
 }
 double phong(double albedo, double n, const DVec3& normal, const DVec3& wo, const DVec3& wi) {
@@ -41,7 +41,8 @@ void checkColor(const ps::Path& x, const ps::DColor& got, const DVec3& expected,
 
 }  // namespace
 
-TEST_CASE("path space: f(x) of light -> diffuse floor -> pinhole, for an area light and a point light (Eq. 6.3) [2 pts]") {
+TEST_CASE(
+    "path space: f(x) of light -> diffuse floor -> pinhole, for an area light and a point light (Eq. 6.3) [2 pts]") {
     const ps::Scene& scene = room();
     const ps::PathVertex x0 = areaLightPoint(scene, Vec3(0.1f, 2.0f, -0.2f)), pl = pointLightVertex(scene);
     const ps::PathVertex x1 = surface(scene, Vec3(0.3f, 0.0f, 0.4f), Vec3(0, 1, 0), "floor"), cam = pinhole(scene);
@@ -56,7 +57,8 @@ TEST_CASE("path space: f(x) of light -> diffuse floor -> pinhole, for an area li
     {
         const ps::Path x = {pl, x1, cam};
         const double g = G(pp, up, true, p1, up, false) * rest;
-        checkColor(x, ps::contribution(scene, x), DVec3(2, 2, 2) * g, "point light (intensity 2, no cosine at the light)");
+        checkColor(x, ps::contribution(scene, x), DVec3(2, 2, 2) * g,
+                   "point light (intensity 2, no cosine at the light)");
     }
     {
         // Length 1: the light seen directly by the pinhole.
@@ -66,7 +68,8 @@ TEST_CASE("path space: f(x) of light -> diffuse floor -> pinhole, for an area li
     }
 }
 
-TEST_CASE("path space: f(x) of longer paths: a glossy bounce and a mirror's delta coefficient (Eq. 6.3, 6.11) [2 pts]") {
+TEST_CASE(
+    "path space: f(x) of longer paths: a glossy bounce and a mirror's delta coefficient (Eq. 6.3, 6.11) [2 pts]") {
     const ps::Scene& scene = room();
     const ps::PathVertex x0 = areaLightPoint(scene, Vec3(0.0f, 2.0f, 0.0f));
     const ps::PathVertex wall = surface(scene, Vec3(-0.4f, 0.8f, 2.0f), Vec3(0, 0, -1), "wall");
@@ -100,36 +103,46 @@ TEST_CASE("path space: f(x) of longer paths: a glossy bounce and a mirror's delt
         const ps::Path x = {x0, mirror, floor, cam};
         const DVec3 nx(1, 0, 0);
         const double cosOut = std::abs(glm::dot(nx, glm::normalize(pf - pm)));
-        const double g = G(p0, down, false, pm, nx, false) * (0.9 / cosOut) * G(pm, nx, false, pf, up, false) * 0.5 / kPi *
-                         G(pf, up, false, pc, fwd, false) * sensor(scene, pf);
+        const double g = G(p0, down, false, pm, nx, false) * (0.9 / cosOut) * G(pm, nx, false, pf, up, false) * 0.5 /
+                         kPi * G(pf, up, false, pc, fwd, false) * sensor(scene, pf);
         checkColor(x, ps::contribution(scene, x), DVec3(4, 3, 2) * g,
                    "mirror (albedo 0.9): f_s is the delta's coefficient albedo / |cos theta_out|");
         // The same mirror vertex with a floor point off the reflection direction: 0.
         const ps::PathVertex off = surface(scene, Vec3(0.6f, 0.0f, 0.4f), Vec3(0, 1, 0), "floor");
         const ps::Path y = {x0, mirror, off, cam};
         const ps::DColor got = ps::contribution(scene, y);
-        CHECK_MESSAGE(black(got), "path " << describe(y) << ": the directions at the mirror are not a reflected pair: expected f = 0, got "
-                                            << str(got));
+        CHECK_MESSAGE(black(got), "path "
+                                      << describe(y)
+                                      << ": the directions at the mirror are not a reflected pair: expected f = 0, got "
+                                      << str(got));
     }
 }
 
-TEST_CASE("path space: f(x) is 0 for occluded edges and for light leaving the back of a one-sided light (Eq. 6.3) [1 pt]") {
+TEST_CASE(
+    "path space: f(x) is 0 for occluded edges and for light leaving the back of a one-sided light (Eq. 6.3) [1 pt]") {
     // The room with a square blocker at y = 1 between the light and the floor.
-    const ps::Scene scene = ps::parseScene(std::string(roomText()) + "quad -0.2 1 -0.2  0.6 1 -0.2  0.6 1 0.8  -0.2 1 0.8  material floor\n",
-                                           "the room with a blocker (test_contribution.cpp)");
+    const ps::Scene scene = ps::parseScene(
+        std::string(roomText()) + "quad -0.2 1 -0.2  0.6 1 -0.2  0.6 1 0.8  -0.2 1 0.8  material floor\n",
+        "the room with a blocker (test_contribution.cpp)");
     const ps::PathVertex x0 = areaLightPoint(scene, Vec3(0.1f, 2.0f, -0.2f)), cam = pinhole(scene);
     const ps::PathVertex x1 = surface(scene, Vec3(0.3f, 0.0f, 0.4f), Vec3(0, 1, 0), "floor");
     const ps::Path blocked = {x0, x1, cam};
     const ps::DColor got = ps::contribution(scene, blocked);
-    CHECK_MESSAGE(black(got), "path " << describe(blocked) << ": the edge x0 x1 passes through a blocker at y = 1: expected f = 0 (V = 0), got "
-                                        << str(got));
+    CHECK_MESSAGE(black(got),
+                  "path " << describe(blocked)
+                          << ": the edge x0 x1 passes through a blocker at y = 1: expected f = 0 (V = 0), got "
+                          << str(got));
     // Without the blocker, the same path is not 0 (so the 0 above is the visibility).
-    const ps::DColor open = ps::contribution(room(), {areaLightPoint(room(), Vec3(0.1f, 2.0f, -0.2f)), x1, pinhole(room())});
-    CHECK_MESSAGE(!black(open), "path " << describe(blocked) << " in the room without the blocker: expected f > 0, got " << str(open));
+    const ps::DColor open =
+        ps::contribution(room(), {areaLightPoint(room(), Vec3(0.1f, 2.0f, -0.2f)), x1, pinhole(room())});
+    CHECK_MESSAGE(!black(open), "path " << describe(blocked) << " in the room without the blocker: expected f > 0, got "
+                                        << str(open));
     // The light faces down: a wall point above its plane gets nothing from it.
     const ps::PathVertex high = surface(room(), Vec3(0.0f, 2.5f, 2.0f), Vec3(0, 0, -1), "wall");
     const ps::Path up = {areaLightPoint(room(), Vec3(0.0f, 2.0f, 0.0f)), high, pinhole(room())};
     const ps::DColor gotUp = ps::contribution(room(), up);
-    CHECK_MESSAGE(black(gotUp), "path " << describe(up) << ": the area light emits only below (its normal faces -y): expected f = 0, got "
-                                          << str(gotUp));
+    CHECK_MESSAGE(black(gotUp),
+                  "path " << describe(up)
+                          << ": the area light emits only below (its normal faces -y): expected f = 0, got "
+                          << str(gotUp));
 }

@@ -69,7 +69,9 @@ DVec3 refractionPoint(const DVec3& a, const DVec3& b) {
     const DVec3 g = ah + 0.5 * (lo + hi) * (bh - ah);
     return DVec3(g.x, kGlassY, g.z);
 }
-double cosAt(const DVec3& n, const DVec3& from, const DVec3& to) { return std::abs(glm::dot(n, glm::normalize(to - from))); }
+double cosAt(const DVec3& n, const DVec3& from, const DVec3& to) {
+    return std::abs(glm::dot(n, glm::normalize(to - from)));
+}
 double toArea(double pdfW, const DVec3& a, const DVec3& b, const DVec3& nb) {
     const DVec3 d = b - a;
     return pdfW * cosAt(nb, a, b) / glm::dot(d, d);
@@ -82,7 +84,7 @@ double sensor(const ps::Scene& scene, const DVec3& p) {
     return double(scene.camera.width()) * double(scene.camera.height()) *
            double(scene.camera.We(glm::normalize(Vec3(p) - scene.camera.position())));
 }
-double cameraPdfW(const ps::Scene& scene, const DVec3& p) {   // fov 60, square: image area 4 tan^2(30)
+double cameraPdfW(const ps::Scene& scene, const DVec3& p) {  // fov 60, square: image area 4 tan^2(30)
     const DVec3 pc = d3(scene.camera.position()), fwd = d3(scene.camera.forward());
     const double ty = std::tan(30.0 * kPi / 180.0), c = cosAt(fwd, pc, p);
     return 1.0 / (4.0 * ty * ty * c * c * c);
@@ -101,14 +103,14 @@ void checkPdf(const ps::Scene& scene, const ps::Path& x, int s, double expected,
 
 }  // namespace
 
-TEST_CASE("path space: refraction's delta lobe in f and p_{s,t} (eta^2 of the camera subpath), and paths from the background (Eq. 6.5, 6.11, 6.12) [3 pts]") {
+TEST_CASE(
+    "path space: refraction's delta lobe in f and p_{s,t} (eta^2 of the camera subpath), and paths from the background (Eq. 6.5, 6.11, 6.12) [3 pts]") {
     {
         const ps::Scene& scene = pool();
         const int glass = materialIndex(scene, "glass");
         ps::SurfacePoint hit;
         ps::Ray probe(Vec3(1.5f, 1.9f, -1.0f), Vec3(0.0f, -1.0f, 0.0f));
-        const bool up = scene.intersect(probe, hit) && hit.material == glass &&
-                        hit.n.y > 0.5f;
+        const bool up = scene.intersect(probe, hit) && hit.material == glass && hit.n.y > 0.5f;
         REQUIRE_MESSAGE(up, "test setup: the glass surface's normal must point up (air above)");
         const ps::PathVertex x0 = areaLightPoint(scene, Vec3(0.2f, 2.0f, 0.1f)), cam = pinhole(scene);
         const DVec3 p0 = d3(x0.sp.p), pf(-0.4, 0.0, 0.9), pc = d3(cam.sp.p);
@@ -117,9 +119,10 @@ TEST_CASE("path space: refraction's delta lobe in f and p_{s,t} (eta^2 of the ca
         const ps::PathVertex floor = surface(scene, Vec3(pf), Vec3(0, 1, 0), "floor");
         const ps::Path x = {x0, g, floor, cam};
         const DVec3 n(0, 1, 0), down(0, -1, 0);
-        const DVec3 wL = glm::normalize(p0 - pg), wC = glm::normalize(pf - pg);   // at the glass vertex
+        const DVec3 wL = glm::normalize(p0 - pg), wC = glm::normalize(pf - pg);  // at the glass vertex
         const double cosL = std::abs(wL.y), cosC = std::abs(wC.y);
-        REQUIRE_MESSAGE(glm::length(refractY(wL, 1.0, kEta) - wC) < 1e-6, "test setup: the glass vertex must refract x0 into the floor point");
+        REQUIRE_MESSAGE(glm::length(refractY(wL, 1.0, kEta) - wC) < 1e-6,
+                        "test setup: the glass vertex must refract x0 into the floor point");
         const double FL = fresnel(cosL, 1.0, kEta), FC = fresnel(cosC, kEta, 1.0);
         // f (Eq. 6.3, 6.11): the refraction's coefficient (1 - F) / |cos theta_C|.
         const double fExpected = G(p0, down, pg, n) * ((1.0 - FL) / cosC) * G(pg, n, pf, n) * (0.5 / kPi) *
@@ -127,20 +130,26 @@ TEST_CASE("path space: refraction's delta lobe in f and p_{s,t} (eta^2 of the ca
         const ps::DColor f = ps::contribution(scene, x);
         const double ratio = f.r / (4.0 * fExpected);
         CHECK_MESSAGE(close(f.r, 4.0 * fExpected, 2e-3),
-                      "path " << describe(x) << ": expected f = " << num(4.0 * fExpected) << " (red), got " << num(f.r) << " (ratio "
-                              << num(ratio) << "): the glass vertex contributes deltaLobe(m, n, wLight, wCamera).fs = (1 - F) / |cos "
+                      "path " << describe(x) << ": expected f = " << num(4.0 * fExpected) << " (red), got " << num(f.r)
+                              << " (ratio " << num(ratio)
+                              << "): the glass vertex contributes deltaLobe(m, n, wLight, wCamera).fs = (1 - F) / |cos "
                                  "theta_C|"
-                              << (close(ratio, cosC / cosL, 1e-2) ? "; you divided by the cosine on the light's side: wLight and wCamera swapped?" : ""));
+                              << (close(ratio, cosC / cosL, 1e-2)
+                                      ? "; you divided by the cosine on the light's side: wLight and wCamera swapped?"
+                                      : ""));
         // p_{s,t}: only s = 0 and s = 3 can sample it.
         const double P = scene.lightSelectionProb(x0.sp.light);
-        const double jac = refractionJacobian(wC, kEta, 1.0);   // d sigma(wL) / d sigma(wC), sampled from the camera side
+        const double jac =
+            refractionJacobian(wC, kEta, 1.0);  // d sigma(wL) / d sigma(wC), sampled from the camera side
         const double s0 = toArea(cameraPdfW(scene, pf), pc, pf, n) * toArea(cosAt(n, pf, pg) / kPi, pf, pg, n) *
                           toArea((1.0 - FC) / jac, pg, p0, down);
         const double s3 = P * 1.0 * toArea(cosAt(down, p0, pg) / kPi, p0, pg, n) * toArea(1.0 - FL, pg, pf, n);
         const std::string what = "area light -> glass (refraction, 1 -> 1.6) -> floor -> pinhole";
-        checkPdf(scene, x, 0, s0, what + " (the camera subpath refracts: the lobe probability times |d sigma_C / d sigma_L| "
-                                         "= pdfCamera, the eta^2 Jacobian; pdfLight there is off by about " +
-                                      num(1.0 / jac) + ")");
+        checkPdf(scene, x, 0, s0,
+                 what +
+                     " (the camera subpath refracts: the lobe probability times |d sigma_C / d sigma_L| "
+                     "= pdfCamera, the eta^2 Jacobian; pdfLight there is off by about " +
+                     num(1.0 / jac) + ")");
         for (int s : {1, 2, 4}) checkPdf(scene, x, s, 0.0, what);
         checkPdf(scene, x, 3, s3, what + " (the light subpath refracts: the lobe probability 1 - F = pdfLight)");
     }
@@ -149,20 +158,23 @@ TEST_CASE("path space: refraction's delta lobe in f and p_{s,t} (eta^2 of the ca
         const ps::Scene& scene = openRoom();
         const ps::PathVertex cam = pinhole(scene);
         const DVec3 pf(0.3, 0.0, 0.4), pc = d3(cam.sp.p), n(0, 1, 0);
-        const DVec3 w = glm::normalize(DVec3(0.3, 1.0, 0.25));   // from the floor point to the sky
-        const ps::PathVertex sky = ps::backgroundVertex(scene, Vec3(w)), floor = surface(scene, Vec3(pf), Vec3(0, 1, 0), "floor");
+        const DVec3 w = glm::normalize(DVec3(0.3, 1.0, 0.25));  // from the floor point to the sky
+        const ps::PathVertex sky = ps::backgroundVertex(scene, Vec3(w)),
+                             floor = surface(scene, Vec3(pf), Vec3(0, 1, 0), "floor");
         const ps::Path x = {sky, floor, cam};
         const double P = scene.lightSelectionProb(scene.background), R = scene.radius;
         const double fExpected = 0.5 * w.y * (0.5 / kPi) * G(pf, n, pc, d3(scene.camera.forward())) * sensor(scene, pf);
         const ps::DColor f = ps::contribution(scene, x);
-        CHECK_MESSAGE(close(f.r, fExpected, 2e-3), "path " << describe(x) << ": expected f = " << num(fExpected)
-                                                           << " (red: L_bg |cos theta_floor| f_s G(floor, pinhole) W_e, no 1/d^2 "
-                                                              "towards infinity, Eq. 6.5), got "
-                                                           << num(f.r));
+        CHECK_MESSAGE(close(f.r, fExpected, 2e-3),
+                      "path " << describe(x) << ": expected f = " << num(fExpected)
+                              << " (red: L_bg |cos theta_floor| f_s G(floor, pinhole) W_e, no 1/d^2 "
+                                 "towards infinity, Eq. 6.5), got "
+                              << num(f.r));
         const std::string what = "background -> floor -> pinhole";
         const double camA = toArea(cameraPdfW(scene, pf), pc, pf, n);
         checkPdf(scene, x, 0, camA * (w.y / kPi), what + " (the camera's cosine bounce escapes: per solid angle)");
-        checkPdf(scene, x, 1, P * (1.0 / (4.0 * kPi)) * camA, what + " (a background direction, P(l) / (4 pi), joined to the floor)");
+        checkPdf(scene, x, 1, P * (1.0 / (4.0 * kPi)) * camA,
+                 what + " (a background direction, P(l) / (4 pi), joined to the floor)");
         checkPdf(scene, x, 2, P * (1.0 / (4.0 * kPi)) * w.y / (kPi * R * R),
                  what + " (a background particle starts on a disk of radius R: |cos| / (pi R^2) at the floor)");
         checkPdf(scene, x, 3, 0.0, what);
@@ -170,8 +182,10 @@ TEST_CASE("path space: refraction's delta lobe in f and p_{s,t} (eta^2 of the ca
         const DVec3 wCam = glm::normalize(DVec3(0.1, 0.3, 1.0));
         const ps::Path direct = {ps::backgroundVertex(scene, Vec3(wCam)), cam};
         const std::string whatDirect = "background -> pinhole";
-        checkPdf(scene, direct, 0, cameraPdfW(scene, pc + wCam), whatDirect + " (the camera ray's density per solid angle)");
-        checkPdf(scene, direct, 1, 0.0, whatDirect + " (a background direction cannot be joined to the pinhole, Eq. 6.12)");
+        checkPdf(scene, direct, 0, cameraPdfW(scene, pc + wCam),
+                 whatDirect + " (the camera ray's density per solid angle)");
+        checkPdf(scene, direct, 1, 0.0,
+                 whatDirect + " (a background direction cannot be joined to the pinhole, Eq. 6.12)");
         checkPdf(scene, direct, 2, 0.0, whatDirect);
     }
 }

@@ -22,7 +22,7 @@ double len(D3 a) { return std::sqrt(dot(a, a)); }
 D3 unit(D3 a) { return (1.0 / len(a)) * a; }
 D3 of(const ps::Vec3& v) { return {v.x, v.y, v.z}; }
 
-double triangleSolidAngle(D3 a, D3 b, D3 c) {   // seen from the origin
+double triangleSolidAngle(D3 a, D3 b, D3 c) {  // seen from the origin
     const double num = std::abs(dot(a, cross(b, c)));
     const double den = len(a) * len(b) * len(c) + dot(a, b) * len(c) + dot(a, c) * len(b) + dot(b, c) * len(a);
     return 2.0 * std::atan2(num, den);
@@ -37,10 +37,10 @@ TEST_CASE("exercise: the light tracer's pdf p_{2,1} of a length-2 path, by hand 
         Vec3 x0, n0, x1, n1;
     };
     const Case cases[] = {
-        {0.25, Vec3(0, 2, 0), Vec3(0, -1, 0), Vec3(0, 0, 0), Vec3(0, 1, 0)},             // straight down
-        {1.0, Vec3(0.5f, 3, -1), Vec3(0, -1, 0), Vec3(2, 0, 1.5f), Vec3(0, 1, 0)},        // oblique
-        {0.04, Vec3(0, 1, 0), Vec3(0.6f, -0.8f, 0), Vec3(1.5f, -1, 0.25f), Vec3(-1, 0, 0)}, // onto a wall
-        {2.0, Vec3(0, 0, 0), Vec3(0, 0, 1), Vec3(3, 1, 0.5f), Vec3(0, 0, -1)},             // grazing: 1/d^2 small
+        {0.25, Vec3(0, 2, 0), Vec3(0, -1, 0), Vec3(0, 0, 0), Vec3(0, 1, 0)},                 // straight down
+        {1.0, Vec3(0.5f, 3, -1), Vec3(0, -1, 0), Vec3(2, 0, 1.5f), Vec3(0, 1, 0)},           // oblique
+        {0.04, Vec3(0, 1, 0), Vec3(0.6f, -0.8f, 0), Vec3(1.5f, -1, 0.25f), Vec3(-1, 0, 0)},  // onto a wall
+        {2.0, Vec3(0, 0, 0), Vec3(0, 0, 1), Vec3(3, 1, 0.5f), Vec3(0, 0, -1)},               // grazing: 1/d^2 small
     };
     const double pi = 3.14159265358979323846;
     for (const Case& c : cases) {
@@ -52,12 +52,13 @@ TEST_CASE("exercise: the light tracer's pdf p_{2,1} of a length-2 path, by hand 
         const D3 p11 = x1 - x0 + (h / 2) * t + (h / 2) * b, p01 = x1 - x0 + (-h / 2) * t + (h / 2) * b;
         const double omega = triangleSolidAngle(p00, p10, p11) + triangleSolidAngle(p00, p11, p01);
         const double cos0 = dot(n0, unit(x1 - x0));
-        const double expected = (1.0 / c.lightArea) * (cos0 / pi) * omega / (h * h);   // P(hit patch) / area
+        const double expected = (1.0 / c.lightArea) * (cos0 / pi) * omega / (h * h);  // P(hit patch) / area
         const double got = ps::lightTracerPdfK2(c.lightArea, c.x0, c.n0, c.x1, c.n1);
         CHECK_MESSAGE(std::abs(got / expected - 1.0) < 1e-4,
-                      "lightTracerPdfK2(light area " << c.lightArea << ", cos theta_0 " << cos0 << ", |cos theta_1| "
-                      << std::abs(dot(n1, unit(x1 - x0))) << ", d " << len(x1 - x0) << "): expected " << expected
-                      << " per unit area (per unit light area too), got " << got << " (ratio " << got / expected
-                      << "; the cosine at x1 or the 1/d^2 of Eq. 6.6 missing, or 1/A of the light?)");
+                      "lightTracerPdfK2(light area "
+                          << c.lightArea << ", cos theta_0 " << cos0 << ", |cos theta_1| "
+                          << std::abs(dot(n1, unit(x1 - x0))) << ", d " << len(x1 - x0) << "): expected " << expected
+                          << " per unit area (per unit light area too), got " << got << " (ratio " << got / expected
+                          << "; the cosine at x1 or the 1/d^2 of Eq. 6.6 missing, or 1/A of the light?)");
     }
 }

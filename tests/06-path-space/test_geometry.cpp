@@ -16,7 +16,8 @@ ps::PathVertex at(const Vec3& p, const Vec3& n) {
 
 }  // namespace
 
-TEST_CASE("path space: the geometry term G = |cos a| |cos b| / d^2, with point lights, the pinhole and the background (Eq. 6.4, 6.5) [2 pts]") {
+TEST_CASE(
+    "path space: the geometry term G = |cos a| |cos b| / d^2, with point lights, the pinhole and the background (Eq. 6.4, 6.5) [2 pts]") {
     // a = (0,0,0) facing +y, b = (3,4,0) facing -x: d^2 = 25, cos a = 4/5, cos b = 3/5.
     const ps::PathVertex a = at(Vec3(0, 0, 0), Vec3(0, 1, 0)), b = at(Vec3(3, 4, 0), Vec3(-1, 0, 0));
     struct Case {
@@ -24,11 +25,11 @@ TEST_CASE("path space: the geometry term G = |cos a| |cos b| / d^2, with point l
         ps::PathVertex u, v;
         double expected;
     };
-    ps::PathVertex pl = at(Vec3(3, 4, 0), Vec3(0, 0, 1));   // its normal must be ignored
+    ps::PathVertex pl = at(Vec3(3, 4, 0), Vec3(0, 0, 1));  // its normal must be ignored
     pl.pointLight = true;
-    ps::PathVertex cam = at(Vec3(3, 4, 0), Vec3(0, -1, 0));   // the pinhole, forward -y
+    ps::PathVertex cam = at(Vec3(3, 4, 0), Vec3(0, -1, 0));  // the pinhole, forward -y
     cam.pinhole = true;
-    ps::PathVertex back = at(Vec3(100, 100, 100), glm::normalize(Vec3(1, 2, 2)));   // direction (1,2,2)/3
+    ps::PathVertex back = at(Vec3(100, 100, 100), glm::normalize(Vec3(1, 2, 2)));  // direction (1,2,2)/3
     back.infinite = true;
     ps::PathVertex backPl = pl;
     backPl.sp.p = Vec3(1, 1, 1);
@@ -50,7 +51,8 @@ TEST_CASE("path space: the geometry term G = |cos a| |cos b| / d^2, with point l
     for (const Case& c : cases) {
         const double got = ps::geometryTerm(c.u, c.v);
         CHECK_MESSAGE(close(got, c.expected, 1e-5), c.what << ": a at " << str(c.u.sp.p) << ", b at " << str(c.v.sp.p)
-                                                           << ": expected G = " << num(c.expected) << ", got " << num(got));
+                                                           << ": expected G = " << num(c.expected) << ", got "
+                                                           << num(got));
     }
 }
 
@@ -73,7 +75,8 @@ TEST_CASE("path space: a solid-angle pdf as an area pdf, pdfW |cos theta_to| / d
     };
     for (const Case& c : cases) {
         const double got = ps::pdfSolidAngleToArea(float(c.pdfW), c.from, c.to);
-        CHECK_MESSAGE(close(got, c.expected, 1e-5), c.what << ": from " << str(c.from.sp.p) << " to " << str(c.to.sp.p) << ", pdfW "
-                                                           << c.pdfW << ": expected " << num(c.expected) << " per unit area, got " << num(got));
+        CHECK_MESSAGE(close(got, c.expected, 1e-5), c.what << ": from " << str(c.from.sp.p) << " to " << str(c.to.sp.p)
+                                                           << ", pdfW " << c.pdfW << ": expected " << num(c.expected)
+                                                           << " per unit area, got " << num(got));
     }
 }

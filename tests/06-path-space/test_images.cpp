@@ -14,13 +14,11 @@ using namespace lesson06;
 
 namespace {
 
-constexpr int kIterations = 16000;   // of 256 paths each
+constexpr int kIterations = 16000;  // of 256 paths each
 constexpr uint64_t kSeed = 6101;
 
 const ps::Scene& gapBox() {
-    static const ps::Scene s = [] {
-        return ps::loadScene(sourcePath("tests/06-path-space/data/gap-box.scene"));
-    }();
+    static const ps::Scene s = [] { return ps::loadScene(sourcePath("tests/06-path-space/data/gap-box.scene")); }();
     return s;
 }
 
@@ -35,16 +33,19 @@ const Render& technique(int k, int s) {
 void checkAgainstNEE(int k, int s) {
     const Render& a = technique(k, s);
     const Render& b = technique(k, 1);
-    INFO("gap box 16 x 16, paths of length k = " << k << ", technique (s, t) = (" << s << ", " << k + 1 - s << ") against (1, " << k
-                                                     << "), " << kIterations << " x 256 paths each");
-    CHECK_MESSAGE(a.stats.bad() == 0, "expected 0 NaN and 0 Inf samples, got " << a.stats.nan << " NaN and " << a.stats.inf << " Inf");
-    CHECK_MESSAGE(b.stats.bad() == 0, "technique (1, " << k << "): expected 0 NaN and 0 Inf samples, got " << b.stats.nan << " NaN and "
-                                                       << b.stats.inf << " Inf");
+    INFO("gap box 16 x 16, paths of length k = " << k << ", technique (s, t) = (" << s << ", " << k + 1 - s
+                                                 << ") against (1, " << k << "), " << kIterations
+                                                 << " x 256 paths each");
+    CHECK_MESSAGE(a.stats.bad() == 0,
+                  "expected 0 NaN and 0 Inf samples, got " << a.stats.nan << " NaN and " << a.stats.inf << " Inf");
+    CHECK_MESSAGE(b.stats.bad() == 0, "technique (1, " << k << "): expected 0 NaN and 0 Inf samples, got "
+                                                       << b.stats.nan << " NaN and " << b.stats.inf << " Inf");
     CHECK_MESSAGE(total(a.mean) > 0.0, "expected a lit image, got a black one (is f or p_{s,t} 0?)");
-    CHECK_MESSAGE(total(b.mean) > 0.0, "technique (1, " << k << "): expected a lit image, got a black one (is f or p_{s,t} 0?)");
+    CHECK_MESSAGE(total(b.mean) > 0.0,
+                  "technique (1, " << k << "): expected a lit image, got a black one (is f or p_{s,t} 0?)");
     const ps::stats::ZTestResult z = ps::stats::zTestImages(a.mean, a.variance, b.mean, b.variance, alpha());
-    CHECK_MESSAGE(z.passed, "expected the same image within the noise (a = (" << s << ", " << k + 1 - s << "), b = (1, " << k << ")), got\n  "
-                                                                             << z.report);
+    CHECK_MESSAGE(z.passed, "expected the same image within the noise (a = (" << s << ", " << k + 1 - s << "), b = (1, "
+                                                                              << k << ")), got\n  " << z.report);
 }
 
 }  // namespace
@@ -54,18 +55,20 @@ TEST_CASE("path space: paths of length 2: techniques (0,3), (1,2), (2,1) give th
     checkAgainstNEE(2, 2);
 }
 
-TEST_CASE("path space: paths of length 3: techniques (0,4), (1,3), (2,2), (3,1) give the same image (Eq. 6.2) [3 pts]") {
+TEST_CASE(
+    "path space: paths of length 3: techniques (0,4), (1,3), (2,2), (3,1) give the same image (Eq. 6.2) [3 pts]") {
     checkAgainstNEE(3, 0);
     checkAgainstNEE(3, 2);
     checkAgainstNEE(3, 3);
 }
 
-TEST_CASE("path space: the sum over k = 1, 2, 3 of technique (1, k) equals lesson 3's path tracer at maxdepth 2 (Eq. 6.1) [2 pts]") {
+TEST_CASE(
+    "path space: the sum over k = 1, 2, 3 of technique (1, k) equals lesson 3's path tracer at maxdepth 2 (Eq. 6.1) [2 pts]") {
     ps::Image sum(16, 16), var(16, 16);
     for (int k = 1; k <= 3; ++k) {
         const Render& r = technique(k, 1);
-        CHECK_MESSAGE(r.stats.bad() == 0, "technique (1, " << k << "): expected 0 NaN and 0 Inf samples, got " << r.stats.nan << " NaN and "
-                                                           << r.stats.inf << " Inf");
+        CHECK_MESSAGE(r.stats.bad() == 0, "technique (1, " << k << "): expected 0 NaN and 0 Inf samples, got "
+                                                           << r.stats.nan << " NaN and " << r.stats.inf << " Inf");
         for (size_t i = 0; i < sum.pixels.size(); ++i) {
             sum.pixels[i] += r.mean.pixels[i];
             var.pixels[i] += r.variance.pixels[i];
@@ -80,8 +83,11 @@ TEST_CASE("path space: the sum over k = 1, 2, 3 of technique (1, k) equals lesso
     opt.threads = 1;
     const ps::RenderResult ref = ps::render(scene, *pt, opt);
     CHECK_MESSAGE(total(sum) > 0.0, "expected a lit image, got a black one (is f or p_{s,t} 0?)");
-    const ps::stats::ZTestResult z = ps::stats::zTestImages(sum, var, ref.film.mean(), ref.film.varianceOfMean(), alpha());
-    CHECK_MESSAGE(z.passed, "gap box 16 x 16: expected the sum over k = 1, 2, 3 of technique (1, k) (a) to equal pt with maxdepth 2 (b, "
-                            "8000 spp, seed "
-                                << kSeed << ") within the noise, got\n  " << z.report);
+    const ps::stats::ZTestResult z =
+        ps::stats::zTestImages(sum, var, ref.film.mean(), ref.film.varianceOfMean(), alpha());
+    CHECK_MESSAGE(
+        z.passed,
+        "gap box 16 x 16: expected the sum over k = 1, 2, 3 of technique (1, k) (a) to equal pt with maxdepth 2 (b, "
+        "8000 spp, seed "
+            << kSeed << ") within the noise, got\n  " << z.report);
 }

@@ -17,8 +17,8 @@ DVec3 d3(const Vec3& v) { return DVec3(v); }
 enum class Kind { AreaLight, PointLight, Diffuse, Phong, Pinhole };
 struct Vtx {
     Kind kind;
-    DVec3 p, n;        // n: the surface normal (diffuse, Phong, area light)
-    DVec3 e1, e2;      // orthonormal tangents of the vertex's plane (free vertices)
+    DVec3 p, n;    // n: the surface normal (diffuse, Phong, area light)
+    DVec3 e1, e2;  // orthonormal tangents of the vertex's plane (free vertices)
 };
 
 // Any orthonormal pair perpendicular to the unit a.
@@ -50,7 +50,8 @@ void invPhong(const DVec3& r, double e, const DVec3& w, std::vector<double>& u) 
 DVec3 reflectD(const DVec3& w, const DVec3& n) { return 2.0 * glm::dot(w, n) * n - w; }
 
 // The random numbers that make technique s produce the path with vertex positions p (Eq. 6.8).
-std::vector<double> randomNumbersOf(const ps::Scene& scene, const std::vector<Vtx>& v, const std::vector<DVec3>& p, int s) {
+std::vector<double> randomNumbersOf(const ps::Scene& scene, const std::vector<Vtx>& v, const std::vector<DVec3>& p,
+                                    int s) {
     const int k = int(v.size()) - 1;
     std::vector<double> u;
     auto dir = [&](int from, int to) { return glm::normalize(p[size_t(to)] - p[size_t(from)]); };
@@ -61,7 +62,7 @@ std::vector<double> randomNumbersOf(const ps::Scene& scene, const std::vector<Vt
         else invCosine(ns, wTo, u);
     };
     if (s >= 1) {
-        if (v[0].kind == Kind::AreaLight) {   // uniform on the 1 x 1 light (area 1: du = dA)
+        if (v[0].kind == Kind::AreaLight) {  // uniform on the 1 x 1 light (area 1: du = dA)
             u.push_back(glm::dot(p[0], v[0].e1));
             u.push_back(glm::dot(p[0], v[0].e2));
         }
@@ -75,7 +76,7 @@ std::vector<double> randomNumbersOf(const ps::Scene& scene, const std::vector<Vt
         // Uniform raster position over the image: u = raster / (width, height).
         const DVec3 e = d3(scene.camera.position()), f = glm::normalize(DVec3(0, 1, 0) - e);
         const DVec3 right = glm::normalize(glm::cross(f, DVec3(0, 1, 0))), up = glm::cross(right, f);
-        const double tanY = std::tan(30.0 * kPi / 180.0), tanX = tanY;   // fov 60, square
+        const double tanY = std::tan(30.0 * kPi / 180.0), tanX = tanY;  // fov 60, square
         const DVec3 d = p[size_t(k) - 1] - e;
         const double z = glm::dot(d, f);
         u.push_back((glm::dot(d, right) / z / tanX + 1.0) * 0.5);
@@ -93,7 +94,10 @@ double determinant(std::vector<std::vector<double>> a) {
         for (size_t r = c + 1; r < n; ++r)
             if (std::abs(a[r][c]) > std::abs(a[piv][c])) piv = r;
         if (a[piv][c] == 0.0) return 0.0;
-        if (piv != c) { std::swap(a[piv], a[c]); det = -det; }
+        if (piv != c) {
+            std::swap(a[piv], a[c]);
+            det = -det;
+        }
         det *= a[c][c];
         for (size_t r = c + 1; r < n; ++r) {
             const double m = a[r][c] / a[c][c];
@@ -106,7 +110,7 @@ double determinant(std::vector<std::vector<double>> a) {
 // p_{s,t} by the finite-difference Jacobian of u(x) over the free vertices' plane coordinates.
 double numericPdf(const ps::Scene& scene, const std::vector<Vtx>& v, int s) {
     std::vector<DVec3> p;
-    std::vector<std::pair<size_t, DVec3>> freeDims;   // (vertex, tangent)
+    std::vector<std::pair<size_t, DVec3>> freeDims;  // (vertex, tangent)
     for (size_t i = 0; i < v.size(); ++i) {
         p.push_back(v[i].p);
         if (v[i].kind != Kind::PointLight && v[i].kind != Kind::Pinhole) {
@@ -115,7 +119,8 @@ double numericPdf(const ps::Scene& scene, const std::vector<Vtx>& v, int s) {
         }
     }
     const std::vector<double> u0 = randomNumbersOf(scene, v, p, s);
-    REQUIRE_MESSAGE(u0.size() == freeDims.size(), "test setup: " << u0.size() << " random numbers for " << freeDims.size() << " coordinates");
+    REQUIRE_MESSAGE(u0.size() == freeDims.size(),
+                    "test setup: " << u0.size() << " random numbers for " << freeDims.size() << " coordinates");
     const size_t n = u0.size();
     std::vector<std::vector<double>> J(n, std::vector<double>(n));
     const double h = 1e-6;
@@ -126,7 +131,7 @@ double numericPdf(const ps::Scene& scene, const std::vector<Vtx>& v, int s) {
         const std::vector<double> up = randomNumbersOf(scene, v, plus, s), um = randomNumbersOf(scene, v, minus, s);
         for (size_t r = 0; r < n; ++r) {
             double d = up[r] - um[r];
-            if (r % 2 == 1) d -= std::round(d);   // the angle wraps around at +-1/2
+            if (r % 2 == 1) d -= std::round(d);  // the angle wraps around at +-1/2
             J[r][c] = d / (2.0 * h);
         }
     }
@@ -157,7 +162,10 @@ TestPath makePath(const std::string& name, const std::vector<std::pair<Kind, Vec
             t.x.push_back(areaLightPoint(scene, p));
             v.n = d3(t.x.back().sp.n), v.e1 = DVec3(1, 0, 0), v.e2 = DVec3(0, 0, 1);
             break;
-        case Kind::PointLight: t.x.push_back(pointLightVertex(scene)); v.p = d3(t.x.back().sp.p); break;
+        case Kind::PointLight:
+            t.x.push_back(pointLightVertex(scene));
+            v.p = d3(t.x.back().sp.p);
+            break;
         case Kind::Diffuse:
             t.x.push_back(surface(scene, p, Vec3(0, 1, 0), "floor"));
             v.n = DVec3(0, 1, 0), v.e1 = DVec3(1, 0, 0), v.e2 = DVec3(0, 0, 1);
@@ -166,7 +174,10 @@ TestPath makePath(const std::string& name, const std::vector<std::pair<Kind, Vec
             t.x.push_back(surface(scene, p, Vec3(0, 0, -1), "wall"));
             v.n = DVec3(0, 0, -1), v.e1 = DVec3(1, 0, 0), v.e2 = DVec3(0, 1, 0);
             break;
-        case Kind::Pinhole: t.x.push_back(pinhole(scene)); v.p = d3(t.x.back().sp.p); break;
+        case Kind::Pinhole:
+            t.x.push_back(pinhole(scene));
+            v.p = d3(t.x.back().sp.p);
+            break;
         }
         t.v.push_back(v);
     }
@@ -183,43 +194,51 @@ void checkAllTechniques(const TestPath& t) {
         CHECK_MESSAGE(std::isfinite(got), "expected a finite pdf, got " << got);
         const bool cannot = tt == 0 || (s == 0 && t.v[0].kind == Kind::PointLight);
         if (cannot) {
-            CHECK_MESSAGE(got == 0.0, "this technique cannot sample the path (" << std::string(tt == 0 ? "t = 0: no ray hits a pinhole" : "s = 0: no ray hits a point light")
-                                                                                << "): expected p = 0 exactly, got " << num(got));
+            CHECK_MESSAGE(got == 0.0, "this technique cannot sample the path ("
+                                          << std::string(tt == 0 ? "t = 0: no ray hits a pinhole"
+                                                                 : "s = 0: no ray hits a point light")
+                                          << "): expected p = 0 exactly, got " << num(got));
             continue;
         }
         const double expected = numericPdf(scene, t.v, s);
         REQUIRE_MESSAGE(expected > 0.0, "test setup: the path should be sampleable");
-        CHECK_MESSAGE(close(got, expected, 2e-3), "expected p_{s,t} = P(light) |det du/dx| = " << num(expected)
-                                                                                                << " (finite-difference Jacobian of the sampling map), got " << num(got)
-                                                                                                << " (ratio " << num(got / expected) << ")");
+        CHECK_MESSAGE(close(got, expected, 2e-3), "expected p_{s,t} = P(light) |det du/dx| = "
+                                                      << num(expected)
+                                                      << " (finite-difference Jacobian of the sampling map), got "
+                                                      << num(got) << " (ratio " << num(got / expected) << ")");
     }
 }
 
 }  // namespace
 
-TEST_CASE("path space: p_{s,t} of paths of length 2 under every technique equals the Jacobian of the sampling map (Eq. 6.7-6.10) [3 pts]") {
-    checkAllTechniques(makePath("area light -> floor -> pinhole",
-                                {{Kind::AreaLight, Vec3(0.1f, 2.0f, -0.2f)}, {Kind::Diffuse, Vec3(0.3f, 0.0f, 0.4f)}, {Kind::Pinhole, Vec3(0.0f)}}));
-    checkAllTechniques(makePath("point light -> floor -> pinhole",
-                                {{Kind::PointLight, Vec3(0.0f)}, {Kind::Diffuse, Vec3(-0.5f, 0.0f, 0.9f)}, {Kind::Pinhole, Vec3(0.0f)}}));
-    checkAllTechniques(makePath("area light -> glossy wall -> pinhole",
-                                {{Kind::AreaLight, Vec3(-0.3f, 2.0f, 0.4f)}, {Kind::Phong, Vec3(-0.4f, 0.8f, 2.0f)}, {Kind::Pinhole, Vec3(0.0f)}}));
+TEST_CASE(
+    "path space: p_{s,t} of paths of length 2 under every technique equals the Jacobian of the sampling map (Eq. 6.7-6.10) [3 pts]") {
+    checkAllTechniques(makePath("area light -> floor -> pinhole", {{Kind::AreaLight, Vec3(0.1f, 2.0f, -0.2f)},
+                                                                   {Kind::Diffuse, Vec3(0.3f, 0.0f, 0.4f)},
+                                                                   {Kind::Pinhole, Vec3(0.0f)}}));
+    checkAllTechniques(makePath(
+        "point light -> floor -> pinhole",
+        {{Kind::PointLight, Vec3(0.0f)}, {Kind::Diffuse, Vec3(-0.5f, 0.0f, 0.9f)}, {Kind::Pinhole, Vec3(0.0f)}}));
+    checkAllTechniques(makePath("area light -> glossy wall -> pinhole", {{Kind::AreaLight, Vec3(-0.3f, 2.0f, 0.4f)},
+                                                                         {Kind::Phong, Vec3(-0.4f, 0.8f, 2.0f)},
+                                                                         {Kind::Pinhole, Vec3(0.0f)}}));
 }
 
-TEST_CASE("path space: p_{s,t} of paths of length 3 under every technique equals the Jacobian of the sampling map (Eq. 6.7-6.10) [3 pts]") {
-    checkAllTechniques(makePath("area light -> glossy wall -> floor -> pinhole",
-                                {{Kind::AreaLight, Vec3(0.1f, 2.0f, -0.2f)},
-                                 {Kind::Phong, Vec3(-0.4f, 0.8f, 2.0f)},
-                                 {Kind::Diffuse, Vec3(0.3f, 0.0f, 0.4f)},
-                                 {Kind::Pinhole, Vec3(0.0f)}}));
-    checkAllTechniques(makePath("area light -> floor -> glossy wall -> pinhole",
-                                {{Kind::AreaLight, Vec3(0.2f, 2.0f, 0.1f)},
-                                 {Kind::Diffuse, Vec3(-0.2f, 0.0f, 1.2f)},
-                                 {Kind::Phong, Vec3(0.3f, 0.6f, 2.0f)},
-                                 {Kind::Pinhole, Vec3(0.0f)}}));
-    checkAllTechniques(makePath("point light -> glossy wall -> floor -> pinhole",
-                                {{Kind::PointLight, Vec3(0.0f)},
-                                 {Kind::Phong, Vec3(0.5f, 1.1f, 2.0f)},
-                                 {Kind::Diffuse, Vec3(0.1f, 0.0f, 0.5f)},
-                                 {Kind::Pinhole, Vec3(0.0f)}}));
+TEST_CASE(
+    "path space: p_{s,t} of paths of length 3 under every technique equals the Jacobian of the sampling map (Eq. 6.7-6.10) [3 pts]") {
+    checkAllTechniques(
+        makePath("area light -> glossy wall -> floor -> pinhole", {{Kind::AreaLight, Vec3(0.1f, 2.0f, -0.2f)},
+                                                                   {Kind::Phong, Vec3(-0.4f, 0.8f, 2.0f)},
+                                                                   {Kind::Diffuse, Vec3(0.3f, 0.0f, 0.4f)},
+                                                                   {Kind::Pinhole, Vec3(0.0f)}}));
+    checkAllTechniques(
+        makePath("area light -> floor -> glossy wall -> pinhole", {{Kind::AreaLight, Vec3(0.2f, 2.0f, 0.1f)},
+                                                                   {Kind::Diffuse, Vec3(-0.2f, 0.0f, 1.2f)},
+                                                                   {Kind::Phong, Vec3(0.3f, 0.6f, 2.0f)},
+                                                                   {Kind::Pinhole, Vec3(0.0f)}}));
+    checkAllTechniques(
+        makePath("point light -> glossy wall -> floor -> pinhole", {{Kind::PointLight, Vec3(0.0f)},
+                                                                    {Kind::Phong, Vec3(0.5f, 1.1f, 2.0f)},
+                                                                    {Kind::Diffuse, Vec3(0.1f, 0.0f, 0.5f)},
+                                                                    {Kind::Pinhole, Vec3(0.0f)}}));
 }

@@ -56,7 +56,7 @@ using ps::testrender::total;
 struct JoinedPath {
     std::vector<PathVertex> x;
     std::vector<float> pL, pE;
-    int s = 0, t = 0;   // the technique that made it
+    int s = 0, t = 0;  // the technique that made it
 };
 
 inline JoinedPath join(const PathVertex* y, int s, const PathVertex* z, int t, const ps::ReversePdfs& rev) {

@@ -55,7 +55,7 @@ const ps::Scene& scene() {
 PathVertex hit(const Vec3& o, const Vec3& to, const Color& beta) {
     ps::SurfacePoint sp;
     const Vec3 d = glm::normalize(to - o);
-    ps::Ray ray(o + 1e-3f * d, d);   // o may lie on a surface: start just off it
+    ps::Ray ray(o + 1e-3f * d, d);  // o may lie on a surface: start just off it
     const bool ok = scene().intersect(ray, sp);
     REQUIRE_MESSAGE(ok, "test setup: the ray from " << str(o) << " towards " << str(to) << " hits nothing");
     PathVertex v = ps::surfaceVertex(scene(), sp);
@@ -91,11 +91,14 @@ std::string ratio(const Color& got, const Color& expected) {
     return o.str();
 }
 
-double cosAt(const PathVertex& v, const Vec3& towards) { return std::abs(glm::dot(v.sp.n, glm::normalize(towards - v.sp.p))); }
+double cosAt(const PathVertex& v, const Vec3& towards) {
+    return std::abs(glm::dot(v.sp.n, glm::normalize(towards - v.sp.p)));
+}
 
 }  // namespace
 
-TEST_CASE("connectEmitter (s = 0): beta times the emission the camera subpath's last vertex sends back, front side only [1 pt]") {
+TEST_CASE(
+    "connectEmitter (s = 0): beta times the emission the camera subpath's last vertex sends back, front side only [1 pt]") {
     const PathVertex z0 = camera();
     const PathVertex z1 = hit(z0.p(), Vec3(0.2f, 0.0f, 0.3f), Color(0.7f, 1.3f, 0.9f));
     // Front side: from the floor up into the light.
@@ -107,8 +110,9 @@ TEST_CASE("connectEmitter (s = 0): beta times the emission the camera subpath's 
         const ps::Connection c = ps::connectEmitter(scene(), z, 3);
         const Color expected = beta * kLe;
         CHECK_MESSAGE((c.valid && close(c.value, expected)),
-                      "z_2 on the front of the area light (emission 4 3 2), beta_2 = " << str(beta) << ": expected valid, C* = beta Le = "
-                          << str(expected) << ", got valid = " << c.valid << ", " << str(c.value) << " " << ratio(c.value, expected)
+                      "z_2 on the front of the area light (emission 4 3 2), beta_2 = "
+                          << str(beta) << ": expected valid, C* = beta Le = " << str(expected)
+                          << ", got valid = " << c.valid << ", " << str(c.value) << " " << ratio(c.value, expected)
                           << ". C* = beta_{t-1} Le(z_{t-1} -> z_{t-2}) (Eq. 7.4): is beta missing?");
     }
     // Back side: from the ceiling down onto the light's back.
@@ -118,9 +122,11 @@ TEST_CASE("connectEmitter (s = 0): beta times the emission the camera subpath's 
     {
         const PathVertex z[] = {z0, c1, back};
         const ps::Connection c = ps::connectEmitter(scene(), z, 3);
-        CHECK_MESSAGE(!c.valid, "z_2 on the BACK of the area light (seen from the ceiling above it): expected no contribution, got "
-                                    << str(c.value)
-                                    << ". The emitted direction is from z_{t-1} towards z_{t-2}, not the direction the walk arrived in");
+        CHECK_MESSAGE(
+            !c.valid,
+            "z_2 on the BACK of the area light (seen from the ceiling above it): expected no contribution, got "
+                << str(c.value)
+                << ". The emitted direction is from z_{t-1} towards z_{t-2}, not the direction the walk arrived in");
     }
     // The background: a vertex at infinity.
     {
@@ -130,9 +136,10 @@ TEST_CASE("connectEmitter (s = 0): beta times the emission the camera subpath's 
         const PathVertex z[] = {z0, z1, zb};
         const ps::Connection c = ps::connectEmitter(scene(), z, 3);
         const Color expected = beta * Color(0.05f, 0.06f, 0.08f);
-        CHECK_MESSAGE((c.valid && close(c.value, expected)), "z_2 at infinity (background 0.05 0.06 0.08): expected C* = "
-                                                                 << str(expected) << ", got valid = " << c.valid << ", "
-                                                                 << str(c.value) << " " << ratio(c.value, expected));
+        CHECK_MESSAGE((c.valid && close(c.value, expected)),
+                      "z_2 at infinity (background 0.05 0.06 0.08): expected C* = "
+                          << str(expected) << ", got valid = " << c.valid << ", " << str(c.value) << " "
+                          << ratio(c.value, expected));
     }
     // A vertex that does not emit.
     {
@@ -142,11 +149,12 @@ TEST_CASE("connectEmitter (s = 0): beta times the emission the camera subpath's 
     }
 }
 
-TEST_CASE("connectCamera (t = 1): lesson 5's connection to the pinhole times f, or the light's own emission, no cosine at a point light [2 pts]") {
+TEST_CASE(
+    "connectCamera (t = 1): lesson 5's connection to the pinhole times f, or the light's own emission, no cosine at a point light [2 pts]") {
     const PathVertex z0 = camera();
     const Color betaLight(3.0f, 2.5f, 2.0f), beta(0.5f, 1.5f, 0.8f);
     // s = 2: the floor point (0.3, 0, 0.5), lit from the area light.
-    const PathVertex y0 = hit(Vec3(0.0f, 1.0f, 0.0f), Vec3(0.0f, 2.0f, 0.1f), betaLight);   // from below: the front
+    const PathVertex y0 = hit(Vec3(0.0f, 1.0f, 0.0f), Vec3(0.0f, 2.0f, 0.1f), betaLight);  // from below: the front
     const PathVertex y1 = hit(z0.p(), Vec3(0.3f, 0.0f, 0.5f), beta);
     REQUIRE(y0.onLight);
     {
@@ -156,11 +164,13 @@ TEST_CASE("connectCamera (t = 1): lesson 5's connection to the pinhole times f, 
         REQUIRE(cc.valid);
         const Color expected = beta * (kFloor / kPi) * cc.importance;
         CHECK_MESSAGE((c.valid && close(c.value, expected)),
-                      "s = 2, y_1 on the floor (albedo 0.5 0.4 0.3), beta_1 = " << str(beta) << ": expected C* = beta (albedo / pi) importance = "
-                          << str(expected) << ", got valid = " << c.valid << ", " << str(c.value) << " " << ratio(c.value, expected)
+                      "s = 2, y_1 on the floor (albedo 0.5 0.4 0.3), beta_1 = "
+                          << str(beta) << ": expected C* = beta (albedo / pi) importance = " << str(expected)
+                          << ", got valid = " << c.valid << ", " << str(c.value) << " " << ratio(c.value, expected)
                           << ". Missing beta, f or connectToCamera's importance (Eq. 7.4)?");
-        CHECK_MESSAGE(glm::length(c.raster - cc.raster) < 1e-4f, "s = 2: expected c.raster = connectToCamera's " << str(cc.raster)
-                                                                     << " (where the point lands), got " << str(c.raster));
+        CHECK_MESSAGE(glm::length(c.raster - cc.raster) < 1e-4f,
+                      "s = 2: expected c.raster = connectToCamera's "
+                          << str(cc.raster) << " (where the point lands), got " << str(c.raster));
     }
     // s = 1 on the area light, seen from below by the camera.
     {
@@ -170,8 +180,9 @@ TEST_CASE("connectCamera (t = 1): lesson 5's connection to the pinhole times f, 
         REQUIRE(cc.valid);
         const Color expected = betaLight * kLe * cc.importance;
         CHECK_MESSAGE((c.valid && close(c.value, expected)),
-                      "s = 1, y_0 on the area light (emission 4 3 2), beta_0 = " << str(betaLight) << ": expected C* = beta Le importance = "
-                          << str(expected) << ", got valid = " << c.valid << ", " << str(c.value) << " " << ratio(c.value, expected)
+                      "s = 1, y_0 on the area light (emission 4 3 2), beta_0 = "
+                          << str(betaLight) << ": expected C* = beta Le importance = " << str(expected)
+                          << ", got valid = " << c.valid << ", " << str(c.value) << " " << ratio(c.value, expected)
                           << ". For s = 1, f is the light's emission towards the camera");
     }
     // s = 1 at the point light: its intensity, and no cosine at the light (it has no surface).
@@ -179,7 +190,7 @@ TEST_CASE("connectCamera (t = 1): lesson 5's connection to the pinhole times f, 
         const int l = lightOfKind(ps::LightKind::Point);
         PathVertex yp;
         yp.sp.p = scene().lights[size_t(l)].position;
-        yp.sp.n = glm::normalize(Vec3(0.3f, -1.0f, 0.2f));   // meaningless at a point: must not count
+        yp.sp.n = glm::normalize(Vec3(0.3f, -1.0f, 0.2f));  // meaningless at a point: must not count
         yp.sp.light = l;
         yp.onLight = yp.pointLight = true;
         yp.beta = betaLight;
@@ -188,10 +199,12 @@ TEST_CASE("connectCamera (t = 1): lesson 5's connection to the pinhole times f, 
         const ps::CameraConnection cc = ps::connectToCamera(scene(), yp.sp, false);
         REQUIRE(cc.valid);
         const Color expected = betaLight * Color(6.0f, 5.0f, 4.0f) * cc.importance;
-        CHECK_MESSAGE((c.valid && close(c.value, expected)),
-                      "s = 1 at the point light (intensity 6 5 4): expected C* = beta I importance = "
-                          << str(expected) << ", got valid = " << c.valid << ", " << str(c.value) << " " << ratio(c.value, expected)
-                          << ". A point light has no surface: connectToCamera(..., onSurface = false), no |cos theta_y|");
+        CHECK_MESSAGE(
+            (c.valid && close(c.value, expected)),
+            "s = 1 at the point light (intensity 6 5 4): expected C* = beta I importance = "
+                << str(expected) << ", got valid = " << c.valid << ", " << str(c.value) << " "
+                << ratio(c.value, expected)
+                << ". A point light has no surface: connectToCamera(..., onSurface = false), no |cos theta_y|");
     }
     // A background y_0 cannot be joined to the pinhole; a point behind the blocker is not seen.
     {
@@ -199,20 +212,26 @@ TEST_CASE("connectCamera (t = 1): lesson 5's connection to the pinhole times f, 
         yb.beta = betaLight;
         const PathVertex y[] = {yb};
         const ps::Connection c = ps::connectCamera(scene(), y, 1);
-        CHECK_MESSAGE(!c.valid, "s = 1 with y_0 at infinity (the background): a direction cannot be joined to the pinhole "
-                                "(Eq. 7.12); expected no contribution, got " << str(c.value));
+        CHECK_MESSAGE(!c.valid,
+                      "s = 1 with y_0 at infinity (the background): a direction cannot be joined to the pinhole "
+                      "(Eq. 7.12); expected no contribution, got "
+                          << str(c.value));
     }
     {
-        const PathVertex yHidden = hit(Vec3(1.5f, 2.9f, 2.05f), Vec3(1.5f, 0.0f, 2.05f), beta);   // the floor behind the sphere
+        const PathVertex yHidden =
+            hit(Vec3(1.5f, 2.9f, 2.05f), Vec3(1.5f, 0.0f, 2.05f), beta);  // the floor behind the sphere
         const PathVertex y[] = {y0, yHidden};
         REQUIRE(!ps::connectToCamera(scene(), yHidden.sp, true).valid);
         const ps::Connection c = ps::connectCamera(scene(), y, 2);
-        CHECK_MESSAGE(!c.valid, "s = 2 with y_1 on the floor behind the mirror sphere: the camera cannot see it; expected no "
-                                "contribution, got " << str(c.value));
+        CHECK_MESSAGE(!c.valid,
+                      "s = 2 with y_1 on the floor behind the mirror sphere: the camera cannot see it; expected no "
+                      "contribution, got "
+                          << str(c.value));
     }
 }
 
-TEST_CASE("connectLight (s = 1): lesson 2's light sample, with the light-selection probability, from an area light, a point light and the background [2 pts]") {
+TEST_CASE(
+    "connectLight (s = 1): lesson 2's light sample, with the light-selection probability, from an area light, a point light and the background [2 pts]") {
     const PathVertex z0 = camera();
     const Color beta(0.6f, 1.2f, 0.9f);
     const int area = lightOfKind(ps::LightKind::Area), point = lightOfKind(ps::LightKind::Point),
@@ -233,61 +252,78 @@ TEST_CASE("connectLight (s = 1): lesson 2's light sample, with the light-selecti
             const int l = scene().selectLight(uLight, P);
             const char* kind = l == area ? "area light" : l == point ? "point light" : "background";
             const Color got = c.valid ? c.value : Color(0.0f);
-            CHECK_MESSAGE(close(got, expected),
-                          "z_1 at " << str(z1.p()) << ", the " << kind << " chosen (P(l) = " << num(P, 4) << "): expected C* = beta_1 times lesson 2's "
-                                    << "light-sampling estimate = " << str(expected) << ", got valid = " << c.valid << ", " << str(c.value) << " "
-                                    << ratio(got, expected)
-                                    << ". Hints: C* = beta_z f Le G / p(y_0), p(y_0) = pdfLightOrigin includes P(l) (a ratio of 1 / P(l) "
-                                       "says it does not); G has both cosines and 1 / d^2 (lesson 6's geometryTerm); the shadow ray");
+            CHECK_MESSAGE(
+                close(got, expected),
+                "z_1 at "
+                    << str(z1.p()) << ", the " << kind << " chosen (P(l) = " << num(P, 4)
+                    << "): expected C* = beta_1 times lesson 2's "
+                    << "light-sampling estimate = " << str(expected) << ", got valid = " << c.valid << ", "
+                    << str(c.value) << " " << ratio(got, expected)
+                    << ". Hints: C* = beta_z f Le G / p(y_0), p(y_0) = pdfLightOrigin includes P(l) (a ratio of 1 / P(l) "
+                       "says it does not); G has both cosines and 1 / d^2 (lesson 6's geometryTerm); the shadow ray");
             if (ps::isBlack(d.value)) ++blocked;
             if (!c.valid) continue;
             ++seen[l == area ? 0 : l == point ? 1 : 2];
             const PathVertex& y0 = c.sampledLight;
-            const bool flags = y0.onLight && y0.sp.light == l && y0.pointLight == (l == point) && y0.infinite == (l == bg);
-            CHECK_MESSAGE(flags, "the " << kind << ": c.sampledLight must be its light vertex (onLight, sp.light = " << l
-                                        << ", pointLight, infinite as for a light subpath's y_0); got onLight " << y0.onLight << ", sp.light "
-                                        << y0.sp.light << ", pointLight " << y0.pointLight << ", infinite " << y0.infinite);
-            const double pdf = l == area ? double(P) / double(scene().lights[size_t(area)].area)
+            const bool flags =
+                y0.onLight && y0.sp.light == l && y0.pointLight == (l == point) && y0.infinite == (l == bg);
+            CHECK_MESSAGE(flags, "the " << kind << ": c.sampledLight must be its light vertex (onLight, sp.light = "
+                                        << l << ", pointLight, infinite as for a light subpath's y_0); got onLight "
+                                        << y0.onLight << ", sp.light " << y0.sp.light << ", pointLight "
+                                        << y0.pointLight << ", infinite " << y0.infinite);
+            const double pdf = l == area    ? double(P) / double(scene().lights[size_t(area)].area)
                                : l == point ? double(P)
                                             : double(P) * double(ps::pdfBackgroundDirection());
             CHECK_MESSAGE(std::abs(double(y0.pdfFwd) - pdf) <= 1e-4 * pdf,
-                          "the " << kind << ": expected c.sampledLight.pdfFwd = P(l) " << (l == area ? "/ area" : l == point ? "" : "* the background's direction pdf")
+                          "the " << kind << ": expected c.sampledLight.pdfFwd = P(l) "
+                                 << (l == area    ? "/ area"
+                                     : l == point ? ""
+                                                  : "* the background's direction pdf")
                                  << " = " << num(pdf, 6) << " (Eq. 7.3), got " << num(y0.pdfFwd, 6));
             CHECK_MESSAGE(std::abs(double(y0.beta[0]) * pdf - 1.0) <= 1e-4,
                           "the " << kind << ": expected c.sampledLight.beta = 1 / pdfFwd, got " << str(y0.beta));
             if (l == bg)
-                CHECK_MESSAGE(glm::dot(y0.sp.n, d.wi) > 0.999f, "the background: c.sampledLight.sp.n must point from the scene towards "
-                                                                "the background (the direction sampled), got "
-                                                                    << str(y0.sp.n) << " for " << str(d.wi));
+                CHECK_MESSAGE(glm::dot(y0.sp.n, d.wi) > 0.999f,
+                              "the background: c.sampledLight.sp.n must point from the scene towards "
+                              "the background (the direction sampled), got "
+                                  << str(y0.sp.n) << " for " << str(d.wi));
             else if (l == area)
                 CHECK_MESSAGE(glm::length(y0.p() - (z1.p() + d.wi * glm::length(y0.p() - z1.p()))) < 1e-3f,
-                              "the area light: c.sampledLight.sp.p must be the point sampleLight chose (in direction " << str(d.wi) << ")");
+                              "the area light: c.sampledLight.sp.p must be the point sampleLight chose (in direction "
+                                  << str(d.wi) << ")");
         }
         ++checked;
     }
-    CHECK_MESSAGE((seen[0] >= 10 && seen[1] >= 10 && seen[2] >= 10),
-                  "expected at least 10 valid connections to each of the area light, the point light and the background, got "
-                      << seen[0] << ", " << seen[1] << ", " << seen[2]);
-    CHECK_MESSAGE(blocked >= 10, "test setup: expected some blocked light samples (the wall point behind the blocker), got " << blocked);
+    CHECK_MESSAGE(
+        (seen[0] >= 10 && seen[1] >= 10 && seen[2] >= 10),
+        "expected at least 10 valid connections to each of the area light, the point light and the background, got "
+            << seen[0] << ", " << seen[1] << ", " << seen[2]);
+    CHECK_MESSAGE(
+        blocked >= 10,
+        "test setup: expected some blocked light samples (the wall point behind the blocker), got " << blocked);
     {
         PathVertex zb = ps::backgroundVertex(scene(), Vec3(0.0f, 1.0f, 0.0f));
         zb.beta = beta;
         const PathVertex z1 = hit(z0.p(), Vec3(0.3f, 0.0f, 0.5f), beta);
         const PathVertex z[] = {z0, z1, zb};
         const ps::Connection c = ps::connectLight(scene(), z, 3, 0.1f, Vec2(0.5f, 0.5f));
-        CHECK_MESSAGE(!c.valid, "z_2 at infinity: there is no point to sample a light for; expected no contribution, got " << str(c.value));
+        CHECK_MESSAGE(
+            !c.valid,
+            "z_2 at infinity: there is no point to sample a light for; expected no contribution, got " << str(c.value));
     }
 }
 
-TEST_CASE("connectVertices (s, t >= 2): beta f G f beta with both cosines and 1/d^2, after the shadow ray, nothing at a mirror [2 pts]") {
+TEST_CASE(
+    "connectVertices (s, t >= 2): beta f G f beta with both cosines and 1/d^2, after the shadow ray, nothing at a mirror [2 pts]") {
     const PathVertex z0 = camera();
     const Color betaLight(2.0f, 2.0f, 2.0f), betaY(0.7f, 1.1f, 1.9f), betaZ(1.3f, 0.6f, 0.8f);
     const PathVertex y0 = hit(Vec3(0.0f, 1.0f, 0.0f), Vec3(0.1f, 2.0f, 0.0f), betaLight);
     int cases = 0;
     // y_1 on the green wall, z_1 on the floor, at several distances and angles.
-    for (const auto& [wallPoint, floorPoint] : {std::pair<Vec3, Vec3>{Vec3(-2.0f, 1.5f, 0.0f), Vec3(0.3f, 0.0f, 0.5f)},
-                                                std::pair<Vec3, Vec3>{Vec3(-2.0f, 0.4f, -1.0f), Vec3(-1.2f, 0.0f, -0.8f)},
-                                                std::pair<Vec3, Vec3>{Vec3(-2.0f, 2.5f, 0.5f), Vec3(1.0f, 0.0f, -1.5f)}}) {
+    for (const auto& [wallPoint, floorPoint] :
+         {std::pair<Vec3, Vec3>{Vec3(-2.0f, 1.5f, 0.0f), Vec3(0.3f, 0.0f, 0.5f)},
+          std::pair<Vec3, Vec3>{Vec3(-2.0f, 0.4f, -1.0f), Vec3(-1.2f, 0.0f, -0.8f)},
+          std::pair<Vec3, Vec3>{Vec3(-2.0f, 2.5f, 0.5f), Vec3(1.0f, 0.0f, -1.5f)}}) {
         const PathVertex y1 = hit(y0.p(), wallPoint, betaY);
         const PathVertex z1 = hit(z0.p(), floorPoint, betaZ);
         REQUIRE(y1.sp.material == 1);
@@ -299,11 +335,13 @@ TEST_CASE("connectVertices (s, t >= 2): beta f G f beta with both cosines and 1/
         const float G = float(cosAt(y1, z1.p()) * cosAt(z1, y1.p()) / d2);
         const Color expected = betaY * (kWall / kPi) * G * (kFloor / kPi) * betaZ;
         CHECK_MESSAGE((c.valid && close(c.value, expected)),
-                      "y_1 on the wall at " << str(y1.p()) << ", z_1 on the floor at " << str(z1.p()) << " (d^2 = " << num(d2, 5)
-                          << "): expected C* = beta_y (0.2 0.6 0.4)/pi G (0.5 0.4 0.3)/pi beta_z = " << str(expected) << ", got valid = "
-                          << c.valid << ", " << str(c.value) << " " << ratio(c.value, expected)
-                          << ". A ratio of d^2 = " << num(d2, 5) << ": 1 / d^2 missing; of 1 / cos = " << num(1.0 / cosAt(y1, z1.p()), 5)
-                          << " or " << num(1.0 / cosAt(z1, y1.p()), 5) << ": a cosine missing (Eq. 7.4); else a beta or an f");
+                      "y_1 on the wall at "
+                          << str(y1.p()) << ", z_1 on the floor at " << str(z1.p()) << " (d^2 = " << num(d2, 5)
+                          << "): expected C* = beta_y (0.2 0.6 0.4)/pi G (0.5 0.4 0.3)/pi beta_z = " << str(expected)
+                          << ", got valid = " << c.valid << ", " << str(c.value) << " " << ratio(c.value, expected)
+                          << ". A ratio of d^2 = " << num(d2, 5)
+                          << ": 1 / d^2 missing; of 1 / cos = " << num(1.0 / cosAt(y1, z1.p()), 5) << " or "
+                          << num(1.0 / cosAt(z1, y1.p()), 5) << ": a cosine missing (Eq. 7.4); else a beta or an f");
         ++cases;
     }
     // Blocked: the wall point behind the blocker, seen from the floor in front of it.
@@ -313,9 +351,10 @@ TEST_CASE("connectVertices (s, t >= 2): beta f G f beta with both cosines and 1/
         const PathVertex y[] = {y0, y1}, z[] = {z0, z1};
         REQUIRE(!ps::visible(scene(), y1, z1));
         const ps::Connection c = ps::connectVertices(scene(), y, 2, z, 2);
-        CHECK_MESSAGE(!c.valid, "y_1 at " << str(y1.p()) << " and z_1 at " << str(z1.p())
-                                          << " are separated by the blocker: expected no contribution (the shadow ray), got "
-                                          << str(c.value));
+        CHECK_MESSAGE(!c.valid, "y_1 at "
+                                    << str(y1.p()) << " and z_1 at " << str(z1.p())
+                                    << " are separated by the blocker: expected no contribution (the shadow ray), got "
+                                    << str(c.value));
     }
     // A mirror endpoint: a delta BSDF gives nothing for a given pair of directions.
     {
@@ -324,8 +363,10 @@ TEST_CASE("connectVertices (s, t >= 2): beta f G f beta with both cosines and 1/
         const PathVertex z1 = hit(z0.p(), Vec3(0.3f, 0.0f, 0.5f), betaZ);
         const PathVertex y[] = {y0, y1}, z[] = {z0, z1};
         const ps::Connection c = ps::connectVertices(scene(), y, 2, z, 2);
-        CHECK_MESSAGE((!c.valid && ps::isBlack(c.value)), "y_1 on the mirror sphere: expected no contribution (f of a mirror is a delta, "
-                                                      "0 for given directions), got " << str(c.value));
+        CHECK_MESSAGE((!c.valid && ps::isBlack(c.value)),
+                      "y_1 on the mirror sphere: expected no contribution (f of a mirror is a delta, "
+                      "0 for given directions), got "
+                          << str(c.value));
     }
     // A background camera endpoint cannot be joined.
     {
@@ -335,7 +376,8 @@ TEST_CASE("connectVertices (s, t >= 2): beta f G f beta with both cosines and 1/
         zb.beta = betaZ;
         const PathVertex y[] = {y0, y1}, z[] = {z0, z1, zb};
         const ps::Connection c = ps::connectVertices(scene(), y, 2, z, 3);
-        CHECK_MESSAGE(!c.valid, "z_2 at infinity: it cannot be joined to y_1; expected no contribution, got " << str(c.value));
+        CHECK_MESSAGE(!c.valid,
+                      "z_2 at infinity: it cannot be joined to y_1; expected no contribution, got " << str(c.value));
     }
     CHECK(cases == 3);
 }

@@ -18,21 +18,25 @@ struct Case {
 void checkAgainstReference(const Case& c, const std::string& algo, uint64_t seed) {
     const ps::Scene scene = loadSceneAt("scenes/" + c.scene + ".scene", 32, 32);
     const Render r = render(scene, algo, c.iterations, seed);
-    CHECK_MESSAGE(r.stats.bad() == 0, algo << " on " << c.scene << ": expected 0 NaN and 0 Inf samples, got " << r.stats.nan
-                                           << " NaN and " << r.stats.inf << " Inf");
+    CHECK_MESSAGE(r.stats.bad() == 0, algo << " on " << c.scene << ": expected 0 NaN and 0 Inf samples, got "
+                                           << r.stats.nan << " NaN and " << r.stats.inf << " Inf");
     const ps::Image ref = ps::readPFM(sourcePath(c.reference + ".pfm"));
     const ps::Image refVar = ps::readPFM(sourcePath(c.reference + "-variance.pfm"));
     const ps::stats::ZTestResult z = ps::stats::zTestImages(r.mean, r.variance, ref, refVar, alpha());
-    CHECK_MESSAGE(total(r.mean) > 0.5 * total(ref), algo << " on " << c.scene << ": expected an image about as bright as the "
-                                                         << "reference (sum " << num(total(ref)) << "), got " << num(total(r.mean)));
-    CHECK_MESSAGE(z.passed, algo << " on " << c.scene << " (32 x 32, maxdepth 8, " << c.iterations << " spp, seed " << seed
-                                 << "): expected the path-traced reference within its noise (a = yours, b = the reference), got\n  "
-                                 << z.report);
+    CHECK_MESSAGE(total(r.mean) > 0.5 * total(ref),
+                  algo << " on " << c.scene << ": expected an image about as bright as the "
+                       << "reference (sum " << num(total(ref)) << "), got " << num(total(r.mean)));
+    CHECK_MESSAGE(
+        z.passed,
+        algo << " on " << c.scene << " (32 x 32, maxdepth 8, " << c.iterations << " spp, seed " << seed
+             << "): expected the path-traced reference within its noise (a = yours, b = the reference), got\n  "
+             << z.report);
 }
 
 }  // namespace
 
-TEST_CASE("bpt equals the path-traced reference on the Cornell box, with the power and the balance heuristic (z-test) [3 pts]") {
+TEST_CASE(
+    "bpt equals the path-traced reference on the Cornell box, with the power and the balance heuristic (z-test) [3 pts]") {
     const Case c{"cornell-box", "tests/03-path-tracing/data/cornell-box-32", 256};
     checkAgainstReference(c, "bpt", 7101);
     checkAgainstReference(c, "bpt-balance", 7102);
@@ -47,9 +51,11 @@ std::vector<bool> seesSpecular(const ps::Scene& scene) {
         for (int x = 0; x < w; ++x)
             for (int j = 0; j <= 5; ++j)
                 for (int i = 0; i <= 5; ++i) {
-                    ps::Ray ray = scene.camera.generateRay(Vec2(x + std::min(i / 5.0f, 0.99999f), y + std::min(j / 5.0f, 0.99999f)));
+                    ps::Ray ray = scene.camera.generateRay(
+                        Vec2(x + std::min(i / 5.0f, 0.99999f), y + std::min(j / 5.0f, 0.99999f)));
                     ps::SurfacePoint sp;
-                    if (scene.intersect(ray, sp) && scene.materials[size_t(sp.material)].isDelta()) any[size_t(y) * w + x] = true;
+                    if (scene.intersect(ray, sp) && scene.materials[size_t(sp.material)].isDelta())
+                        any[size_t(y) * w + x] = true;
                 }
     return any;
 }
@@ -74,8 +80,8 @@ TEST_CASE("bpt equals the path-traced reference on the Cornell spheres: mirror, 
     constexpr int kIterations = 512;
     constexpr uint64_t kSeedSpheres = 7103;
     const Render r = render(scene, "bpt", kIterations, kSeedSpheres);
-    CHECK_MESSAGE(r.stats.bad() == 0, "bpt on cornell-spheres: expected 0 NaN and 0 Inf samples, got " << r.stats.nan << " NaN and "
-                                                                                                      << r.stats.inf << " Inf");
+    CHECK_MESSAGE(r.stats.bad() == 0, "bpt on cornell-spheres: expected 0 NaN and 0 Inf samples, got "
+                                          << r.stats.nan << " NaN and " << r.stats.inf << " Inf");
     const ps::Image ref = ps::readPFM(sourcePath("tests/05-light-tracing/data/cornell-spheres-32.pfm"));
     const ps::Image refVar = ps::readPFM(sourcePath("tests/05-light-tracing/data/cornell-spheres-32-variance.pfm"));
     const std::vector<bool> specular = seesSpecular(scene);
@@ -85,25 +91,30 @@ TEST_CASE("bpt equals the path-traced reference on the Cornell spheres: mirror, 
             for (int dy = -1; dy <= 1; ++dy)
                 for (int dx = -1; dx <= 1; ++dx) {
                     const int xx = x + dx, yy = y + dy;
-                    if (xx >= 0 && yy >= 0 && xx < 32 && yy < 32 && specular[size_t(yy) * 32 + xx]) clear[size_t(y) * 32 + x] = false;
+                    if (xx >= 0 && yy >= 0 && xx < 32 && yy < 32 && specular[size_t(yy) * 32 + xx])
+                        clear[size_t(y) * 32 + x] = false;
                 }
-    const ps::stats::ZTestResult z =
-        ps::stats::zTestImages(select(r.mean, clear), select(r.variance, clear), select(ref, clear), select(refVar, clear), alpha());
-    CHECK_MESSAGE(z.passed, "bpt on cornell-spheres (32 x 32, maxdepth 8, " << kIterations << " spp, seed " << kSeedSpheres
-                                                                            << "), the pixels away from the spheres: expected the "
-                                                                               "path-traced reference within its noise (x is the index "
-                                                                               "among those pixels: a = yours, b = the reference), got\n  "
-                                                                            << z.report);
+    const ps::stats::ZTestResult z = ps::stats::zTestImages(select(r.mean, clear), select(r.variance, clear),
+                                                            select(ref, clear), select(refVar, clear), alpha());
+    CHECK_MESSAGE(z.passed, "bpt on cornell-spheres (32 x 32, maxdepth 8, "
+                                << kIterations << " spp, seed " << kSeedSpheres
+                                << "), the pixels away from the spheres: expected the "
+                                   "path-traced reference within its noise (x is the index "
+                                   "among those pixels: a = yours, b = the reference), got\n  "
+                                << z.report);
     const double mine = total(select(r.mean, specular)), theirs = total(select(ref, specular));
-    CHECK_MESSAGE(std::abs(mine - theirs) <= 0.1 * theirs, "bpt on cornell-spheres, the pixels that see a sphere: expected the sum of "
-                                                           "their values to be the reference's "
-                                                               << num(theirs) << " +- 10 %, got " << num(mine));
+    CHECK_MESSAGE(std::abs(mine - theirs) <= 0.1 * theirs,
+                  "bpt on cornell-spheres, the pixels that see a sphere: expected the sum of "
+                  "their values to be the reference's "
+                      << num(theirs) << " +- 10 %, got " << num(mine));
 }
 
 TEST_CASE("bpt equals the path-traced reference with a point light: no s = 0 technique (z-test) [2 pts]") {
-    checkAgainstReference({"cornell-point-light", "tests/07-bidirectional/data/cornell-point-light-32", 256}, "bpt", 7104);
+    checkAgainstReference({"cornell-point-light", "tests/07-bidirectional/data/cornell-point-light-32", 256}, "bpt",
+                          7104);
 }
 
 TEST_CASE("bpt equals the path-traced reference with a background light: vertices at infinity (z-test) [2 pts]") {
-    checkAgainstReference({"cornell-background", "tests/07-bidirectional/data/cornell-background-32", 256}, "bpt", 7105);
+    checkAgainstReference({"cornell-background", "tests/07-bidirectional/data/cornell-background-32", 256}, "bpt",
+                          7105);
 }

@@ -13,7 +13,7 @@ namespace {
 const std::vector<std::string> kScenes = {"scenes/cornell-box.scene", "scenes/cornell-spheres.scene",
                                           "scenes/cornell-point-light.scene", "scenes/cornell-background.scene",
                                           "scenes/cornell-glossy.scene"};
-constexpr int kSamples = 400;   // pixel samples per scene
+constexpr int kSamples = 400;  // pixel samples per scene
 
 struct Checked {
     int paths = 0, worst = -1;
@@ -45,9 +45,10 @@ void checkScene(const std::string& scenePath, ps::Heuristic h, const char* form,
             worstText = describe(j) + ":" + terms.str() + ", sum " + num(total, 7);
         }
     }
-    CHECK_MESSAGE(worst <= 1e-5, scenePath << ", " << std::string(h == ps::Heuristic::Power ? "power" : "balance") << " heuristic, "
-                                           << std::string(form) << ": expected the weights of every path's techniques to sum to 1 "
-                                                      "(+- 1e-5), worst "
+    CHECK_MESSAGE(worst <= 1e-5, scenePath << ", " << std::string(h == ps::Heuristic::Power ? "power" : "balance")
+                                           << " heuristic, " << std::string(form)
+                                           << ": expected the weights of every path's techniques to sum to 1 "
+                                              "(+- 1e-5), worst "
                                            << worstText);
 }
 
@@ -86,6 +87,7 @@ TEST_CASE("recursive MIS weights sum to 1 and equal the full-list weights to 1e-
                                 "): full " + num(wf, 7) + ", recursive " + num(wr, 7);
                     }
                 }
-            CHECK_MESSAGE(worst <= 1e-5, s << ": expected misWeightRecursive = misWeightFull (+- 1e-5), worst at " << where);
+            CHECK_MESSAGE(worst <= 1e-5,
+                          s << ": expected misWeightRecursive = misWeightFull (+- 1e-5), worst at " << where);
         }
 }

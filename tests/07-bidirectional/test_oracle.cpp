@@ -90,12 +90,12 @@ sphere center 370 100 350  radius 100  material chrome
 render maxdepth 6
 )";
 
-constexpr int kSamples = 800;   // pixel samples per scene
+constexpr int kSamples = 800;  // pixel samples per scene
 constexpr double kRelTol = 1e-3, kAbsTol = 1e-6;
 
 struct Case {
-    std::string what;   // the path and technique
-    double student = 0.0, oracle = 0.0, oracleOther = 0.0;   // oracleOther: the other heuristic
+    std::string what;                                       // the path and technique
+    double student = 0.0, oracle = 0.0, oracleOther = 0.0;  // oracleOther: the other heuristic
     bool specular = false, multiLightScene = false;
 };
 
@@ -147,7 +147,7 @@ void checkScene(const char* name, const char* text, uint64_t seed) {
                     std::vector<double> p(size_t(n) + 1);
                     for (int sp = 0; sp <= n; ++sp) p[size_t(sp)] = ps::pdfTechnique(scene, x, sp);
                     if (!(p[size_t(s)] > 0.0) || !std::isfinite(p[size_t(s)])) {
-                        ++skipped;   // lesson 6 says technique s cannot make this path (counted below)
+                        ++skipped;  // lesson 6 says technique s cannot make this path (counted below)
                         continue;
                     }
                     double sum = 0.0, sumOther = 0.0;
@@ -190,20 +190,24 @@ void checkScene(const char* name, const char* text, uint64_t seed) {
                 }
         }
         const std::string hs = h == ps::Heuristic::Power ? "power" : "balance";
-        for (const auto& [err, c, form] : {std::tuple<double, const Case&, const char*>{errFull, worstFull, "misWeightFull"},
-                                          std::tuple<double, const Case&, const char*>{errRec, worstRec, "misWeightRecursive"}}) {
+        for (const auto& [err, c, form] :
+             {std::tuple<double, const Case&, const char*>{errFull, worstFull, "misWeightFull"},
+              std::tuple<double, const Case&, const char*>{errRec, worstRec, "misWeightRecursive"}}) {
             CHECK_MESSAGE(err <= 1.0, name << ", " << hs << " heuristic, " << form
                                            << ": expected the weight p_s^b / sum p_s'^b of lesson 6's pdfTechnique "
                                               "(relative 1e-3), worst on "
-                                           << c.what << ": expected " << num(c.oracle, 7) << ", got " << num(c.student, 7)
-                                           << " (ratio " << num(c.student / c.oracle, 5) << ")." << hint(c));
+                                           << c.what << ": expected " << num(c.oracle, 7) << ", got "
+                                           << num(c.student, 7) << " (ratio " << num(c.student / c.oracle, 5) << ")."
+                                           << hint(c));
         }
     }
     CHECK_MESSAGE(checked >= 300, name << ": expected at least 300 valid connections from " << kSamples
                                        << " pixel samples (your subpaths and connect), got " << checked);
-    CHECK_MESSAGE(specularPaths >= 20, name << ": expected at least 20 connected paths through the mirror or the glass, got "
-                                            << specularPaths << " (are the subpaths stopped at specular vertices?)");
-    CHECK_MESSAGE(pointPaths >= 20, name << ": expected at least 20 connected paths from the point light, got " << pointPaths);
+    CHECK_MESSAGE(specularPaths >= 20,
+                  name << ": expected at least 20 connected paths through the mirror or the glass, got "
+                       << specularPaths << " (are the subpaths stopped at specular vertices?)");
+    CHECK_MESSAGE(pointPaths >= 20,
+                  name << ": expected at least 20 connected paths from the point light, got " << pointPaths);
     if (scene.background >= 0)
         CHECK_MESSAGE(backgroundPaths >= 20,
                       name << ": expected at least 20 connected paths from the background, got " << backgroundPaths);
@@ -214,14 +218,16 @@ void checkScene(const char* name, const char* text, uint64_t seed) {
     // Snell's law by more than deltaLobe's 1e-3, and lesson 6 gives every technique p = 0. Those
     // are about 0.2 % of the connections in the closed box; a bug gives many more.
     CHECK_MESSAGE(skipped <= checked / 200, name << ": " << skipped << " of " << checked + skipped
-                                                  << " valid connections have p_s = 0 under lesson 6's pdfTechnique: "
-                                                     "connect made a path its technique cannot sample (Eq. 7.7)");
+                                                 << " valid connections have p_s = 0 under lesson 6's pdfTechnique: "
+                                                    "connect made a path its technique cannot sample (Eq. 7.7)");
 }
 
 }  // namespace
 
-TEST_CASE("MIS weights equal the balance and power heuristics of lesson 6's path pdfs, through mirror and glass, from area, point and background lights [4 pts]") {
+TEST_CASE(
+    "MIS weights equal the balance and power heuristics of lesson 6's path pdfs, through mirror and glass, from area, point and background lights [4 pts]") {
     checkScene("open box (area, point and background light, mirror, glass 1.6)", kOpenBox, ps::testseed::seed(7101));
     checkScene("closed box (area and point light, mirror, glass 1.6)", kClosedBox, ps::testseed::seed(7102));
-    checkScene("pool (area and point light, mirror, a glass surface 1.6 over the floor)", kPool, ps::testseed::seed(7103));
+    checkScene("pool (area and point light, mirror, a glass surface 1.6 over the floor)", kPool,
+               ps::testseed::seed(7103));
 }

@@ -16,16 +16,19 @@ std::vector<bool> awayFromSpecular(const ps::Scene& scene) {
         for (int x = 0; x < w; ++x)
             for (int j = 0; j <= 5; ++j)
                 for (int i = 0; i <= 5; ++i) {
-                    ps::Ray ray = scene.camera.generateRay(Vec2(x + std::min(i / 5.0f, 0.99999f), y + std::min(j / 5.0f, 0.99999f)));
+                    ps::Ray ray = scene.camera.generateRay(
+                        Vec2(x + std::min(i / 5.0f, 0.99999f), y + std::min(j / 5.0f, 0.99999f)));
                     ps::SurfacePoint sp;
-                    if (scene.intersect(ray, sp) && scene.materials[size_t(sp.material)].isDelta()) spec[size_t(y) * w + x] = true;
+                    if (scene.intersect(ray, sp) && scene.materials[size_t(sp.material)].isDelta())
+                        spec[size_t(y) * w + x] = true;
                 }
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x)
             for (int dy = -1; dy <= 1; ++dy)
                 for (int dx = -1; dx <= 1; ++dx) {
                     const int xx = x + dx, yy = y + dy;
-                    if (xx >= 0 && yy >= 0 && xx < w && yy < h && spec[size_t(yy) * w + xx]) clear[size_t(y) * w + x] = false;
+                    if (xx >= 0 && yy >= 0 && xx < w && yy < h && spec[size_t(yy) * w + xx])
+                        clear[size_t(y) * w + x] = false;
                 }
     return clear;
 }
@@ -47,8 +50,10 @@ bool mentions(const std::vector<std::string>& lines, const std::string& what) {
 
 }  // namespace
 
-TEST_CASE("pruning is exact: pruned and unpruned renders agree with a point light and with specular spheres (z-tests) [2 pts]") {
-    for (const auto& [name, iterations] : std::vector<std::pair<std::string, int>>{{"cornell-point-light", 256}, {"cornell-spheres", 384}}) {
+TEST_CASE(
+    "pruning is exact: pruned and unpruned renders agree with a point light and with specular spheres (z-tests) [2 pts]") {
+    for (const auto& [name, iterations] :
+         std::vector<std::pair<std::string, int>>{{"cornell-point-light", 256}, {"cornell-spheres", 384}}) {
         ps::Scene pruned = loadSceneAt("scenes/" + name + ".scene", 24, 24);
         ps::Scene full = pruned;
         full.settings.prune = false;
@@ -56,24 +61,29 @@ TEST_CASE("pruning is exact: pruned and unpruned renders agree with a point ligh
         const std::vector<std::string> left = bpt->leftOut(pruned);
         CHECK_MESSAGE(bpt->leftOut(full).empty(), name << " with --no-prune: expected bpt to leave nothing out");
         if (name == "cornell-point-light")
-            CHECK_MESSAGE(mentions(left, "s = 0"), name << ": expected bpt to leave out the s = 0 techniques (no light can be hit)");
+            CHECK_MESSAGE(mentions(left, "s = 0"),
+                          name << ": expected bpt to leave out the s = 0 techniques (no light can be hit)");
         else
-            CHECK_MESSAGE(mentions(left, "specular"), name << ": expected bpt to leave out connections at specular vertices");
+            CHECK_MESSAGE(mentions(left, "specular"),
+                          name << ": expected bpt to leave out connections at specular vertices");
         const Render a = render(pruned, "bpt", iterations, 7301);
         const Render b = render(full, "bpt", iterations, 7302);
-        CHECK_MESSAGE(a.stats.bad() + b.stats.bad() == 0, name << ": expected no NaN or Inf samples, got " << a.stats.bad() << " pruned and "
-                                                               << b.stats.bad() << " unpruned");
+        CHECK_MESSAGE(a.stats.bad() + b.stats.bad() == 0, name << ": expected no NaN or Inf samples, got "
+                                                               << a.stats.bad() << " pruned and " << b.stats.bad()
+                                                               << " unpruned");
         CHECK_MESSAGE(total(a.mean) > 0.0, name << ": expected a lit image, got a black one");
         const std::vector<bool> mask = awayFromSpecular(pruned);
-        const ps::stats::ZTestResult z =
-            ps::stats::zTestImages(select(a.mean, mask), select(a.variance, mask), select(b.mean, mask), select(b.variance, mask), alpha());
-        CHECK_MESSAGE(z.passed, name << " (24 x 24, " << iterations << " spp; pixels away from specular surfaces): expected the pruned "
+        const ps::stats::ZTestResult z = ps::stats::zTestImages(
+            select(a.mean, mask), select(a.variance, mask), select(b.mean, mask), select(b.variance, mask), alpha());
+        CHECK_MESSAGE(z.passed, name << " (24 x 24, " << iterations
+                                     << " spp; pixels away from specular surfaces): expected the pruned "
                                         "render (a) to equal the unpruned one (b) within their noise, got\n  "
                                      << z.report);
     }
 }
 
-TEST_CASE("close vertices in a corner make no fireflies: max pixel below 2 x the path tracer's, mean within 10 % [2 pts]") {
+TEST_CASE(
+    "close vertices in a corner make no fireflies: max pixel below 2 x the path tracer's, mean within 10 % [2 pts]") {
     // The Cornell box seen from inside, 11 cm from the corner of floor, back wall and green
     // wall: connections between vertices a few mm apart have a huge G = cos cos / d^2. With
     // MIS weights from the same pdfs (Eq. 7.3) the techniques that sample such paths well take
@@ -89,7 +99,10 @@ TEST_CASE("close vertices in a corner make no fireflies: max pixel below 2 x the
         for (size_t i = 0; i < img.pixels.size(); ++i) {
             const double l = ps::luminance(img.pixels[i]);
             mean += l;
-            if (l > mx) { mx = l; at = int(i); }
+            if (l > mx) {
+                mx = l;
+                at = int(i);
+            }
         }
         return std::make_pair(mx, mean / double(img.pixels.size()));
     };
@@ -98,21 +111,24 @@ TEST_CASE("close vertices in a corner make no fireflies: max pixel below 2 x the
     const auto [maxP, meanP] = stats(p.mean, atP);
     CHECK_MESSAGE(b.stats.bad() == 0, "bpt in the corner: expected no NaN or Inf samples, got " << b.stats.bad());
     CHECK_MESSAGE(meanB > 0.0, "bpt in the corner: expected a lit image, got a black one");
-    CHECK_MESSAGE(maxB <= 2.0 * maxP, "bpt in the corner (16 x 16, 64 spp): expected every pixel's luminance <= 2 x the path tracer's "
-                                      "brightest pixel ("
-                                          << num(maxP) << "), got " << num(maxB) << " at pixel (" << atB % 16 << ", " << atB / 16 << ")");
-    CHECK_MESSAGE(std::abs(meanB - meanP) <= 0.1 * meanP, "bpt in the corner: expected the mean luminance of the path tracer's image, "
-                                                              << num(meanP) << " +- 10 %, got " << num(meanB));
+    CHECK_MESSAGE(maxB <= 2.0 * maxP,
+                  "bpt in the corner (16 x 16, 64 spp): expected every pixel's luminance <= 2 x the path tracer's "
+                  "brightest pixel ("
+                      << num(maxP) << "), got " << num(maxB) << " at pixel (" << atB % 16 << ", " << atB / 16 << ")");
+    CHECK_MESSAGE(std::abs(meanB - meanP) <= 0.1 * meanP,
+                  "bpt in the corner: expected the mean luminance of the path tracer's image, "
+                      << num(meanP) << " +- 10 %, got " << num(meanB));
 }
 
 TEST_CASE("no NaN or Inf in any scene of the course, and every image is lit [1 pt]") {
-    for (const std::string name : {"cornell-box", "cornell-glossy", "cornell-small-light", "cornell-spheres", "cornell-point-light",
-                                    "cornell-background", "glass-lamp", "veach-plates", "point-in-sphere", "furnace"}) {
+    for (const std::string name :
+         {"cornell-box", "cornell-glossy", "cornell-small-light", "cornell-spheres", "cornell-point-light",
+          "cornell-background", "glass-lamp", "veach-plates", "point-in-sphere", "furnace"}) {
         const ps::Scene scene = loadSceneAt("scenes/" + name + ".scene", 12, 12);
         for (const std::string algo : {"bpt", "bpt-balance", "bpt-full"}) {
             const Render r = render(scene, algo, 24, 7501);
-            CHECK_MESSAGE(r.stats.bad() == 0, algo << " on " << name << ": expected 0 NaN and 0 Inf samples, got " << r.stats.nan
-                                                   << " NaN and " << r.stats.inf << " Inf");
+            CHECK_MESSAGE(r.stats.bad() == 0, algo << " on " << name << ": expected 0 NaN and 0 Inf samples, got "
+                                                   << r.stats.nan << " NaN and " << r.stats.inf << " Inf");
             CHECK_MESSAGE(total(r.mean) > 0.0, algo << " on " << name << ": expected a lit image, got a black one");
         }
     }
@@ -125,6 +141,7 @@ TEST_CASE("the image does not depend on the number of threads [1 pt]") {
     CHECK_MESSAGE(total(one.mean) > 0.0, "bpt on cornell-spheres: expected a lit image, got a black one");
     int differ = 0;
     for (size_t i = 0; i < one.mean.pixels.size(); ++i) differ += one.mean.pixels[i] != two.mean.pixels[i];
-    CHECK_MESSAGE(differ == 0, "bpt on cornell-spheres (16 x 16, 6 spp): expected identical images with 1 and 2 threads, " << differ
-                                                                                                                      << " pixels differ");
+    CHECK_MESSAGE(differ == 0,
+                  "bpt on cornell-spheres (16 x 16, 6 spp): expected identical images with 1 and 2 threads, "
+                      << differ << " pixels differ");
 }

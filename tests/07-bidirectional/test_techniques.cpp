@@ -51,25 +51,28 @@ ps::Image blocks(const ps::Image& img, int b) {
 
 }  // namespace
 
-TEST_CASE("each technique alone is unbiased: Veach's pyramid rows 1-3 equal the path-traced reference of their path length (z-tests) [4 pts]") {
+TEST_CASE(
+    "each technique alone is unbiased: Veach's pyramid rows 1-3 equal the path-traced reference of their path length (z-tests) [4 pts]") {
     const ps::TechniqueImages& t = techniques();
     REQUIRE(t.unweighted.size() == size_t(ps::techniqueCount(kMaxLength)));
     for (int k = 1; k <= kMaxLength; ++k) {
         const auto [ref, refVar] = referenceOfLength(k);
-        for (int s = 0; s <= k; ++s) {   // s = k + 1 is t = 0: the pinhole cannot be hit
+        for (int s = 0; s <= k; ++s) {  // s = k + 1 is t = 0: the pinhole cannot be hit
             const int i = ps::techniqueIndex(s, k);
             const ps::stats::ZTestResult z =
-                ps::stats::zTestImages(blocks(t.unweighted[size_t(i)], 4), blocks(t.unweightedSq[size_t(i)], 4), blocks(ref, 4),
-                                       blocks(refVar, 4), alpha(), 1.0);
+                ps::stats::zTestImages(blocks(t.unweighted[size_t(i)], 4), blocks(t.unweightedSq[size_t(i)], 4),
+                                       blocks(ref, 4), blocks(refVar, 4), alpha(), 1.0);
             CHECK_MESSAGE(total(t.unweighted[size_t(i)]) > 0.5 * total(ref),
                           "technique (s, t) = (" << s << ", " << k + 1 - s << "), path length " << k
                                                  << ": expected an image about as bright as the reference (sum "
-                                                 << num(total(ref)) << "), got " << num(total(t.unweighted[size_t(i)])));
-            CHECK_MESSAGE(z.passed, "technique (s, t) = (" << s << ", " << k + 1 - s << ") alone, unweighted, path length " << k
-                                                           << " (Cornell box 16 x 16, " << kSpp << " spp, seed " << kSeed
-                                                           << "): expected the reference of that length (a = yours, b = the "
-                                                              "reference; x, y index 4 x 4 blocks), got\n  "
-                                                           << z.report);
+                                                 << num(total(ref)) << "), got "
+                                                 << num(total(t.unweighted[size_t(i)])));
+            CHECK_MESSAGE(z.passed, "technique (s, t) = ("
+                                        << s << ", " << k + 1 - s << ") alone, unweighted, path length " << k
+                                        << " (Cornell box 16 x 16, " << kSpp << " spp, seed " << kSeed
+                                        << "): expected the reference of that length (a = yours, b = the "
+                                           "reference; x, y index 4 x 4 blocks), got\n  "
+                                        << z.report);
         }
     }
 }
@@ -86,9 +89,10 @@ TEST_CASE("the weighted techniques of a path length add up to that length's refe
             unweightedMean += total(t.unweighted[size_t(ps::techniqueIndex(s, k))]) / double(k + 1);
         }
         const double ref = total(referenceOfLength(k).first);
-        CHECK_MESSAGE(std::abs(weighted - ref) <= 0.05 * ref, "path length " << k << ": expected the MIS-weighted techniques to add up to the "
-                                                              << "reference's " << num(ref) << " (+- 5 %), got " << num(weighted)
-                                                              << " (the unweighted techniques' mean: " << num(unweightedMean) << ")");
+        CHECK_MESSAGE(std::abs(weighted - ref) <= 0.05 * ref,
+                      "path length " << k << ": expected the MIS-weighted techniques to add up to the "
+                                     << "reference's " << num(ref) << " (+- 5 %), got " << num(weighted)
+                                     << " (the unweighted techniques' mean: " << num(unweightedMean) << ")");
         CHECK_MESSAGE(total(t.unweighted[size_t(ps::techniqueIndex(k + 1, k))]) == 0.0,
                       "technique (" << k + 1 << ", 0): expected black (the pinhole cannot be hit), got a sum of "
                                     << num(total(t.unweighted[size_t(ps::techniqueIndex(k + 1, k))])));

@@ -13,7 +13,7 @@ namespace {
 const float kExponents[] = {0.0f, 1.0f, 10.0f, 100.0f, 1e4f, 1e6f};
 // cos(theta_o) of the outgoing directions: normal, oblique, grazing, and the other side.
 const float kCosO[] = {1.0f, 0.5f, 0.1f, 1e-3f, -0.5f, -1e-3f};
-const Vec3 kNormal = glm::normalize(Vec3(1.0f, 2.0f, 3.0f));   // not axis-aligned: exercises Frame
+const Vec3 kNormal = glm::normalize(Vec3(1.0f, 2.0f, 3.0f));  // not axis-aligned: exercises Frame
 
 Material diffuse(float albedo = 0.7f) {
     Material m;
@@ -28,14 +28,25 @@ Material phong(float exponent, float albedo = 0.7f) {
     m.albedo = Color(albedo);
     return m;
 }
-Material mirror() { Material m; m.kind = BSDFKind::Mirror; m.albedo = Color(0.9f, 0.8f, 0.7f); return m; }
-Material glass(float ior) { Material m; m.kind = BSDFKind::Dielectric; m.ior = ior; return m; }
+Material mirror() {
+    Material m;
+    m.kind = BSDFKind::Mirror;
+    m.albedo = Color(0.9f, 0.8f, 0.7f);
+    return m;
+}
+Material glass(float ior) {
+    Material m;
+    m.kind = BSDFKind::Dielectric;
+    m.ior = ior;
+    return m;
+}
 
 // Unit direction at angle acos(c) from axis, at azimuth phi (in double, rounded once to float).
 Vec3 dirAround(const Vec3& axis, double c, double phi) {
     const Frame f(axis);
     const double s = std::sqrt(std::max(0.0, 1.0 - c * c));
-    const glm::dvec3 d = glm::dvec3(f.s) * (s * std::cos(phi)) + glm::dvec3(f.t) * (s * std::sin(phi)) + glm::dvec3(f.n) * c;
+    const glm::dvec3 d =
+        glm::dvec3(f.s) * (s * std::cos(phi)) + glm::dvec3(f.t) * (s * std::sin(phi)) + glm::dvec3(f.n) * c;
     return Vec3(glm::normalize(d));
 }
 Vec3 sideNormal(const Vec3& n, const Vec3& wo) { return glm::dot(n, wo) < 0.0f ? -n : n; }
@@ -58,7 +69,7 @@ double sphereIntegral(const std::function<double(const Vec3&)>& g, const Vec3& a
         const double c = std::pow(1.0 - (i + 0.5) / N, 1.0 / (k + 1.0));
         for (int j = 0; j < N; ++j) {
             const Vec3 w = dir(c, 2.0 * M_PI * (j + 0.5) / N);
-            const double ca = glm::dot(glm::dvec3(w), glm::dvec3(axis));   // of the float direction
+            const double ca = glm::dot(glm::dvec3(w), glm::dvec3(axis));  // of the float direction
             const double q = (k + 1.0) / (2.0 * M_PI) * std::pow(std::max(ca, 0.0), k);
             if (q > 0.0) lobe += g(w) / q;
         }
@@ -119,8 +130,9 @@ TEST_CASE("bsdf: pdfBSDF integrates to 1 (diffuse) and to the lobe's probability
             const double I = sphereIntegral([&](const Vec3& w) { return double(pdfBSDF(m, kNormal, wo, w)); }, axis,
                                             lambert ? 0.0 : m.exponent, N);
             const double P = lambert ? 1.0 : aboveProbability(m.exponent, cosO);
-            CHECK_MESSAGE(std::abs(I - P) < 1.5e-3, (m.kind == BSDFKind::Diffuse ? "diffuse" : "Phong") << " exponent "
-                                                        << m.exponent << ", cos(theta_o) = " << cosO << ": expected " << P
+            CHECK_MESSAGE(std::abs(I - P) < 1.5e-3, (m.kind == BSDFKind::Diffuse ? "diffuse" : "Phong")
+                                                        << " exponent " << m.exponent << ", cos(theta_o) = " << cosO
+                                                        << ": expected " << P
                                                         << " (probability above the surface), got " << I);
         }
     }
@@ -150,10 +162,10 @@ TEST_CASE("bsdf: sampleBSDF's pdf equals pdfBSDF and its weight equals f |cos| /
                                 std::abs(s.pdf - pdf) <= 1e-6f * pdf &&
                                 std::abs(s.weight.g - expectW.g) <= 1e-5f * expectW.g + 1e-30f;
                 if (!ok && ++bad <= 3)
-                    FAIL_CHECK((m.kind == BSDFKind::Diffuse ? "diffuse" : "Phong") << " exponent " << m.exponent
-                               << ", cos(theta_o) " << cosO << ": sample pdf " << s.pdf << " vs pdfBSDF " << pdf
-                               << ", weight " << s.weight.g << " vs f|cos|/pdf " << expectW.g << ", |wi| "
-                               << glm::length(s.wi) << ", ns.wi " << glm::dot(ns, s.wi));
+                    FAIL_CHECK((m.kind == BSDFKind::Diffuse ? "diffuse" : "Phong")
+                               << " exponent " << m.exponent << ", cos(theta_o) " << cosO << ": sample pdf " << s.pdf
+                               << " vs pdfBSDF " << pdf << ", weight " << s.weight.g << " vs f|cos|/pdf " << expectW.g
+                               << ", |wi| " << glm::length(s.wi) << ", ns.wi " << glm::dot(ns, s.wi));
             }
             INFO("material exponent " << m.exponent << " kind " << int(m.kind) << ", cos(theta_o) = " << cosO);
             CHECK(bad == 0);
@@ -161,7 +173,8 @@ TEST_CASE("bsdf: sampleBSDF's pdf equals pdfBSDF and its weight equals f |cos| /
             // binomial, 5 standard errors (+1e-3 for the quadrature of the reference).
             const double P = isLambertian(m) ? 1.0 : aboveProbability(m.exponent, cosO);
             const double frac = double(valid) / S, tol = 5.0 * std::sqrt(P * (1.0 - P) / S) + 1e-3;
-            CHECK_MESSAGE(std::abs(frac - P) < tol, "valid fraction: expected " << P << " +- " << tol << ", got " << frac);
+            CHECK_MESSAGE(std::abs(frac - P) < tol,
+                          "valid fraction: expected " << P << " +- " << tol << ", got " << frac);
         }
     }
 }
@@ -234,10 +247,12 @@ TEST_CASE("bsdf: albedo (mean sample weight) is at most 1, equals the albedo for
             const double R = meanWeight(phong(k, 1.0f), wo, N);
             INFO("Phong exponent " << k << ", albedo 1, cos(theta_o) = " << cosO);
             CHECK_MESSAGE(R <= 1.0 + 8e-3, "expected R <= 1, got " << R);
-            if (k == 0.0f) CHECK_MESSAGE(std::abs(R - 1.0) < 1e-6, "exponent 0 (Lambertian): expected R = 1, got " << R);
+            if (k == 0.0f)
+                CHECK_MESSAGE(std::abs(R - 1.0) < 1e-6, "exponent 0 (Lambertian): expected R = 1, got " << R);
             if (cosO == 1.0f) CHECK_MESSAGE(std::abs(R - 1.0) < 1e-3, "normal incidence: expected R = 1, got " << R);
             if (k >= 100.0f && std::abs(cosO) >= 0.5f)
-                CHECK_MESSAGE(std::abs(R - std::abs(cosO)) < 1e-3, "expected R = |cos(theta_o)| = " << std::abs(cosO) << ", got " << R);
+                CHECK_MESSAGE(std::abs(R - std::abs(cosO)) < 1e-3,
+                              "expected R = |cos(theta_o)| = " << std::abs(cosO) << ", got " << R);
         }
     }
 }
@@ -254,8 +269,8 @@ TEST_CASE("bsdf: Phong with exponent 0 is Lambertian") {
             const Vec3 wi = dirAround(ns, 0.001 + 0.999 * rng.uniform(), 2.0 * M_PI * rng.uniform());
             const float fp = evalBSDF(p, kNormal, wo, wi).g, fd = evalBSDF(d, kNormal, wo, wi).g;
             if (std::abs(fp - fd) > 1e-6f * fd && ++bad <= 3)
-                FAIL_CHECK("cos(theta_o) = " << cosO << ", cos(theta_i) = " << glm::dot(ns, wi) << ": Phong(0) f = " << fp
-                                             << ", Lambertian f = " << fd);
+                FAIL_CHECK("cos(theta_o) = " << cosO << ", cos(theta_i) = " << glm::dot(ns, wi)
+                                             << ": Phong(0) f = " << fp << ", Lambertian f = " << fd);
         }
         CHECK_MESSAGE(bad == 0, "cos(theta_o) = " << cosO << ": " << bad << " of 2000 directions differ");
     }
@@ -271,8 +286,8 @@ TEST_CASE("bsdf: no NaN or Inf for exponents up to 1e6 and grazing or signed-zer
             const float s = std::sqrt(1.0f - c * c);
             dirs.push_back(Vec3(s * std::cos(phi), s * std::sin(phi), c));
         }
-    const Vec2 us[] = {Vec2(0.0f), Vec2(0x1.fffffep-1f), Vec2(0.0f, 0x1.fffffep-1f), Vec2(0x1.fffffep-1f, 0.0f), Vec2(0.5f, 0.25f),
-                       Vec2(1e-7f, 0.5f), Vec2(1.0f - 1e-7f, 0.5f)};
+    const Vec2 us[] = {Vec2(0.0f),        Vec2(0x1.fffffep-1f), Vec2(0.0f, 0x1.fffffep-1f), Vec2(0x1.fffffep-1f, 0.0f),
+                       Vec2(0.5f, 0.25f), Vec2(1e-7f, 0.5f),    Vec2(1.0f - 1e-7f, 0.5f)};
     std::vector<Material> mats = {diffuse(), mirror(), glass(1.5f), glass(1.0f / 1.5f)};
     for (float k : kExponents) mats.push_back(phong(k, 1.0f));
     int bad = 0;
@@ -282,21 +297,21 @@ TEST_CASE("bsdf: no NaN or Inf for exponents up to 1e6 and grazing or signed-zer
                 const Color f = evalBSDF(m, n, wo, wi);
                 const float pdf = pdfBSDF(m, n, wo, wi);
                 if ((!finiteColor(f) || !(pdf >= 0.0f) || !std::isfinite(pdf) || f.g < 0.0f) && ++bad <= 5)
-                    FAIL_CHECK("kind " << int(m.kind) << " exponent " << m.exponent << ": f = " << f.g << ", pdf = " << pdf
-                                       << " for wo.z = " << wo.z << ", wi.z = " << wi.z);
+                    FAIL_CHECK("kind " << int(m.kind) << " exponent " << m.exponent << ": f = " << f.g
+                                       << ", pdf = " << pdf << " for wo.z = " << wo.z << ", wi.z = " << wi.z);
             }
             for (const Vec2& u : us)
                 for (float uLobe : {0.0f, 0.5f, 0x1.fffffep-1f})
                     for (Transport mode : {Transport::Radiance, Transport::Importance}) {
                         BSDFSample s;
                         if (!sampleBSDF(m, n, wo, u, uLobe, mode, s)) continue;
-                        const bool ok = finiteColor(s.weight) && s.weight.g >= 0.0f && std::isfinite(s.pdf) && s.pdf > 0.0f &&
-                                        std::isfinite(s.wi.x) && std::isfinite(s.wi.y) && std::isfinite(s.wi.z) &&
-                                        std::abs(glm::length(s.wi) - 1.0f) < 1e-5f;
+                        const bool ok = finiteColor(s.weight) && s.weight.g >= 0.0f && std::isfinite(s.pdf) &&
+                                        s.pdf > 0.0f && std::isfinite(s.wi.x) && std::isfinite(s.wi.y) &&
+                                        std::isfinite(s.wi.z) && std::abs(glm::length(s.wi) - 1.0f) < 1e-5f;
                         if (!ok && ++bad <= 5)
-                            FAIL_CHECK("kind " << int(m.kind) << " exponent " << m.exponent << ": sample from wo.z = " << wo.z
-                                               << " gave wi = (" << s.wi.x << ", " << s.wi.y << ", " << s.wi.z << "), pdf "
-                                               << s.pdf << ", weight " << s.weight.g);
+                            FAIL_CHECK("kind " << int(m.kind) << " exponent " << m.exponent << ": sample from wo.z = "
+                                               << wo.z << " gave wi = (" << s.wi.x << ", " << s.wi.y << ", " << s.wi.z
+                                               << "), pdf " << s.pdf << ", weight " << s.weight.g);
                     }
         }
     CHECK(bad == 0);
@@ -315,8 +330,9 @@ TEST_CASE("bsdf: mirror is a delta lobe that reflects exactly") {
         // wi = 2 (wo . n) n - wo: equal angles, same plane, other side of n.
         const Vec3 expect = 2.0f * glm::dot(wo, kNormal) * kNormal - wo;
         INFO("cos(theta_o) = " << cosO);
-        CHECK_MESSAGE(glm::length(s.wi - expect) < 1e-6f, "wi = (" << s.wi.x << ", " << s.wi.y << ", " << s.wi.z << "), expected ("
-                                                                  << expect.x << ", " << expect.y << ", " << expect.z << ")");
+        CHECK_MESSAGE(glm::length(s.wi - expect) < 1e-6f, "wi = (" << s.wi.x << ", " << s.wi.y << ", " << s.wi.z
+                                                                   << "), expected (" << expect.x << ", " << expect.y
+                                                                   << ", " << expect.z << ")");
         CHECK(glm::dot(s.wi, kNormal) == doctest::Approx(glm::dot(wo, kNormal)).epsilon(1e-5));
         CHECK(s.delta);
         CHECK(s.weight == m.albedo);
@@ -342,17 +358,20 @@ double fresnelRef(double ci, double ni, double nt) {
 
 TEST_CASE("bsdf: dielectric Fresnel at normal incidence and against the textbook formula") {
     for (float ior : {1.33f, 1.5f, 2.4f}) {
-        const double r0 = std::pow((ior - 1.0) / (ior + 1.0), 2.0);   // ((n-1)/(n+1))^2
-        CHECK_MESSAGE(fresnelDielectric(1.0f, 1.0f, ior) == doctest::Approx(r0).epsilon(1e-5),
-                      "ior " << ior << " from outside: expected " << r0 << ", got " << fresnelDielectric(1.0f, 1.0f, ior));
-        CHECK_MESSAGE(fresnelDielectric(1.0f, ior, 1.0f) == doctest::Approx(r0).epsilon(1e-5),
-                      "ior " << ior << " from inside: expected " << r0 << ", got " << fresnelDielectric(1.0f, ior, 1.0f));
+        const double r0 = std::pow((ior - 1.0) / (ior + 1.0), 2.0);  // ((n-1)/(n+1))^2
+        CHECK_MESSAGE(
+            fresnelDielectric(1.0f, 1.0f, ior) == doctest::Approx(r0).epsilon(1e-5),
+            "ior " << ior << " from outside: expected " << r0 << ", got " << fresnelDielectric(1.0f, 1.0f, ior));
+        CHECK_MESSAGE(
+            fresnelDielectric(1.0f, ior, 1.0f) == doctest::Approx(r0).epsilon(1e-5),
+            "ior " << ior << " from inside: expected " << r0 << ", got " << fresnelDielectric(1.0f, ior, 1.0f));
         for (int i = 0; i <= 100; ++i) {
             const float c = i / 100.0f;
             for (auto [ni, nt] : {std::pair<float, float>{1.0f, ior}, {ior, 1.0f}}) {
                 const double ref = fresnelRef(c, ni, nt);
                 CHECK_MESSAGE(std::abs(fresnelDielectric(c, ni, nt) - ref) < 1e-5,
-                              "cos " << c << ", eta " << ni << " -> " << nt << ": expected " << ref << ", got " << fresnelDielectric(c, ni, nt));
+                              "cos " << c << ", eta " << ni << " -> " << nt << ": expected " << ref << ", got "
+                                     << fresnelDielectric(c, ni, nt));
             }
         }
     }
@@ -364,14 +383,15 @@ TEST_CASE("bsdf: dielectric total internal reflection beyond the critical angle"
     CHECK(m.isDelta());
     const double cosCrit = std::sqrt(1.0 - 1.0 / (1.5 * 1.5));
     for (double f : {0.999, 0.9, 0.5, 0.1, 1e-3}) {
-        const float cosO = static_cast<float>(-cosCrit * f);   // beyond the critical angle
+        const float cosO = static_cast<float>(-cosCrit * f);  // beyond the critical angle
         const Vec3 wo = outgoing(cosO);
         CHECK(fresnelDielectric(-cosO, 1.5f, 1.0f) == 1.0f);
         for (float uLobe : {0.0f, 0.5f, 0.99f, 0x1.fffffep-1f}) {
             BSDFSample s;
             REQUIRE(sampleBSDF(m, kNormal, wo, Vec2(0.5f), uLobe, Transport::Radiance, s));
             INFO("cos(theta_o) = " << cosO << ", uLobe = " << uLobe);
-            CHECK_MESSAGE(glm::dot(s.wi, kNormal) < 0.0f, "expected reflection (wi inside), got n.wi = " << glm::dot(s.wi, kNormal));
+            CHECK_MESSAGE(glm::dot(s.wi, kNormal) < 0.0f,
+                          "expected reflection (wi inside), got n.wi = " << glm::dot(s.wi, kNormal));
             CHECK(glm::length(s.wi - reflect(wo, -kNormal)) < 1e-6f);
             CHECK(s.weight == Color(1.0f));
             CHECK(s.pdf == 1.0f);
@@ -382,8 +402,8 @@ TEST_CASE("bsdf: dielectric total internal reflection beyond the critical angle"
 
 TEST_CASE("bsdf: dielectric refraction obeys Snell's law, transport weights and lobe probabilities") {
     const Material m = glass(1.5f);
-    const int M = 10000;   // uLobe grid for the lobe probabilities
-    for (float cosO : {1.0f, 0.8f, 0.3f, 0.01f, -1.0f, -0.9f, -0.76f}) {   // -0.76: just inside the critical cone
+    const int M = 10000;                                                  // uLobe grid for the lobe probabilities
+    for (float cosO : {1.0f, 0.8f, 0.3f, 0.01f, -1.0f, -0.9f, -0.76f}) {  // -0.76: just inside the critical cone
         const Vec3 wo = outgoing(cosO);
         const bool entering = cosO > 0.0f;
         const float etaI = entering ? 1.0f : 1.5f, etaT = entering ? 1.5f : 1.0f;
@@ -408,20 +428,25 @@ TEST_CASE("bsdf: dielectric refraction obeys Snell's law, transport weights and 
                 // Snell: etaI sin(theta_i) = etaT sin(theta_t), wi in the plane of wo and n,
                 // on the far side, its tangential part opposite to wo's.
                 const float sinI = glm::length(glm::cross(kNormal, wo)), sinT = glm::length(glm::cross(kNormal, s.wi));
-                CHECK_MESSAGE(std::abs(etaI * sinI - etaT * sinT) < 1e-5f, "Snell: " << etaI * sinI << " vs " << etaT * sinT);
+                CHECK_MESSAGE(std::abs(etaI * sinI - etaT * sinT) < 1e-5f,
+                              "Snell: " << etaI * sinI << " vs " << etaT * sinT);
                 CHECK(std::abs(glm::dot(glm::cross(wo, kNormal), s.wi)) < 1e-5f);
-                CHECK(glm::dot(wo - glm::dot(wo, kNormal) * kNormal, s.wi - glm::dot(s.wi, kNormal) * kNormal) <= 1e-6f);
+                CHECK(glm::dot(wo - glm::dot(wo, kNormal) * kNormal, s.wi - glm::dot(s.wi, kNormal) * kNormal) <=
+                      1e-6f);
                 CHECK(std::abs(glm::length(s.wi) - 1.0f) < 1e-5f);
                 // Radiance is scaled by (etaI/etaT)^2 on crossing; importance is not.
                 const float expectW = mode == Transport::Radiance ? (etaI / etaT) * (etaI / etaT) : 1.0f;
-                CHECK_MESSAGE(s.weight.g == doctest::Approx(expectW), "weight: expected " << expectW << ", got " << s.weight.g);
+                CHECK_MESSAGE(s.weight.g == doctest::Approx(expectW),
+                              "weight: expected " << expectW << ", got " << s.weight.g);
             }
         }
         // Reflection is chosen for a fraction F of uLobe, refraction for 1 - F: they sum to 1.
-        CHECK_MESSAGE(std::abs(double(reflected) / M - F) <= 1.0 / M, "reflected fraction " << double(reflected) / M << ", F = " << F);
+        CHECK_MESSAGE(std::abs(double(reflected) / M - F) <= 1.0 / M,
+                      "reflected fraction " << double(reflected) / M << ", F = " << F);
         BSDFSample r, t;
         REQUIRE(sampleBSDF(m, kNormal, wo, Vec2(0.3f), 0.0f, Transport::Radiance, r));
         REQUIRE(sampleBSDF(m, kNormal, wo, Vec2(0.3f), 0x1.fffffep-1f, Transport::Radiance, t));
-        if (F > 0.0f) CHECK_MESSAGE(r.pdf + t.pdf == doctest::Approx(1.0f), "P(reflect) + P(refract) = " << r.pdf + t.pdf);
+        if (F > 0.0f)
+            CHECK_MESSAGE(r.pdf + t.pdf == doctest::Approx(1.0f), "P(reflect) + P(refract) = " << r.pdf + t.pdf);
     }
 }

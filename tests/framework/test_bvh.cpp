@@ -37,7 +37,10 @@ Scene makeScene(const std::vector<Triangle>& tris, const std::vector<Sphere>& sp
 }
 
 // The closest hit by testing every primitive with the full ray: prim index and t.
-struct BruteHit { uint32_t prim = kNoPrimitive; float t = kInf; };
+struct BruteHit {
+    uint32_t prim = kNoPrimitive;
+    float t = kInf;
+};
 BruteHit bruteClosest(const Scene& s, const Ray& ray) {
     const WatertightRay wr(ray);
     BruteHit best;
@@ -47,7 +50,10 @@ BruteHit bruteClosest(const Scene& s, const Ray& ray) {
         float t, b1, b2;
         const bool hit = p.shape == ShapeKind::Triangle ? intersectTriangle(ray, wr, s.triangles[p.index], t, b1, b2)
                                                         : intersectSphere(ray, s.spheres[p.index], t);
-        if (hit && t < best.t) { best.t = t; best.prim = i; }
+        if (hit && t < best.t) {
+            best.t = t;
+            best.prim = i;
+        }
     }
     return best;
 }
@@ -63,21 +69,28 @@ int compareRay(const Scene& s, const Ray& ray, int& reported) {
     int bad = 0;
     const bool refHit = ref.prim != kNoPrimitive;
     std::string what;
-    if (hit != refHit) { ++bad; what = "closest: hit " + std::to_string(hit) + " vs brute force " + std::to_string(refHit); }
-    else if (hit) {
+    if (hit != refHit) {
+        ++bad;
+        what = "closest: hit " + std::to_string(hit) + " vs brute force " + std::to_string(refHit);
+    } else if (hit) {
         // t must match bit for bit (the same primitive test); a different primitive only when its
         // t is the same (coincident or touching primitives).
-        if (r.tMax != ref.t) { ++bad; what = "t " + std::to_string(r.tMax) + " vs brute force " + std::to_string(ref.t); }
-        else if (sp.prim != ref.prim && bruteClosest(s, Ray(ray.o, ray.d, kInf, ref.prim)).t != ref.t) {
-            ++bad;   // a different primitive must be one with the same t (brute force without ref.prim finds it)
+        if (r.tMax != ref.t) {
+            ++bad;
+            what = "t " + std::to_string(r.tMax) + " vs brute force " + std::to_string(ref.t);
+        } else if (sp.prim != ref.prim && bruteClosest(s, Ray(ray.o, ray.d, kInf, ref.prim)).t != ref.t) {
+            ++bad;  // a different primitive must be one with the same t (brute force without ref.prim finds it)
             what = "a different primitive at the same t that brute force does not see there";
         }
     }
-    if (occ != refHit) { ++bad; what += " occluded " + std::to_string(occ) + " vs brute force " + std::to_string(refHit); }
+    if (occ != refHit) {
+        ++bad;
+        what += " occluded " + std::to_string(occ) + " vs brute force " + std::to_string(refHit);
+    }
     if (bad && reported++ < 5)
-        FAIL_CHECK("ray o = (" << ray.o.x << ", " << ray.o.y << ", " << ray.o.z << ") d = (" << ray.d.x << ", " << ray.d.y
-                               << ", " << ray.d.z << ") tMax " << ray.tMax << ": " << what << " (BVH prim " << sp.prim
-                               << ", brute-force prim " << ref.prim << ")");
+        FAIL_CHECK("ray o = (" << ray.o.x << ", " << ray.o.y << ", " << ray.o.z << ") d = (" << ray.d.x << ", "
+                               << ray.d.y << ", " << ray.d.z << ") tMax " << ray.tMax << ": " << what << " (BVH prim "
+                               << sp.prim << ", brute-force prim " << ref.prim << ")");
     return bad;
 }
 
@@ -154,7 +167,8 @@ void checkStructure(const Scene& s) {
     CHECK_MESSAGE(badBoxes == 0, "expected every node box to hold its contents, got " << badBoxes << " that do not");
     int wrongCount = 0;
     for (uint32_t c : seen) wrongCount += c != 1;
-    CHECK_MESSAGE(wrongCount == 0, "expected each primitive in exactly one leaf, got " << wrongCount << " that are not");
+    CHECK_MESSAGE(wrongCount == 0,
+                  "expected each primitive in exactly one leaf, got " << wrongCount << " that are not");
     CHECK(bvh.depth() <= BVH::kMaxDepth);
 }
 
@@ -175,7 +189,7 @@ TEST_CASE("bvh: identical, overlapping and centroid-sharing triangles") {
     Rng rng(202);
     SUBCASE("500 copies of one triangle plus 500 overlapping ones") {
         std::vector<Triangle> tris(500, Triangle{Vec3(-1, -1, 0), Vec3(1, -1, 0), Vec3(0, 1, 0)});
-        for (int i = 0; i < 500; ++i) {   // the same plane, shifted in it
+        for (int i = 0; i < 500; ++i) {  // the same plane, shifted in it
             const Vec3 o(0.1f * rng.uniform(), 0.1f * rng.uniform(), 0.0f);
             tris.push_back({Vec3(-1, -1, 0) + o, Vec3(1, -1, 0) + o, Vec3(0, 1, 0) + o});
         }
@@ -188,8 +202,9 @@ TEST_CASE("bvh: identical, overlapping and centroid-sharing triangles") {
         std::vector<Triangle> tris;
         const Vec3 c(1.5f, -2.0f, 0.25f);
         for (int i = 0; i < 3000; ++i) {
-            const Vec3 a = randomUnit(rng) * (0.1f + 3.0f * rng.uniform()), b = randomUnit(rng) * (0.1f + 3.0f * rng.uniform());
-            tris.push_back({c + a, c + b, c - a - b});   // centroid exactly c (up to rounding)
+            const Vec3 a = randomUnit(rng) * (0.1f + 3.0f * rng.uniform()),
+                       b = randomUnit(rng) * (0.1f + 3.0f * rng.uniform());
+            tris.push_back({c + a, c + b, c - a - b});  // centroid exactly c (up to rounding)
         }
         const Scene s = makeScene(tris, {});
         checkStructure(s);
@@ -205,9 +220,10 @@ TEST_CASE("bvh: identical, overlapping and centroid-sharing triangles") {
         const Scene s = makeScene(tris, {});
         checkStructure(s);
         std::vector<Ray> rays;
-        for (int k = 0; k < 2000; ++k) {   // rays along the row, from random starts, both ways
+        for (int k = 0; k < 2000; ++k) {  // rays along the row, from random starts, both ways
             const float x0 = std::pow(1.12f, 600.0f * rng.uniform()) - 1.0f;
-            const Vec3 d = glm::normalize(Vec3(k % 2 ? 1.0f : -1.0f, 0.001f * (rng.uniform() - 0.5f), 0.001f * (rng.uniform() - 0.5f)));
+            const Vec3 d = glm::normalize(
+                Vec3(k % 2 ? 1.0f : -1.0f, 0.001f * (rng.uniform() - 0.5f), 0.001f * (rng.uniform() - 0.5f)));
             rays.emplace_back(Vec3(x0, 0.01f * (rng.uniform() - 0.5f), 0.0f), d);
         }
         const int bad = compareAll(s, rays);
@@ -223,13 +239,20 @@ TEST_CASE("bvh: axis-parallel rays, including rays in the planes of the boxes") 
     for (int i = 0; i < 6; ++i)
         for (int j = 0; j < 6; ++j) {
             const float x = float(i), y = float(j);
-            tris.push_back({Vec3(x, y, 0), Vec3(x + 1, y, 0), Vec3(x, y + 1, 0)});       // in z = 0
-            tris.push_back({Vec3(x, 0, y), Vec3(x, 1, y), Vec3(x, 0, y + 1)});           // in x = i
-            tris.push_back({Vec3(0, x, y), Vec3(0, x, y + 1), Vec3(1, x, y)});           // in y = i
+            tris.push_back({Vec3(x, y, 0), Vec3(x + 1, y, 0), Vec3(x, y + 1, 0)});  // in z = 0
+            tris.push_back({Vec3(x, 0, y), Vec3(x, 1, y), Vec3(x, 0, y + 1)});      // in x = i
+            tris.push_back({Vec3(0, x, y), Vec3(0, x, y + 1), Vec3(1, x, y)});      // in y = i
         }
     const Scene s = makeScene(tris, {});
-    const Vec3 dirs[] = {Vec3(1, 0, 0), Vec3(-1, 0, 0), Vec3(0, 1, 0), Vec3(0, -1, 0), Vec3(0, 0, 1), Vec3(0, 0, -1),
-                         glm::normalize(Vec3(1, 1, 0)), glm::normalize(Vec3(0, -1, 1)), glm::normalize(Vec3(1, 0, -1))};
+    const Vec3 dirs[] = {Vec3(1, 0, 0),
+                         Vec3(-1, 0, 0),
+                         Vec3(0, 1, 0),
+                         Vec3(0, -1, 0),
+                         Vec3(0, 0, 1),
+                         Vec3(0, 0, -1),
+                         glm::normalize(Vec3(1, 1, 0)),
+                         glm::normalize(Vec3(0, -1, 1)),
+                         glm::normalize(Vec3(1, 0, -1))};
     std::vector<Ray> rays;
     for (const Vec3& d : dirs)
         for (int a = -1; a <= 14; ++a)
@@ -237,12 +260,18 @@ TEST_CASE("bvh: axis-parallel rays, including rays in the planes of the boxes") 
                 for (float c : {-1.0f, 0.0f, 0.5f, 3.0f, 7.0f}) {
                     const float u = 0.5f * a, v = 0.5f * b;
                     // Start "behind" the grid along d, at (u, v) in the other two coordinates.
-                    Vec3 o = d.x != 0 ? Vec3(c - 4.0f * d.x, u, v) : d.y != 0 ? Vec3(u, c - 4.0f * d.y, v) : Vec3(u, v, c - 4.0f * d.z);
+                    Vec3 o = d.x != 0   ? Vec3(c - 4.0f * d.x, u, v)
+                             : d.y != 0 ? Vec3(u, c - 4.0f * d.y, v)
+                                        : Vec3(u, v, c - 4.0f * d.z);
                     rays.emplace_back(o, d);
                 }
     int hits = 0;
-    for (const Ray& r : rays) { Ray rr = r; SurfacePoint sp; hits += s.intersect(rr, sp); }
-    CHECK(hits > 1000);   // the test is about rays that do hit
+    for (const Ray& r : rays) {
+        Ray rr = r;
+        SurfacePoint sp;
+        hits += s.intersect(rr, sp);
+    }
+    CHECK(hits > 1000);  // the test is about rays that do hit
     const int bad = compareAll(s, rays);
     CHECK_MESSAGE(bad == 0, "expected 0 disagreements with brute force, got " << bad);
 }
@@ -252,7 +281,7 @@ TEST_CASE("bvh: triangles mixed with spheres equal brute force") {
     std::vector<Triangle> tris = randomSoup(2000, 1.0f, rng);
     std::vector<Sphere> spheres;
     for (int i = 0; i < 300; ++i) spheres.push_back({randomIn(rng, Vec3(-10), Vec3(10)), 0.05f + 1.5f * rng.uniform()});
-    spheres.push_back({Vec3(0), 4.0f});   // a big one around many triangles: rays start inside it
+    spheres.push_back({Vec3(0), 4.0f});  // a big one around many triangles: rays start inside it
     const Scene s = makeScene(tris, spheres);
     checkStructure(s);
     const int bad = compareAll(s, makeRays(s, 6000, rng));
@@ -278,8 +307,10 @@ TEST_CASE("bvh: an empty scene has an empty BVH and nothing is hit") {
 TEST_CASE("bvh: intersect reports the hit point, normal and material of the closest primitive") {
     // Two parallel squares at z = 1 and z = 2 and a sphere at z = 5: a ray up the z axis hits
     // z = 1 first, at p = (0.25, 0.25, 1) with the winding normal (0, 0, -1).
-    std::vector<Triangle> tris = {{Vec3(-1, -1, 1), Vec3(-1, 1, 1), Vec3(1, 1, 1)}, {Vec3(-1, -1, 1), Vec3(1, 1, 1), Vec3(1, -1, 1)},
-                                  {Vec3(-1, -1, 2), Vec3(1, -1, 2), Vec3(1, 1, 2)}, {Vec3(-1, -1, 2), Vec3(1, 1, 2), Vec3(-1, 1, 2)}};
+    std::vector<Triangle> tris = {{Vec3(-1, -1, 1), Vec3(-1, 1, 1), Vec3(1, 1, 1)},
+                                  {Vec3(-1, -1, 1), Vec3(1, 1, 1), Vec3(1, -1, 1)},
+                                  {Vec3(-1, -1, 2), Vec3(1, -1, 2), Vec3(1, 1, 2)},
+                                  {Vec3(-1, -1, 2), Vec3(1, 1, 2), Vec3(-1, 1, 2)}};
     const Scene s = makeScene(tris, {Sphere{Vec3(0, 0, 5), 1.0f}});
     Ray r(Vec3(0.25f, 0.25f, -3), Vec3(0, 0, 1));
     SurfacePoint sp;
@@ -288,7 +319,7 @@ TEST_CASE("bvh: intersect reports the hit point, normal and material of the clos
     CHECK(sp.p.x == doctest::Approx(0.25f));
     CHECK(sp.p.z == doctest::Approx(1.0f));
     CHECK_MESSAGE(sp.n.z == doctest::Approx(-1.0f), "normal z: expected -1, got " << sp.n.z);
-    CHECK((sp.prim == 0 || sp.prim == 1));   // (0.25, 0.25) lies on their shared diagonal
+    CHECK((sp.prim == 0 || sp.prim == 1));  // (0.25, 0.25) lies on their shared diagonal
     CHECK(sp.material == 0);
     // Ignoring that triangle, the ray passes through the shared diagonal and must still hit
     // the first square via the other triangle (the point is on their shared edge).

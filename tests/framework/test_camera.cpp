@@ -36,7 +36,7 @@ ImagePlane planeOf(const Camera& cam) {
     p.f = glm::dvec3(cam.forward());
     const glm::dvec3 dr(cam.generateRay(Vec2(float(cam.width()), 0.5f * cam.height())).d);
     const glm::dvec3 du(cam.generateRay(Vec2(0.5f * cam.width(), 0.0f)).d);
-    const glm::dvec3 rr = dr / glm::dot(dr, p.f) - p.f, uu = du / glm::dot(du, p.f) - p.f;   // on the plane z = 1
+    const glm::dvec3 rr = dr / glm::dot(dr, p.f) - p.f, uu = du / glm::dot(du, p.f) - p.f;  // on the plane z = 1
     p.tx = glm::length(rr);
     p.ty = glm::length(uu);
     p.r = rr / p.tx;
@@ -84,8 +84,15 @@ TEST_CASE("camera: rasterPosition of a point on generateRay's ray gives back the
     for (const CameraCase& cc : kCameras) {
         const Camera cam = make(cc);
         const float W = float(cc.w), H = float(cc.h);
-        const Vec2 rasters[] = {Vec2(0.5f * W, 0.5f * H), Vec2(0.5f, 0.5f), Vec2(W - 0.5f, H - 0.5f), Vec2(W - 0.5f, 0.5f),
-                                Vec2(0.5f, H - 0.5f), Vec2(0.0f, 0.0f), Vec2(W, H), Vec2(0.0f, H), Vec2(0.3f, 0.7f * H),
+        const Vec2 rasters[] = {Vec2(0.5f * W, 0.5f * H),
+                                Vec2(0.5f, 0.5f),
+                                Vec2(W - 0.5f, H - 0.5f),
+                                Vec2(W - 0.5f, 0.5f),
+                                Vec2(0.5f, H - 0.5f),
+                                Vec2(0.0f, 0.0f),
+                                Vec2(W, H),
+                                Vec2(0.0f, H),
+                                Vec2(0.3f, 0.7f * H),
                                 Vec2(W - 1e-3f, 1e-3f)};
         for (const Vec2& x : rasters) {
             const Ray ray = cam.generateRay(x);
@@ -95,7 +102,8 @@ TEST_CASE("camera: rasterPosition of a point on generateRay's ray gives back the
                 Vec2 back(-1.0f);
                 const bool inside = cam.rasterPosition(ray.at(t), back);
                 INFO(cc.name << ": raster (" << x.x << ", " << x.y << "), point at t = " << t);
-                CHECK_MESSAGE(glm::length(back - x) < 1e-3f, "expected (" << x.x << ", " << x.y << "), got (" << back.x << ", " << back.y << ")");
+                CHECK_MESSAGE(glm::length(back - x) < 1e-3f,
+                              "expected (" << x.x << ", " << x.y << "), got (" << back.x << ", " << back.y << ")");
                 const bool interior = x.x >= 1e-2f && x.y >= 1e-2f && x.x <= W - 1e-2f && x.y <= H - 1e-2f;
                 if (interior) CHECK_MESSAGE(inside, "expected rasterPosition to report the point inside the image");
             }
@@ -110,10 +118,10 @@ TEST_CASE("camera: points behind the camera, in its plane, or outside the image 
         const Vec3 eye = cc.eye, f = cam.forward(), r(p.r), u(p.u);
         Vec2 raster;
         INFO(cc.name);
-        CHECK_FALSE(cam.rasterPosition(eye - 5.0f * f, raster));                  // straight behind
+        CHECK_FALSE(cam.rasterPosition(eye - 5.0f * f, raster));  // straight behind
         CHECK_FALSE(cam.rasterPosition(eye - 5.0f * f + 0.1f * r + 0.1f * u, raster));
-        CHECK_FALSE(cam.rasterPosition(eye + 3.0f * r, raster));                  // in the camera's plane
-        CHECK_FALSE(cam.rasterPosition(eye, raster));                             // the pinhole itself
+        CHECK_FALSE(cam.rasterPosition(eye + 3.0f * r, raster));  // in the camera's plane
+        CHECK_FALSE(cam.rasterPosition(eye, raster));             // the pinhole itself
         // Just outside each image edge (1 % beyond the half-extent), at distance 10.
         const float tx = float(p.tx), ty = float(p.ty);
         CHECK_FALSE(cam.rasterPosition(eye + 10.0f * (f + 1.01f * tx * r), raster));
@@ -155,14 +163,16 @@ TEST_CASE("camera: pdfDirection is the density of rays through uniform raster po
         const Camera cam = make(cc);
         const ImagePlane p = planeOf(cam);
         const double delta = 0.01;
-        for (const Vec2& x : {Vec2(0.5f * cc.w, 0.5f * cc.h), Vec2(0.5f, 0.5f), Vec2(cc.w - 0.5f, 0.5f), Vec2(0.3f * cc.w, 0.8f * cc.h)}) {
+        for (const Vec2& x : {Vec2(0.5f * cc.w, 0.5f * cc.h), Vec2(0.5f, 0.5f), Vec2(cc.w - 0.5f, 0.5f),
+                              Vec2(0.3f * cc.w, 0.8f * cc.h)}) {
             const glm::dvec2 a = planeOfRaster(p, cam, x.x - 0.5 * delta, x.y + 0.5 * delta);
             const glm::dvec2 b = planeOfRaster(p, cam, x.x + 0.5 * delta, x.y - 0.5 * delta);
             const double omega = rectSolidAngle(p, a.x, a.y, b.x, b.y);
             const double expect = delta * delta / (double(cc.w) * cc.h * omega);
             const float got = cam.pdfDirection(cam.generateRay(x).d);
-            CHECK_MESSAGE(std::abs(got - expect) < 1e-3 * expect,
-                          cc.name << " at raster (" << x.x << ", " << x.y << "): expected pdf " << expect << ", got " << got);
+            CHECK_MESSAGE(std::abs(got - expect) < 1e-3 * expect, cc.name << " at raster (" << x.x << ", " << x.y
+                                                                          << "): expected pdf " << expect << ", got "
+                                                                          << got);
         }
     }
 }

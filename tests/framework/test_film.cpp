@@ -42,7 +42,9 @@ void writeText(const std::string& path, const std::string& text) {
 // The message of the InputError that f throws ("" if it throws none).
 template <class F>
 std::string inputErrorOf(F&& f) {
-    try { f(); } catch (const InputError& e) { return e.what(); }
+    try {
+        f();
+    } catch (const InputError& e) { return e.what(); }
     return "";
 }
 
@@ -51,17 +53,28 @@ std::string inputErrorOf(F&& f) {
 TEST_CASE("film: PFM write/read round trip is bit-exact") {
     // Odd sizes (rows are stored bottom to top), negative, tiny (denormal), huge, signed zero,
     // infinite and NaN values: PFM stores raw floats, so every bit must come back.
-    const float specials[] = {-1.5f, 0.0f, -0.0f, 1e-40f, std::numeric_limits<float>::denorm_min(),
-                              std::numeric_limits<float>::min(), std::numeric_limits<float>::max(), -3e38f, 1e30f,
-                              std::numeric_limits<float>::infinity(), -std::numeric_limits<float>::infinity(),
-                              std::numeric_limits<float>::quiet_NaN(), 0.1f, 12345.678f};
+    const float specials[] = {-1.5f,
+                              0.0f,
+                              -0.0f,
+                              1e-40f,
+                              std::numeric_limits<float>::denorm_min(),
+                              std::numeric_limits<float>::min(),
+                              std::numeric_limits<float>::max(),
+                              -3e38f,
+                              1e30f,
+                              std::numeric_limits<float>::infinity(),
+                              -std::numeric_limits<float>::infinity(),
+                              std::numeric_limits<float>::quiet_NaN(),
+                              0.1f,
+                              12345.678f};
     for (auto [w, h] : {std::pair<int, int>{7, 3}, {1, 1}, {3, 7}, {13, 1}}) {
         Image img(w, h);
         Rng rng(uint64_t(w * 100 + h));
         int k = 0;
         for (Color& c : img.pixels)
-            for (int ch = 0; ch < 3; ++ch) c[ch] = (k++ % 3 == 0) ? specials[rng.nextU32() % 14] : (rng.uniform() - 0.5f) * 1e3f;
-        img.at(0, 0) = Color(1, 2, 3);            // mark the corners: a flipped image would not match
+            for (int ch = 0; ch < 3; ++ch)
+                c[ch] = (k++ % 3 == 0) ? specials[rng.nextU32() % 14] : (rng.uniform() - 0.5f) * 1e3f;
+        img.at(0, 0) = Color(1, 2, 3);  // mark the corners: a flipped image would not match
         img.at(w - 1, h - 1) = Color(-4, -5, -6);
         const std::string path = tempPath("roundtrip-" + std::to_string(w) + "x" + std::to_string(h) + ".pfm");
         writePFM(path, img);
@@ -85,20 +98,24 @@ TEST_CASE("film: readPFM of a missing or malformed file throws InputError naming
     const std::string missing = tempPath("does-not-exist.pfm");
     const std::string msg = inputErrorOf([&] { readPFM(missing); });
     CHECK_MESSAGE(msg.find(missing) != std::string::npos, "message '" << msg << "' should name " << missing);
-    struct Bad { const char* name; std::string text; };
+    struct Bad {
+        const char* name;
+        std::string text;
+    };
     const Bad bad[] = {{"wrong-magic.pfm", "P6\n2 2\n255\n"},
                        {"grey.pfm", "Pf\n2 2\n-1.0\n" + std::string(16, '\0')},
                        {"negative-size.pfm", "PF\n-3 2\n-1.0\n"},
                        {"zero-scale.pfm", "PF\n2 2\n0\n" + std::string(48, '\0')},
                        {"no-size.pfm", "PF\nabc\n"},
-                       {"truncated.pfm", "PF\n2 2\n-1.0\n" + std::string(40, '\0')},   // 48 bytes needed
+                       {"truncated.pfm", "PF\n2 2\n-1.0\n" + std::string(40, '\0')},  // 48 bytes needed
                        {"empty.pfm", ""}};
     for (const Bad& b : bad) {
         const std::string path = tempPath(b.name);
         writeText(path, b.text);
         const std::string m = inputErrorOf([&] { readPFM(path); });
         fs::remove(path);
-        CHECK_MESSAGE(m.find(path) != std::string::npos, b.name << ": expected an InputError naming the file, got '" << m << "'");
+        CHECK_MESSAGE(m.find(path) != std::string::npos,
+                      b.name << ": expected an InputError naming the file, got '" << m << "'");
     }
 }
 
@@ -107,17 +124,26 @@ TEST_CASE("film: hostile PFM and .hdr files give an InputError at once (no hang,
     // the bytes the file has before allocating, and every run length while decoding: a 24-byte
     // PFM claiming 65536 x 65536 pixels must not ask for 48 GiB, a run of length 0 must not
     // loop forever (ctest's timeout would catch a hang), a 0 x 0 image is an error.
-    const std::string rle = std::string("\x02\x02\x00\x10", 4);   // RLE scanline header, width 16
-    struct Bad { const char* name; std::string text; const char* words; };
+    const std::string rle = std::string("\x02\x02\x00\x10", 4);  // RLE scanline header, width 16
+    struct Bad {
+        const char* name;
+        std::string text;
+        const char* words;
+    };
     const Bad bad[] = {
         {"huge.pfm", "PF\n65536 65536\n-1.0\n" + std::string(6, '\0'), "only"},
         {"huge.hdr", "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 65536 +X 65536\n" + std::string(8, '\0'), "too short"},
         {"zero.hdr", "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 0 +X 0\n", "size"},
-        {"zero-run.hdr", "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 1 +X 16\n" + rle + std::string(16, '\0'), "length 0"},
-        {"long-run.hdr", "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 1 +X 16\n" + rle + std::string("\xff\x01", 2) +
-                             std::string(14, '\x01'), "past the end"},
-        {"truncated-rle.hdr", "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 2 +X 16\n" + rle + std::string(4 * 17, '\x10') +
-                                  rle + std::string("\x90\x01", 2), "ends"},   // scanline 0 whole, scanline 1 cut
+        {"zero-run.hdr", "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 1 +X 16\n" + rle + std::string(16, '\0'),
+         "length 0"},
+        {"long-run.hdr",
+         "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 1 +X 16\n" + rle + std::string("\xff\x01", 2) +
+             std::string(14, '\x01'),
+         "past the end"},
+        {"truncated-rle.hdr",
+         "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 2 +X 16\n" + rle + std::string(4 * 17, '\x10') + rle +
+             std::string("\x90\x01", 2),
+         "ends"},  // scanline 0 whole, scanline 1 cut
         {"no-header-end.hdr", "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n", "header"},
         {"not-hdr.hdr", "P6\n2 2\n255\n", "RADIANCE"},
         {"flipped.hdr", "#?RADIANCE\n\n+Y 2 +X 2\n" + std::string(16, '\0'), "orientation"},
@@ -127,8 +153,10 @@ TEST_CASE("film: hostile PFM and .hdr files give an InputError at once (no hang,
         writeText(path, b.text);
         const std::string m = inputErrorOf([&] { readImage(path); });
         fs::remove(path);
-        CHECK_MESSAGE(m.find(path) != std::string::npos, b.name << ": expected an InputError naming the file, got '" << m << "'");
-        CHECK_MESSAGE(m.find(b.words) != std::string::npos, b.name << ": expected '" << b.words << "' in '" << m << "'");
+        CHECK_MESSAGE(m.find(path) != std::string::npos,
+                      b.name << ": expected an InputError naming the file, got '" << m << "'");
+        CHECK_MESSAGE(m.find(b.words) != std::string::npos,
+                      b.name << ": expected '" << b.words << "' in '" << m << "'");
     }
 }
 
@@ -143,7 +171,7 @@ TEST_CASE("film: .hdr round trip is within RGBE's error") {
             const float scale = std::pow(10.0f, -3.0f + 6.0f * rng.uniform());
             c = scale * Color(rng.uniform(), rng.uniform(), rng.uniform());
         }
-        for (int x = 0; x < std::min(w, 12); ++x) img.at(x, 1) = Color(2.0f, 2.0f, 0.5f);   // a run for RLE
+        for (int x = 0; x < std::min(w, 12); ++x) img.at(x, 1) = Color(2.0f, 2.0f, 0.5f);  // a run for RLE
         const std::string path = tempPath("roundtrip-" + std::to_string(w) + ".hdr");
         writeImage(path, img);
         const Image back = readImage(path);
@@ -169,7 +197,7 @@ TEST_CASE("film: checkSample counts NaN and Inf separately and returns 0 for the
     const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
     SampleStats st;
     CHECK(checkSample(Color(1, 2, 3), st) == Color(1, 2, 3));
-    CHECK(checkSample(Color(-1e30f, 0, 1e-40f), st) == Color(-1e30f, 0, 1e-40f));   // finite: unchanged
+    CHECK(checkSample(Color(-1e30f, 0, 1e-40f), st) == Color(-1e30f, 0, 1e-40f));  // finite: unchanged
     CHECK(st.nan == 0);
     CHECK(st.inf == 0);
     CHECK(checkSample(Color(nan, 1, 1), st) == Color(0.0f));
@@ -177,7 +205,7 @@ TEST_CASE("film: checkSample counts NaN and Inf separately and returns 0 for the
     CHECK(checkSample(Color(inf, 1, 1), st) == Color(0.0f));
     CHECK(checkSample(Color(1, -inf, 1), st) == Color(0.0f));
     CHECK(checkSample(Color(1, 1, inf), st) == Color(0.0f));
-    CHECK(checkSample(Color(nan, inf, 0), st) == Color(0.0f));   // both: counted once, as NaN
+    CHECK(checkSample(Color(nan, inf, 0), st) == Color(0.0f));  // both: counted once, as NaN
     CHECK_MESSAGE(st.nan == 3, "expected 3 NaN samples, got " << st.nan);
     CHECK_MESSAGE(st.inf == 3, "expected 3 Inf samples, got " << st.inf);
     CHECK(st.bad() == 6);
@@ -197,7 +225,7 @@ TEST_CASE("film: mean and variance of the mean against hand-computed values") {
     // Mean: 2.5, 10, 2; 10002.5. Sample variance s^2 = sum (x - mean)^2 / (n - 1):
     // {1,2,3,4}: 5 / 3, /4 -> 5/12; constant: 0; {0,0,0,8}: (3*4 + 36) / 3 = 16, /4 -> 4.
     Film film(2, 1);
-    CHECK(film.mean().pixels[0] == Color(0.0f));          // no iterations: black
+    CHECK(film.mean().pixels[0] == Color(0.0f));  // no iterations: black
     CHECK(film.varianceOfMean().pixels[0] == Color(0.0f));
     const float r0[] = {1, 2, 3, 4}, b0[] = {0, 0, 0, 8};
     for (int i = 0; i < 4; ++i) {
@@ -205,7 +233,7 @@ TEST_CASE("film: mean and variance of the mean against hand-computed values") {
         it.at(0, 0) = Color(r0[i], 10.0f, b0[i]);
         it.at(1, 0) = Color(1e4f + r0[i], 0.0f, 0.0f);
         film.addIteration(it);
-        if (i == 0) CHECK(film.varianceOfMean().pixels[0] == Color(0.0f));   // n = 1: no estimate, 0
+        if (i == 0) CHECK(film.varianceOfMean().pixels[0] == Color(0.0f));  // n = 1: no estimate, 0
     }
     CHECK(film.iterations() == 4);
     const Image m = film.mean(), v = film.varianceOfMean();
@@ -216,7 +244,8 @@ TEST_CASE("film: mean and variance of the mean against hand-computed values") {
     CHECK_MESSAGE(v.at(0, 0).r == doctest::Approx(5.0 / 12.0).epsilon(1e-6), "expected 5/12, got " << v.at(0, 0).r);
     CHECK_MESSAGE(v.at(0, 0).g == 0.0f, "constant samples: expected variance 0, got " << v.at(0, 0).g);
     CHECK_MESSAGE(v.at(0, 0).b == doctest::Approx(4.0).epsilon(1e-6), "expected 4, got " << v.at(0, 0).b);
-    CHECK_MESSAGE(v.at(1, 0).r == doctest::Approx(5.0 / 12.0).epsilon(1e-4), "offset 1e4: expected 5/12, got " << v.at(1, 0).r);
+    CHECK_MESSAGE(v.at(1, 0).r == doctest::Approx(5.0 / 12.0).epsilon(1e-4),
+                  "offset 1e4: expected 5/12, got " << v.at(1, 0).r);
 }
 
 namespace {
@@ -262,11 +291,14 @@ TEST_CASE("film: SplatBuffer images are bit-identical for 1 and 2 threads") {
     CHECK(sameBits(two, twoAgain));
     CHECK(s1.nan == s2.nan);
     CHECK(s1.inf == s2.inf);
-    CHECK(s1.nan > 0);   // the NaN/Inf splats were counted, not added
+    CHECK(s1.nan > 0);  // the NaN/Inf splats were counted, not added
     CHECK(s1.inf > 0);
     int nonFinite = 0;
     double sum = 0.0;
-    for (const Color& c : one.pixels) { nonFinite += !isFinite(c); sum += c.b; }
+    for (const Color& c : one.pixels) {
+        nonFinite += !isFinite(c);
+        sum += c.b;
+    }
     CHECK(nonFinite == 0);
     CHECK(sum > 0.0);
 }
@@ -279,9 +311,15 @@ TEST_CASE("film: SplatBuffer adds splats inside the image and drops those outsid
     SampleStats st;
     buf.splat(1, Vec2(1.5f, 2.5f), Color(1.0f), st);
     buf.splat(0, Vec2(0.0f, 0.0f), Color(2.0f), st);
-    buf.splat(0, Vec2(4.0f, 3.0f), Color(8.0f), st);          // on the far corner: last pixel
-    const Vec2 outside[] = {Vec2(-0.5f, 1.0f), Vec2(1.0f, -0.25f), Vec2(-1e-7f, 0.5f), Vec2(4.5f, 1.0f), Vec2(100.0f, 1.0f),
-                            Vec2(1.0f, 3.5f), Vec2(2.0f, 1e9f), Vec2(std::numeric_limits<float>::quiet_NaN(), 1.0f),
+    buf.splat(0, Vec2(4.0f, 3.0f), Color(8.0f), st);  // on the far corner: last pixel
+    const Vec2 outside[] = {Vec2(-0.5f, 1.0f),
+                            Vec2(1.0f, -0.25f),
+                            Vec2(-1e-7f, 0.5f),
+                            Vec2(4.5f, 1.0f),
+                            Vec2(100.0f, 1.0f),
+                            Vec2(1.0f, 3.5f),
+                            Vec2(2.0f, 1e9f),
+                            Vec2(std::numeric_limits<float>::quiet_NaN(), 1.0f),
                             Vec2(1.0f, std::numeric_limits<float>::infinity())};
     for (const Vec2& x : outside) buf.splat(0, x, Color(100.0f), st);
     Image img(4, 3);
@@ -291,8 +329,8 @@ TEST_CASE("film: SplatBuffer adds splats inside the image and drops those outsid
     CHECK(img.at(3, 2) == Color(8.0f));
     double total = 0.0;
     for (const Color& c : img.pixels) total += c.r;
-    CHECK_MESSAGE(total == 11.0, "expected only the 3 splats inside (sum 11), got a sum of " << total
-                                     << ": splats outside the image landed on border pixels");
+    CHECK_MESSAGE(total == 11.0, "expected only the 3 splats inside (sum 11), got a sum of "
+                                     << total << ": splats outside the image landed on border pixels");
     CHECK(st.bad() == 0);
     // Resolving empties the lists: a second resolve adds nothing.
     buf.resolve(img);

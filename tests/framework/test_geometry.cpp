@@ -99,7 +99,8 @@ TEST_CASE("geometry: triangle hit distance and barycentrics equal their exact va
         const bool hit = intersectTriangle(ray, WatertightRay(ray), g, t, b1, b2);
         INFO("ray " << i << " aimed at barycentrics (" << e1 << ", " << e2 << ")");
         REQUIRE(hit);
-        CHECK_MESSAGE(std::abs(t - glm::length(dd)) < 1e-5 * glm::length(dd), "t: expected " << glm::length(dd) << ", got " << t);
+        CHECK_MESSAGE(std::abs(t - glm::length(dd)) < 1e-5 * glm::length(dd),
+                      "t: expected " << glm::length(dd) << ", got " << t);
         CHECK_MESSAGE(std::abs(b1 - e1) < 1e-5, "b1: expected " << e1 << ", got " << b1);
         CHECK_MESSAGE(std::abs(b2 - e2) < 1e-5, "b2: expected " << e2 << ", got " << b2);
     }
@@ -108,15 +109,15 @@ TEST_CASE("geometry: triangle hit distance and barycentrics equal their exact va
 TEST_CASE("geometry: triangle respects the open segment (0, tMax) and parallel rays miss") {
     const Triangle tri{Vec3(-1, -1, 0), Vec3(1, -1, 0), Vec3(0, 1, 0)};
     float t, b1, b2;
-    Ray r(Vec3(0, 0, 1), Vec3(0, 0, -1), 1.0f);   // hit exactly at tMax: outside the open segment
+    Ray r(Vec3(0, 0, 1), Vec3(0, 0, -1), 1.0f);  // hit exactly at tMax: outside the open segment
     CHECK_FALSE(intersectTriangle(r, WatertightRay(r), tri, t, b1, b2));
     r.tMax = 1.0001f;
     CHECK(intersectTriangle(r, WatertightRay(r), tri, t, b1, b2));
-    Ray behind(Vec3(0, 0, -1), Vec3(0, 0, -1));    // triangle behind the origin
+    Ray behind(Vec3(0, 0, -1), Vec3(0, 0, -1));  // triangle behind the origin
     CHECK_FALSE(intersectTriangle(behind, WatertightRay(behind), tri, t, b1, b2));
-    Ray inPlane(Vec3(-5, 0, 0), Vec3(1, 0, 0));    // in the triangle's plane: det = 0
+    Ray inPlane(Vec3(-5, 0, 0), Vec3(1, 0, 0));  // in the triangle's plane: det = 0
     CHECK_FALSE(intersectTriangle(inPlane, WatertightRay(inPlane), tri, t, b1, b2));
-    Ray onOrigin(Vec3(0, 0, 0), Vec3(0, 0, 1));    // starts on the triangle: t = 0 is excluded
+    Ray onOrigin(Vec3(0, 0, 0), Vec3(0, 0, 1));  // starts on the triangle: t = 0 is excluded
     CHECK_FALSE(intersectTriangle(onOrigin, WatertightRay(onOrigin), tri, t, b1, b2));
 }
 
@@ -136,9 +137,11 @@ TEST_CASE("geometry: rays through shared edges and vertices of a closed mesh nev
             const Triangle& tri = m[rng.nextU32() % m.size()];
             const Vec3 e0 = tri.p0, e1 = tri.p1, e2 = tri.p2;
             Vec3 target;
-            const int kind = k % 3;   // 0: point on an edge, 1: a vertex, 2: a face interior
-            if (kind == 0) { const float s = rng.uniform(); target = (1.0f - s) * e0 + s * e1; }
-            else if (kind == 1) target = e2;
+            const int kind = k % 3;  // 0: point on an edge, 1: a vertex, 2: a face interior
+            if (kind == 0) {
+                const float s = rng.uniform();
+                target = (1.0f - s) * e0 + s * e1;
+            } else if (kind == 1) target = e2;
             else target = pointAt(tri, 0.1f + 0.3f * rng.uniform(), 0.1f + 0.3f * rng.uniform());
             // Origin outside, on the side the face looks to, direction through the target and
             // on into the interior (towards a random point near the centroid).
@@ -146,7 +149,7 @@ TEST_CASE("geometry: rays through shared edges and vertices of a closed mesh nev
             const Vec3 d = glm::normalize(inside - target);
             const Ray ray(target - 3.0f * scale * d, d);
             const std::vector<float> ts = allHits(m, ray);
-            const float tMid = glm::dot(inside - ray.o, d);   // the ray is inside the mesh here
+            const float tMid = glm::dot(inside - ray.o, d);  // the ray is inside the mesh here
             int entry = 0, exit = 0;
             for (float t : ts) (t < tMid ? entry : exit)++;
             INFO("mesh " << mesh << " (scale " << scale << "), ray " << k << ", kind " << kind);
@@ -167,17 +170,19 @@ TEST_CASE("geometry: rays at the vertices and edges of a grid and of a thin fan 
         for (int i = 1; i < 16; ++i) {
             const Vec3 v(-0.37f + i * 0.0713f, 1.13f + j * 0.0713f, 0.29f);
             const Vec3 targets[] = {v, v + Vec3(0.0713f * rng.uniform(), 0, 0), v + Vec3(0, 0.0713f * rng.uniform(), 0),
-                                    v + 0.0713f * rng.uniform() * Vec3(1, 1, 0)};   // the diagonal edge
+                                    v + 0.0713f * rng.uniform() * Vec3(1, 1, 0)};  // the diagonal edge
             for (const Vec3& target : targets)
                 for (int s = 0; s < 4; ++s) {
-                    const Vec3 d = directionWithCos(Vec3(0, 0, s % 2 ? 1.0f : -1.0f), 0.05f + 0.95f * rng.uniform(), rng);
+                    const Vec3 d =
+                        directionWithCos(Vec3(0, 0, s % 2 ? 1.0f : -1.0f), 0.05f + 0.95f * rng.uniform(), rng);
                     const Ray ray(target + 2.0f * d, -d);
                     ++rays;
                     if (!hitsAny(g, ray)) {
                         ++misses;
-                        if (misses < 5) FAIL_CHECK("ray aimed at (" << target.x << ", " << target.y << ", " << target.z
-                                                                    << ") from direction " << d.x << " " << d.y << " " << d.z
-                                                                    << " missed every triangle");
+                        if (misses < 5)
+                            FAIL_CHECK("ray aimed at (" << target.x << ", " << target.y << ", " << target.z
+                                                        << ") from direction " << d.x << " " << d.y << " " << d.z
+                                                        << " missed every triangle");
                     }
                 }
         }
@@ -191,7 +196,7 @@ TEST_CASE("geometry: rays at the vertices and edges of a grid and of a thin fan 
         fan.push_back({centre, centre + Vec3(std::cos(a0), std::sin(a0), 0.01f * (k % 3)),
                        centre + Vec3(std::cos(a1), std::sin(a1), 0.01f * ((k + 1) % 3))});
     }
-    fan.back().p2 = fan.front().p1;   // close the fan exactly
+    fan.back().p2 = fan.front().p1;  // close the fan exactly
     for (int s = 0; s < 2000; ++s) {
         const Vec3 d = directionWithCos(Vec3(0, 0, s % 2 ? 1.0f : -1.0f), 0.05f + 0.95f * rng.uniform(), rng);
         const Ray ray(centre + 3.0f * d, -d);
@@ -212,8 +217,8 @@ TEST_CASE("geometry: rays just outside a triangle's edges miss, just inside hit"
         const Vec3 a = v[i % 3], b = v[(i + 1) % 3], opposite = v[(i + 2) % 3];
         const float s = 0.01f + 0.98f * rng.uniform();
         const Vec3 onEdge = (1.0f - s) * a + s * b;
-        Vec3 out = glm::normalize(glm::cross(b - a, n));           // in-plane, perpendicular to the edge
-        if (glm::dot(out, opposite - a) > 0.0f) out = -out;         // pointing away from the triangle
+        Vec3 out = glm::normalize(glm::cross(b - a, n));     // in-plane, perpendicular to the edge
+        if (glm::dot(out, opposite - a) > 0.0f) out = -out;  // pointing away from the triangle
         const float delta = 1e-4f * glm::length(b - a);
         const Vec3 d = directionWithCos(n, (i % 2 ? 1.0f : -1.0f) * (0.1f + 0.9f * rng.uniform()), rng);
         const Ray outside(onEdge + delta * out + 2.0f * d, -d), inside(onEdge - delta * out + 2.0f * d, -d);
@@ -228,9 +233,15 @@ TEST_CASE("geometry: a ray offset off a triangle never re-hits it, at scales 1e-
     // offsetRayOrigin moves the hit point by errScale * 2^-19 along the normal, to the side the
     // new direction points to. Over many random hit points and directions (including grazing
     // ones, |cos| = 1e-3), the new ray must not hit the triangle it leaves (no ignorePrim here).
-    struct Config { float scale; Vec3 shift; };
-    const Config configs[] = {{1e-4f, Vec3(0)}, {1.0f, Vec3(0)}, {1e4f, Vec3(0)},
-                              {1.0f, Vec3(1e5f, -1e5f, 1e5f)}, {1e-4f, Vec3(0.5f, 0.25f, -1.0f)}};
+    struct Config {
+        float scale;
+        Vec3 shift;
+    };
+    const Config configs[] = {{1e-4f, Vec3(0)},
+                              {1.0f, Vec3(0)},
+                              {1e4f, Vec3(0)},
+                              {1.0f, Vec3(1e5f, -1e5f, 1e5f)},
+                              {1e-4f, Vec3(0.5f, 0.25f, -1.0f)}};
     Rng rng(17);
     for (const Config& cfg : configs) {
         int rehits = 0, trials = 0;
@@ -238,7 +249,7 @@ TEST_CASE("geometry: a ray offset off a triangle never re-hits it, at scales 1e-
             Triangle t;
             for (Vec3* p : {&t.p0, &t.p1, &t.p2})
                 *p = cfg.shift + cfg.scale * (2.0f * Vec3(rng.uniform(), rng.uniform(), rng.uniform()) - 1.0f);
-            if (t.area() < 0.05f * cfg.scale * cfg.scale) continue;   // skip slivers
+            if (t.area() < 0.05f * cfg.scale * cfg.scale) continue;  // skip slivers
             const Vec3 n = t.normal();
             for (int k = 0; k < 400; ++k) {
                 // The hit point as Scene computes it: a ray hits t; p from its barycentrics.
@@ -271,7 +282,10 @@ TEST_CASE("geometry: a ray offset off a sphere never re-hits it outward and stay
     // Sphere hit points as Scene computes them (reprojected to the surface, n = outward normal):
     // outward directions (cos > 0, down to 1e-3) must not hit the sphere again; inward
     // directions (a refraction) must hit it from inside.
-    struct Config { float scale; Vec3 shift; };
+    struct Config {
+        float scale;
+        Vec3 shift;
+    };
     const Config configs[] = {{1e-4f, Vec3(0)}, {1.0f, Vec3(0)}, {1e4f, Vec3(0)}, {1.0f, Vec3(1e5f, -1e5f, 1e5f)}};
     Rng rng(23);
     for (const Config& cfg : configs) {
@@ -307,7 +321,7 @@ TEST_CASE("geometry: two parallel surfaces 4e-5 apart do not leak") {
     const float gap = 4e-5f;
     const Mesh lower = grid(8, -1.0f, -1.0f, 0.25f, 0.0f);
     Mesh upper = grid(8, -1.0f, -1.0f, 0.25f, gap);
-    for (size_t i = 0; i < upper.size(); i += 2) std::swap(upper[i].p1, upper[i].p2);   // mixed windings
+    for (size_t i = 0; i < upper.size(); i += 2) std::swap(upper[i].p1, upper[i].p2);  // mixed windings
     Rng rng(31);
     int leaks = 0, selfHits = 0, trials = 0;
     for (int k = 0; k < 20000; ++k) {
@@ -316,7 +330,7 @@ TEST_CASE("geometry: two parallel surfaces 4e-5 apart do not leak") {
         const Mesh& to = up ? upper : lower;
         const Triangle& tri = from[rng.nextU32() % from.size()];
         const Vec3 p = pointAt(tri, 0.01f + 0.49f * rng.uniform(), 0.01f + 0.49f * rng.uniform());
-        if (std::abs(p.x) > 0.9f || std::abs(p.y) > 0.9f) continue;   // keep grazing rays over the grids
+        if (std::abs(p.x) > 0.9f || std::abs(p.y) > 0.9f) continue;  // keep grazing rays over the grids
         const Vec3 n = tri.normal();
         const float c = k % 4 < 2 ? 1e-3f : 0.01f + 0.99f * rng.uniform();
         const Vec3 w = directionWithCos(Vec3(0, 0, up ? 1.0f : -1.0f), c, rng);
@@ -326,7 +340,10 @@ TEST_CASE("geometry: two parallel surfaces 4e-5 apart do not leak") {
         // The surface it leaves must not be hit before the other one.
         const std::vector<float> self = allHits(from, ray), other = allHits(to, ray);
         for (float t : self)
-            if (other.empty() || t < *std::min_element(other.begin(), other.end())) { ++selfHits; break; }
+            if (other.empty() || t < *std::min_element(other.begin(), other.end())) {
+                ++selfHits;
+                break;
+            }
     }
     CHECK(trials > 10000);
     CHECK_MESSAGE(leaks == 0, "expected 0 of " << trials << " rays to pass the other surface, got " << leaks);
@@ -369,7 +386,7 @@ TEST_CASE("geometry: sphere intersection from outside, inside, tangent and far a
         // t must be within 8 ulp(distance) of the double-precision value.
         Rng rng(41);
         for (float dist : {1e3f, 1e5f}) {
-            const float r = dist == 1e3f ? 1e-3f : 0.5f;   // at 1e5, ulp = 0.0078: r = 0.5 keeps 0.06 r margins
+            const float r = dist == 1e3f ? 1e-3f : 0.5f;  // at 1e5, ulp = 0.0078: r = 0.5 keeps 0.06 r margins
             for (int k = 0; k < 500; ++k) {
                 const Sphere s{randomUnit(rng) * (dist * rng.uniform()), r};
                 const Vec3 d = randomUnit(rng);
@@ -379,7 +396,10 @@ TEST_CASE("geometry: sphere intersection from outside, inside, tangent and far a
                 const Ray ray(o, d);
                 const bool hit = intersectSphere(ray, s, t);
                 INFO("distance " << dist << ", ray " << k << ", passing at " << miss << " r");
-                if (miss > 1.0f) { CHECK_FALSE(hit); continue; }
+                if (miss > 1.0f) {
+                    CHECK_FALSE(hit);
+                    continue;
+                }
                 REQUIRE(hit);
                 const glm::dvec3 fo = glm::dvec3(o) - glm::dvec3(s.center), dd = glm::dvec3(d);
                 const double b = glm::dot(fo, dd), l2 = glm::dot(fo - b * dd, fo - b * dd);
@@ -396,7 +416,7 @@ TEST_CASE("geometry: sphere intersection from outside, inside, tangent and far a
         const Ray r(Vec3(0, 0, 1), Vec3(0, 0, -1));
         REQUIRE(intersectSphere(r, big, t));
         CHECK_MESSAGE(std::abs(t - 1.0f) < 1e-3f, "expected t = 1, got " << t);
-        const Ray inside(Vec3(0, 0, -1), Vec3(0, 0, 1));   // just inside: t = 1 to the surface above
+        const Ray inside(Vec3(0, 0, -1), Vec3(0, 0, 1));  // just inside: t = 1 to the surface above
         REQUIRE(intersectSphere(inside, big, t));
         CHECK_MESSAGE(std::abs(t - 1.0f) < 1e-3f, "from inside: expected t = 1, got " << t);
     }

@@ -63,7 +63,10 @@ struct SceneBuilder {
         s.lights.push_back(l);
         return int(s.lights.size()) - 1;
     }
-    Scene done() { s.finalize(); return s; }
+    Scene done() {
+        s.finalize();
+        return s;
+    }
 };
 
 // Barycentric coordinates (b0, b1, b2) of p in triangle t, and its distance from t's plane.
@@ -71,7 +74,8 @@ glm::dvec3 barycentrics(const Triangle& t, const Vec3& p, double& planeDist) {
     const glm::dvec3 a(t.p0), e1 = glm::dvec3(t.p1) - a, e2 = glm::dvec3(t.p2) - a, q = glm::dvec3(p) - a;
     const glm::dvec3 n = glm::cross(e1, e2);
     planeDist = std::abs(glm::dot(q, n)) / glm::length(n);
-    const double b1 = glm::dot(glm::cross(q, e2), n) / glm::dot(n, n), b2 = glm::dot(glm::cross(e1, q), n) / glm::dot(n, n);
+    const double b1 = glm::dot(glm::cross(q, e2), n) / glm::dot(n, n),
+                 b2 = glm::dot(glm::cross(e1, q), n) / glm::dot(n, n);
     return {1.0 - b1 - b2, b1, b2};
 }
 
@@ -81,7 +85,8 @@ glm::dvec3 barycentrics(const Triangle& t, const Vec3& p, double& planeDist) {
 // Theta_k (Gamma_k . nx), Theta_k = angle between the unit vectors to the edge's ends,
 // Gamma_k = unit normal of the plane through x and the edge, v_k x v_k+1 normalised
 // (Lambert 1760; Arvo 1995). The sign depends on the polygon's orientation: take |.|.
-double lambertPolygonIrradiance(const std::vector<glm::dvec3>& poly, const glm::dvec3& x, const glm::dvec3& nx, double Le) {
+double lambertPolygonIrradiance(const std::vector<glm::dvec3>& poly, const glm::dvec3& x, const glm::dvec3& nx,
+                                double Le) {
     double sum = 0.0;
     for (size_t k = 0; k < poly.size(); ++k) {
         const glm::dvec3 a = glm::normalize(poly[k] - x), b = glm::normalize(poly[(k + 1) % poly.size()] - x);
@@ -114,18 +119,21 @@ TEST_CASE("light: Lambert's polygon formula (the reference of the NEE test) agre
     // (2000^2 cells, relative 1e-4), the small-light limit Le A cos cos / d^2, and the
     // infinite-plane limit pi Le.
     const glm::dvec3 x(0.0), n(0, 0, 1);
-    struct Rect { glm::dvec3 c, e1, e2; };
+    struct Rect {
+        glm::dvec3 c, e1, e2;
+    };
     const Rect rects[] = {{{-1, -1, 1}, {2, 0, 0}, {0, 2, 0}},       // square on the axis
                           {{0.5, -1, 1}, {2, 0, 0}, {0, 3, 0}},      // off-axis rectangle
                           {{-1, -1, 2}, {2, 0, 0.5}, {0, 2, 0.3}}};  // tilted
     for (const Rect& r : rects) {
         const std::vector<glm::dvec3> poly = {r.c, r.c + r.e1, r.c + r.e1 + r.e2, r.c + r.e2};
-        const double E = lambertPolygonIrradiance(poly, x, n, 1.0), Eq = rectIrradianceByArea(r.c, r.e1, r.e2, x, n, 1.0, 2000);
+        const double E = lambertPolygonIrradiance(poly, x, n, 1.0),
+                     Eq = rectIrradianceByArea(r.c, r.e1, r.e2, x, n, 1.0, 2000);
         CHECK_MESSAGE(std::abs(E - Eq) < 1e-4 * Eq, "polygon formula " << E << " vs quadrature " << Eq);
     }
-    const double tiny = 1e-3;   // square of side 2e-3 at height 1: E = A / 1
-    CHECK(lambertPolygonIrradiance({{-tiny, -tiny, 1}, {tiny, -tiny, 1}, {tiny, tiny, 1}, {-tiny, tiny, 1}}, x, n, 1.0) ==
-          doctest::Approx(4 * tiny * tiny).epsilon(1e-5));
+    const double tiny = 1e-3;  // square of side 2e-3 at height 1: E = A / 1
+    CHECK(lambertPolygonIrradiance({{-tiny, -tiny, 1}, {tiny, -tiny, 1}, {tiny, tiny, 1}, {-tiny, tiny, 1}}, x, n,
+                                   1.0) == doctest::Approx(4 * tiny * tiny).epsilon(1e-5));
     const double big = 1e4;
     CHECK(lambertPolygonIrradiance({{-big, -big, 1}, {big, -big, 1}, {big, big, 1}, {-big, big, 1}}, x, n, 1.0) ==
           doctest::Approx(M_PI).epsilon(1e-3));
@@ -135,8 +143,8 @@ TEST_CASE("light: area light sampling: uniform by area, pdf = 1/area, points on 
     // Two triangles of areas 1 and 3 in different places form one light.
     SceneBuilder b;
     const int l = b.areaLight(Color(2.0f, 3.0f, 4.0f));
-    const Triangle t0{Vec3(0, 0, 2), Vec3(0, 1, 2), Vec3(2, 0, 2)};            // area 1, normal -z
-    const Triangle t1{Vec3(-3, 0, 0), Vec3(-3, 2, 0), Vec3(-3, 0, 3)};          // area 3, normal -x
+    const Triangle t0{Vec3(0, 0, 2), Vec3(0, 1, 2), Vec3(2, 0, 2)};     // area 1, normal -z
+    const Triangle t1{Vec3(-3, 0, 0), Vec3(-3, 2, 0), Vec3(-3, 0, 3)};  // area 3, normal -x
     b.triangle(t0, l);
     b.triangle(t1, l);
     const Scene s = b.done();
@@ -157,7 +165,11 @@ TEST_CASE("light: area light sampling: uniform by area, pdf = 1/area, points on 
         const glm::dvec3 c0 = barycentrics(t0, ls.p, d0), c1 = barycentrics(t1, ls.p, d1);
         const bool in0 = d0 < 1e-6 && glm::all(glm::greaterThanEqual(c0, glm::dvec3(-1e-6)));
         const bool in1 = d1 < 1e-6 && glm::all(glm::greaterThanEqual(c1, glm::dvec3(-1e-6)));
-        if (in0 == in1) { if (++off <= 3) FAIL_CHECK("sample (" << ls.p.x << ", " << ls.p.y << ", " << ls.p.z << ") is on neither triangle"); continue; }
+        if (in0 == in1) {
+            if (++off <= 3)
+                FAIL_CHECK("sample (" << ls.p.x << ", " << ls.p.y << ", " << ls.p.z << ") is on neither triangle");
+            continue;
+        }
         onT0 += in0;
         corner[in0 ? 0 : 1] += (in0 ? c0 : c1).x > 0.5;
         CHECK(ls.pdf == doctest::Approx(0.25f));
@@ -169,14 +181,15 @@ TEST_CASE("light: area light sampling: uniform by area, pdf = 1/area, points on 
     for (int k = 0; k < 2; ++k) {
         const int n = k == 0 ? onT0 : N - onT0;
         const double f = double(corner[k]) / n, se = std::sqrt(0.25 * 0.75 / n);
-        CHECK_MESSAGE(std::abs(f - 0.25) < 5 * se, "triangle " << k << ": fraction with b0 > 1/2 expected 0.25, got " << f);
+        CHECK_MESSAGE(std::abs(f - 0.25) < 5 * se,
+                      "triangle " << k << ": fraction with b0 > 1/2 expected 0.25, got " << f);
     }
 }
 
 TEST_CASE("light: area lights are one-sided, sampleLight fills direction and distance") {
     SceneBuilder b;
     const int l = b.areaLight(Color(5.0f));
-    b.quad(Vec3(-1, -1, 3), Vec3(-1, 1, 3), Vec3(1, 1, 3), Vec3(1, -1, 3), l);   // normal -z: emits downward
+    b.quad(Vec3(-1, -1, 3), Vec3(-1, 1, 3), Vec3(1, 1, 3), Vec3(1, -1, 3), l);  // normal -z: emits downward
     const Scene s = b.done();
     REQUIRE(s.triangles[0].normal().z == doctest::Approx(-1.0f));
     Rng rng(6);
@@ -184,16 +197,16 @@ TEST_CASE("light: area lights are one-sided, sampleLight fills direction and dis
         const Vec2 u = rng.uniform2();
         const Vec3 below(0.3f, -0.2f, 0.0f), above(0.1f, 0.4f, 6.0f);
         const LightSample a = sampleLight(s, l, below, u), c = sampleLight(s, l, above, u);
-        CHECK(a.Le == Color(5.0f));                 // the emitting side
-        CHECK(isBlack(c.Le));                       // from the back: nothing
+        CHECK(a.Le == Color(5.0f));  // the emitting side
+        CHECK(isBlack(c.Le));        // from the back: nothing
         CHECK(glm::length(a.wi - glm::normalize(a.p - below)) < 1e-6f);
         CHECK(a.dist == doctest::Approx(glm::length(a.p - below)));
         CHECK(std::abs(a.p.z - 3.0f) < 1e-6f);
     }
     CHECK(emittedRadiance(s.lights[l], Vec3(0, 0, -1), Vec3(0, 0.1f, -1)) == Color(5.0f));
     CHECK(isBlack(emittedRadiance(s.lights[l], Vec3(0, 0, -1), Vec3(0, 0.1f, 1))));
-    CHECK(isBlack(emittedRadiance(s.lights[l], Vec3(0, 0, -1), Vec3(1, 0, 0))));   // exactly grazing
-    CHECK(lightPower(s, l) == doctest::Approx(kPi * 4.0f * 5.0f));                 // pi A Le, one side
+    CHECK(isBlack(emittedRadiance(s.lights[l], Vec3(0, 0, -1), Vec3(1, 0, 0))));  // exactly grazing
+    CHECK(lightPower(s, l) == doctest::Approx(kPi * 4.0f * 5.0f));                // pi A Le, one side
 }
 
 TEST_CASE("light: sphere light samples lie on the sphere, uniformly, and emit outward") {
@@ -216,18 +229,24 @@ TEST_CASE("light: sphere light samples lie on the sphere, uniformly, and emit ou
         // Emits outward: visible from ref exactly where the normal faces ref.
         const bool faces = glm::dot(ls.n, -ls.wi) > 0.0f;
         const bool leOk = faces ? ls.Le == Color(1.0f) : isBlack(ls.Le);
-        if ((!ok || !leOk) && ++bad <= 3) FAIL_CHECK("sample at distance " << r << " from the centre, Le " << ls.Le.r << ", facing " << faces);
+        if ((!ok || !leOk) && ++bad <= 3)
+            FAIL_CHECK("sample at distance " << r << " from the centre, Le " << ls.Le.r << ", facing " << faces);
         meanN += glm::dvec3(ls.n);
     }
     CHECK(bad == 0);
     // Uniform on the sphere: each component of n has mean 0 and variance 1/3; 5 standard errors.
     meanN /= N;
     const double tol = 5.0 * std::sqrt(1.0 / 3.0 / N);
-    CHECK_MESSAGE(glm::length(meanN) < tol * std::sqrt(3.0), "mean normal of the samples: (" << meanN.x << ", " << meanN.y << ", " << meanN.z << ")");
+    CHECK_MESSAGE(glm::length(meanN) < tol * std::sqrt(3.0),
+                  "mean normal of the samples: (" << meanN.x << ", " << meanN.y << ", " << meanN.z << ")");
 }
 
 namespace {
-struct NeeCase { const char* name; float halfSide, height; Vec3 x; };
+struct NeeCase {
+    const char* name;
+    float halfSide, height;
+    Vec3 x;
+};
 
 // Next-event estimate of the irradiance at x (on a floor, normal +z) from a square light of
 // half-side a at height h facing down: Welford mean and variance over N samples.
@@ -235,8 +254,8 @@ void neeIrradiance(const NeeCase& c, int N, double& mean, double& var) {
     SceneBuilder b;
     const float a = c.halfSide, h = c.height;
     const int l = b.areaLight(Color(1.5f));
-    b.quad(Vec3(-a, -a, h), Vec3(-a, a, h), Vec3(a, a, h), Vec3(a, -a, h), l);             // normal -z
-    const uint32_t floor = b.quad(Vec3(-20, -20, 0), Vec3(20, -20, 0), Vec3(20, 20, 0), Vec3(-20, 20, 0));   // normal +z
+    b.quad(Vec3(-a, -a, h), Vec3(-a, a, h), Vec3(a, a, h), Vec3(a, -a, h), l);                              // normal -z
+    const uint32_t floor = b.quad(Vec3(-20, -20, 0), Vec3(20, -20, 0), Vec3(20, 20, 0), Vec3(-20, 20, 0));  // normal +z
     const Scene s = b.done();
     const SurfacePoint sp = s.surfacePoint(floor, c.x);
     Rng rng(1000 + uint64_t(h * 10));
@@ -267,9 +286,10 @@ TEST_CASE("light: NEE irradiance under a square light equals Lambert's polygon f
     // t = |mean - E| / sqrt(var / N), two-sided, alpha = 1e-3 per case (N large: t ~ normal,
     // critical value 3.29). Power check: the standard error must be <= 1 % of E, or a noisy
     // (or wrongly weighted but high-variance) estimator could pass.
-    const NeeCase cases[] = {{"large square (half-side 5) at height 1, point on the axis", 5.0f, 1.0f, Vec3(0, 0, 0)},
-                             {"square of half-side 1 at height 1, point on the axis", 1.0f, 1.0f, Vec3(0, 0, 0)},
-                             {"square of half-side 1 at height 0.5, point off to the side", 1.0f, 0.5f, Vec3(1.5f, 0.4f, 0)}};
+    const NeeCase cases[] = {
+        {"large square (half-side 5) at height 1, point on the axis", 5.0f, 1.0f, Vec3(0, 0, 0)},
+        {"square of half-side 1 at height 1, point on the axis", 1.0f, 1.0f, Vec3(0, 0, 0)},
+        {"square of half-side 1 at height 0.5, point off to the side", 1.0f, 0.5f, Vec3(1.5f, 0.4f, 0)}};
     const int N = 300000;
     for (const NeeCase& c : cases) {
         const double a = c.halfSide, h = c.height;
@@ -287,10 +307,10 @@ TEST_CASE("light: NEE irradiance under a square light equals Lambert's polygon f
 TEST_CASE("light: selection by power picks lights with powers 1:3 with probabilities 1/4 and 3/4") {
     for (int kind = 0; kind < 2; ++kind) {
         SceneBuilder b;
-        if (kind == 0) {   // point lights of intensity 1 and 3: power 4 pi I
+        if (kind == 0) {  // point lights of intensity 1 and 3: power 4 pi I
             b.pointLight(Vec3(0, 0, 1), Color(1.0f));
             b.pointLight(Vec3(0, 0, 2), Color(3.0f));
-        } else {           // area lights of equal area and radiance 1 and 3: power pi A Le
+        } else {  // area lights of equal area and radiance 1 and 3: power pi A Le
             const int l0 = b.areaLight(Color(1.0f)), l1 = b.areaLight(Color(3.0f));
             b.quad(Vec3(0, 0, 1), Vec3(0, 1, 1), Vec3(1, 1, 1), Vec3(1, 0, 1), l0);
             b.quad(Vec3(5, 0, 1), Vec3(5, 1, 1), Vec3(6, 1, 1), Vec3(6, 0, 1), l1);
@@ -309,7 +329,8 @@ TEST_CASE("light: selection by power picks lights with powers 1:3 with probabili
             CHECK(prob == s.lightSelectionProb(li));
             first += li == 0;
         }
-        CHECK_MESSAGE(std::abs(first - M / 4) <= 1, "light 0 chosen for " << first << " of " << M << " grid points, expected " << M / 4);
+        CHECK_MESSAGE(std::abs(first - M / 4) <= 1,
+                      "light 0 chosen for " << first << " of " << M << " grid points, expected " << M / 4);
     }
     // No lights: selectLight says so.
     SceneBuilder empty;
@@ -384,7 +405,7 @@ TEST_CASE("light: background sampling is uniform over the sphere with pdf 1/(4 p
 TEST_CASE("light: area light emission: cosine directions on the normal side, pdfW = cos/pi, pdfA = 1/area") {
     SceneBuilder b;
     const int l = b.areaLight(Color(2.0f));
-    b.quad(Vec3(0, 0, 1), Vec3(0, 2, 1.5f), Vec3(3, 2, 1.5f), Vec3(3, 0, 1), l);   // tilted, normal down-ish
+    b.quad(Vec3(0, 0, 1), Vec3(0, 2, 1.5f), Vec3(3, 2, 1.5f), Vec3(3, 0, 1), l);  // tilted, normal down-ish
     const Scene s = b.done();
     const Vec3 n = s.triangles[0].normal();
     // Under pdf cos/pi: E[cos] = 2/3 and E[cos^2] = 1/2, so Var[cos] = 1/18. 5 standard errors.
@@ -398,16 +419,18 @@ TEST_CASE("light: area light emission: cosine directions on the normal side, pdf
         double d;
         const bool onLight = glm::all(glm::greaterThanEqual(barycentrics(s.triangles[0], e.p, d), glm::dvec3(-1e-6))) ||
                              glm::all(glm::greaterThanEqual(barycentrics(s.triangles[1], e.p, d), glm::dvec3(-1e-6)));
-        const EmissionPdf q = pdfEmission(s, l, e.n, e.dir);   // the matching pdf function
-        const bool ok = c >= 0.0f && std::abs(e.pdfW - c / kPi) <= 1e-5f && e.pdfA == doctest::Approx(1.0f / s.lights[l].area) &&
-                        std::abs(q.pdfW - e.pdfW) <= 1e-5f && q.pdfA == e.pdfA &&
-                        e.n == n && e.Le == Color(2.0f) && std::abs(glm::dot(e.p - Vec3(0, 0, 1), n)) < 1e-5f && onLight;
+        const EmissionPdf q = pdfEmission(s, l, e.n, e.dir);  // the matching pdf function
+        const bool ok = c >= 0.0f && std::abs(e.pdfW - c / kPi) <= 1e-5f &&
+                        e.pdfA == doctest::Approx(1.0f / s.lights[l].area) && std::abs(q.pdfW - e.pdfW) <= 1e-5f &&
+                        q.pdfA == e.pdfA && e.n == n && e.Le == Color(2.0f) &&
+                        std::abs(glm::dot(e.p - Vec3(0, 0, 1), n)) < 1e-5f && onLight;
         if (!ok && ++bad <= 3)
-            FAIL_CHECK("emission sample: cos " << c << ", pdfW " << e.pdfW << " (expected " << c / kPi << "), pdfA " << e.pdfA
-                                              << " (expected " << 1.0f / s.lights[l].area << ")");
+            FAIL_CHECK("emission sample: cos " << c << ", pdfW " << e.pdfW << " (expected " << c / kPi << "), pdfA "
+                                               << e.pdfA << " (expected " << 1.0f / s.lights[l].area << ")");
         sumCos += c;
     }
     CHECK(bad == 0);
     const double meanCos = sumCos / N, tol = 5.0 * std::sqrt(1.0 / 18.0 / N);
-    CHECK_MESSAGE(std::abs(meanCos - 2.0 / 3.0) < tol, "mean cos of emitted directions: expected 2/3 +- " << tol << ", got " << meanCos);
+    CHECK_MESSAGE(std::abs(meanCos - 2.0 / 3.0) < tol,
+                  "mean cos of emitted directions: expected 2/3 +- " << tol << ", got " << meanCos);
 }

@@ -21,7 +21,8 @@ TEST_CASE("metrics: MSE and relMSE of a small image, by hand") {
     CHECK_MESSAGE(e.mse == doctest::Approx(mse).epsilon(1e-12), "MSE: expected " << mse << ", got " << e.mse);
     CHECK_MESSAGE(e.relMse == doctest::Approx(rel).epsilon(1e-7), "relMSE: expected " << rel << ", got " << e.relMse);
     // 6 terms: floor(0.006) = 0 dropped, so the trimmed value is the plain one.
-    CHECK_MESSAGE(e.relMseTrimmed == doctest::Approx(rel).epsilon(1e-7), "trimmed relMSE: expected " << rel << ", got " << e.relMseTrimmed);
+    CHECK_MESSAGE(e.relMseTrimmed == doctest::Approx(rel).epsilon(1e-7),
+                  "trimmed relMSE: expected " << rel << ", got " << e.relMseTrimmed);
     CHECK(kRelMseEpsilon == 0.01);
     // Against itself: all 0. Symmetric in MSE, not in relMSE.
     const ErrorMetrics self = computeError(ref, ref);
@@ -40,7 +41,7 @@ TEST_CASE("metrics: trimmed relMSE drops exactly the largest 0.1 % of the terms"
     const double base = 0.1 * std::sqrt(1.01);
     for (Color& c : img.pixels) c = Color(float(1.0 + base));
     const double big[] = {100, 200, 300, 400};
-    const int where[][2] = {{3, 0}, {17, 1}, {640, 2}, {999, 0}};   // pixel, channel
+    const int where[][2] = {{3, 0}, {17, 1}, {640, 2}, {999, 0}};  // pixel, channel
     for (int k = 0; k < 4; ++k) img.pixels[where[k][0]][where[k][1]] = float(1.0 + std::sqrt(big[k] * 1.01));
     // The exact terms as float stores them.
     double small = 0.0, sumBig = 0.0;
@@ -52,11 +53,12 @@ TEST_CASE("metrics: trimmed relMSE drops exactly the largest 0.1 % of the terms"
     const double t100 = std::pow(double(img.pixels[3][0]) - 1.0, 2) / 1.01;
     const ErrorMetrics e = computeError(img, ref);
     const double plain = (small + sumBig) / 3000.0, trimmed = (small + t100) / 2997.0;
-    CHECK_MESSAGE(e.relMse == doctest::Approx(plain).epsilon(1e-9), "relMSE: expected " << plain << ", got " << e.relMse);
+    CHECK_MESSAGE(e.relMse == doctest::Approx(plain).epsilon(1e-9),
+                  "relMSE: expected " << plain << ", got " << e.relMse);
     CHECK_MESSAGE(e.relMseTrimmed == doctest::Approx(trimmed).epsilon(1e-9),
-                  "trimmed relMSE (3 of 3000 terms dropped): expected " << trimmed << ", got " << e.relMseTrimmed
-                                                                       << " (dropping 2 would give " << (small + t100 + 200) / 2998.0
-                                                                       << ", 4 would give " << small / 2996.0 << ")");
+                  "trimmed relMSE (3 of 3000 terms dropped): expected "
+                      << trimmed << ", got " << e.relMseTrimmed << " (dropping 2 would give "
+                      << (small + t100 + 200) / 2998.0 << ", 4 would give " << small / 2996.0 << ")");
     // 2997 terms (999 pixels): floor(2.997) = 2 dropped.
     Image ref2(999, 1, Color(1.0f)), img2(999, 1, Color(float(1.0 + base)));
     for (int k = 0; k < 4; ++k) img2.pixels[where[k][0] % 999][where[k][1]] = float(1.0 + std::sqrt(big[k] * 1.01));
@@ -66,7 +68,7 @@ TEST_CASE("metrics: trimmed relMSE drops exactly the largest 0.1 % of the terms"
         for (int ch = 0; ch < 3; ++ch) {
             const double t = std::pow(double(c[ch]) - 1.0, 2) / 1.01;
             all2 += t;
-            if (t > 250) top2 += t;   // the 300 and 400 terms
+            if (t > 250) top2 += t;  // the 300 and 400 terms
         }
     CHECK_MESSAGE(e2.relMseTrimmed == doctest::Approx((all2 - top2) / 2995.0).epsilon(1e-9),
                   "2997 terms: expected 2 dropped, got trimmed relMSE " << e2.relMseTrimmed);
@@ -75,7 +77,9 @@ TEST_CASE("metrics: trimmed relMSE drops exactly the largest 0.1 % of the terms"
 TEST_CASE("metrics: images of different sizes throw InputError naming both sizes") {
     const Image a(4, 3), b(3, 4), c(4, 4);
     std::string msg;
-    try { computeError(a, b); } catch (const InputError& e) { msg = e.what(); }
+    try {
+        computeError(a, b);
+    } catch (const InputError& e) { msg = e.what(); }
     CHECK_MESSAGE(msg.find("3x4") != std::string::npos, "message: '" << msg << "'");
     CHECK_MESSAGE(msg.find("4x3") != std::string::npos, "message: '" << msg << "'");
     CHECK_THROWS_AS(computeError(a, c), InputError);

@@ -9,10 +9,10 @@
 using namespace ps;
 
 TEST_CASE("numbers: the strtod road agrees with std::from_chars, float and double") {
-    const char* tokens[] = {"0", "1", "-1", "1.5", "-0.25", ".5", "5.", "1e3", "1E-3", "-2.5e+2", "3.4e38",
-                            "1e39", "-1e39", "1e309", "inf", "-inf", "nan", "infinity",
-                            "", "-", "+1", " 1", "1 ", "1.5cm", "1.2.3", "0x10", "-0x1p3", "e5", "1e", "--1",
-                            "many", "1,5"};
+    const char* tokens[] = {"0",     "1",        "-1",     "1.5",  "-0.25", ".5",    "5.",   "1e3",
+                            "1E-3",  "-2.5e+2",  "3.4e38", "1e39", "-1e39", "1e309", "inf",  "-inf",
+                            "nan",   "infinity", "",       "-",    "+1",    " 1",    "1 ",   "1.5cm",
+                            "1.2.3", "0x10",     "-0x1p3", "e5",   "1e",    "--1",   "many", "1,5"};
     for (const char* t : tokens) {
         const std::string s = t;
         float f1 = 7.0f, f2 = 7.0f;
@@ -23,7 +23,7 @@ TEST_CASE("numbers: the strtod road agrees with std::from_chars, float and doubl
         }();
         const std::errc got = parseFloatWithStrtod(s, f2);
         CHECK_MESSAGE(int(got) == int(want), "float '" << s << "': from_chars says " << int(want) << ", strtod road "
-                                                        << int(got) << " (0 = ok)");
+                                                       << int(got) << " (0 = ok)");
         if (want == std::errc() && got == std::errc() && !std::isnan(f1))
             CHECK_MESSAGE(f1 == f2, "float '" << s << "': " << f1 << " vs " << f2);
         const std::errc wantD = [&] {

@@ -44,7 +44,8 @@ RenderOptions options(int spp, int threads, double seconds = 0.0) {
 class RecordingIntegrator : public EyeLight {
 public:
     explicit RecordingIntegrator(int sleepMs = 0) : sleepMs_(sleepMs) {}
-    void renderIteration(const Scene& scene, uint32_t iteration, uint64_t seed, Image& out, SampleStats& stats) override {
+    void renderIteration(const Scene& scene, uint32_t iteration, uint64_t seed, Image& out,
+                         SampleStats& stats) override {
         iterations.push_back(iteration);
         if (sleepMs_ > 0) std::this_thread::sleep_for(std::chrono::milliseconds(sleepMs_));
         EyeLight::renderIteration(scene, iteration, seed, out, stats);
@@ -98,9 +99,10 @@ TEST_CASE("render: eyelight images are bit-identical for 1 and 2 threads") {
     for (const Color& c : m1.pixels) sum += c.r + c.g + c.b;
     REQUIRE_MESSAGE(sum > 0.0, "the image is black: the comparison would be meaningless");
     CHECK_MESSAGE(sameBits(m1, m2), "film mean differs between 1 and 2 threads");
-    CHECK_MESSAGE(sameBits(r1.film.varianceOfMean(), r2.film.varianceOfMean()), "variance differs between 1 and 2 threads");
+    CHECK_MESSAGE(sameBits(r1.film.varianceOfMean(), r2.film.varianceOfMean()),
+                  "variance differs between 1 and 2 threads");
     CHECK(r1.stats.rays == r2.stats.rays);
-    CHECK(r1.stats.rays == 4u * 40u * 40u);   // eyelight: one ray per pixel per iteration
+    CHECK(r1.stats.rays == 4u * 40u * 40u);  // eyelight: one ray per pixel per iteration
     // A different seed gives a different image (the jitter changes), so the seed is used.
     EyeLight c;
     RenderOptions o = options(4, 2);
@@ -117,7 +119,8 @@ TEST_CASE("render: a sample count stops after exactly that many iterations") {
         for (int i = 0; i < spp; ++i) expect[i] = uint32_t(i);
         CHECK_MESSAGE(r.iterations == spp, "expected " << spp << " iterations, got " << r.iterations);
         CHECK(r.film.iterations() == spp);
-        CHECK_MESSAGE(integ.iterations == expect, "iterations rendered: expected 0.." << spp - 1 << ", got " << integ.iterations.size() << " of them");
+        CHECK_MESSAGE(integ.iterations == expect, "iterations rendered: expected 0.."
+                                                      << spp - 1 << ", got " << integ.iterations.size() << " of them");
     }
     // Neither a sample count nor a time budget: nothing is rendered.
     RecordingIntegrator none;
@@ -138,7 +141,8 @@ TEST_CASE("render: a time budget stops the loop") {
     const auto t0 = std::chrono::steady_clock::now();
     const RenderResult r = render(scene, slow, options(0, 2, 0.1));
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    CHECK_MESSAGE((r.iterations >= 1 && r.iterations <= 5), "expected 1 to 5 iterations of 20 ms in 0.1 s, got " << r.iterations);
+    CHECK_MESSAGE((r.iterations >= 1 && r.iterations <= 5),
+                  "expected 1 to 5 iterations of 20 ms in 0.1 s, got " << r.iterations);
     CHECK(r.film.iterations() == r.iterations);
     CHECK_MESSAGE(r.seconds >= 0.1, "expected the reported time to reach the budget 0.1 s, got " << r.seconds);
     CHECK_MESSAGE(wall < 2.0, "the render took " << wall << " s for a budget of 0.1 s");
@@ -152,8 +156,10 @@ TEST_CASE("render: NaN and Inf samples are counted exactly and kept out of the i
         INFO(threads << " thread(s)");
         REQUIRE(integ.nanReturned > 0);
         REQUIRE(integ.infReturned > 0);
-        CHECK_MESSAGE(r.stats.nan == integ.nanReturned, "expected " << integ.nanReturned << " NaN samples counted, got " << r.stats.nan);
-        CHECK_MESSAGE(r.stats.inf == integ.infReturned, "expected " << integ.infReturned << " Inf samples counted, got " << r.stats.inf);
+        CHECK_MESSAGE(r.stats.nan == integ.nanReturned,
+                      "expected " << integ.nanReturned << " NaN samples counted, got " << r.stats.nan);
+        CHECK_MESSAGE(r.stats.inf == integ.infReturned,
+                      "expected " << integ.infReturned << " Inf samples counted, got " << r.stats.inf);
         const Image m = r.film.mean(), v = r.film.varianceOfMean();
         int nonFinite = 0;
         double sum = 0.0;

@@ -55,9 +55,13 @@ TEST_CASE("rng: different tasks, iterations and seeds give different sequences")
     // Neighbouring tasks, iterations and seeds, and the swapped pairs (iteration, task) =
     // (1, 0) / (0, 1), must not share values: 256 positions, expected agreements 256 * 2^-32.
     const auto base = firstValues(taskRng(42, 3, 5), 256);
-    struct Variant { uint64_t seed; uint32_t it, task; };
-    const Variant variants[] = {{42, 3, 6}, {42, 3, 4}, {42, 4, 5}, {42, 2, 5}, {43, 3, 5},
-                                {41, 3, 5}, {42, 5, 3}, {0, 3, 5},  {42, 3, 5 + (1u << 16)}};
+    struct Variant {
+        uint64_t seed;
+        uint32_t it, task;
+    };
+    const Variant variants[] = {{42, 3, 6}, {42, 3, 4}, {42, 4, 5},
+                                {42, 2, 5}, {43, 3, 5}, {41, 3, 5},
+                                {42, 5, 3}, {0, 3, 5},  {42, 3, 5 + (1u << 16)}};
     for (const Variant& v : variants) {
         const int same = agreements(base, firstValues(taskRng(v.seed, v.it, v.task), 256));
         CHECK_MESSAGE(same == 0, "seed " << v.seed << " iteration " << v.it << " task " << v.task
@@ -99,7 +103,10 @@ TEST_CASE("rng: 0 <= uniform() < 1, never 1 even for the largest 32-bit draw") {
     Rng d(7, 7);
     for (int i = 0; i < 1000000; ++i) {
         const double x = d.uniformDouble();
-        if (!(x >= 0.0 && x < 1.0)) { FAIL_CHECK("uniformDouble() = " << x << " outside [0, 1)"); break; }
+        if (!(x >= 0.0 && x < 1.0)) {
+            FAIL_CHECK("uniformDouble() = " << x << " outside [0, 1)");
+            break;
+        }
     }
 }
 

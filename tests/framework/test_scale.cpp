@@ -38,7 +38,7 @@ public:
         Ray r = ray;
         SurfacePoint sp;
         if (!scene.intersect(r, sp) || sp.light >= 0) return Color(0.0f);
-        const float side = glm::dot(sp.n, -ray.d) >= 0.0f ? 1.0f : -1.0f;   // the side the eye sees
+        const float side = glm::dot(sp.n, -ray.d) >= 0.0f ? 1.0f : -1.0f;  // the side the eye sees
         Color c(0.0f);
 
         // R: a shadow ray to a uniformly chosen point of the first area light.
@@ -61,7 +61,8 @@ public:
         const float v1 = rng.uniform(), v2 = rng.uniform();
         const float rad = std::sqrt(v1), phi = 2.0f * kPi * v2;
         const Vec3 n = side * sp.n;
-        const Vec3 d = glm::normalize(Frame(n).toWorld(Vec3(rad * std::cos(phi), rad * std::sin(phi), std::sqrt(1.0f - v1))));
+        const Vec3 d =
+            glm::normalize(Frame(n).toWorld(Vec3(rad * std::cos(phi), rad * std::sin(phi), std::sqrt(1.0f - v1))));
         Ray bounce = scene.spawnRay(sp, d);
         SurfacePoint hit;
         if (scene.intersect(bounce, hit)) {
@@ -98,10 +99,15 @@ Comparison compare(const Image& img, const Image& ref, float absTol, float relTo
             for (int ch = 0; ch < 3; ++ch) {
                 const float diff = std::abs(a[ch] - b[ch]);
                 ok = ok && diff <= absTol + relTol * std::abs(b[ch]);
-                if (diff > c.maxDiff) { c.maxDiff = diff; c.maxDiffX = x; c.maxDiffY = y; }
+                if (diff > c.maxDiff) {
+                    c.maxDiff = diff;
+                    c.maxDiffX = x;
+                    c.maxDiffY = y;
+                }
             }
             // SCALE_DEBUG=1 in the environment lists the pixels outside the tolerance.
-            if (!ok && std::getenv("SCALE_DEBUG")) std::printf("pixel %d %d: img %g %g %g ref %g %g %g\n", x, y, a.r, a.g, a.b, b.r, b.g, b.b);
+            if (!ok && std::getenv("SCALE_DEBUG"))
+                std::printf("pixel %d %d: img %g %g %g ref %g %g %g\n", x, y, a.r, a.g, a.b, b.r, b.g, b.b);
             const float sa = a.r + a.g + a.b, sb = b.r + b.g + b.b;
             if (sb > 0.3f && sa < 0.01f * sb) ++c.blackWhereBright;
             ++c.pixels;
@@ -131,9 +137,10 @@ const Case kCases[] = {
 
 void checkCase(const Case& cs, const Image& img, const Image& ref, float minFraction) {
     const Comparison c = compare(img, ref, cs.absTol, cs.relTol);
-    INFO(std::string(cs.name) << ": " << c.within << " of " << c.pixels << " pixels within " << cs.absTol << " + " << cs.relTol
-                 << " |ref|; largest difference " << c.maxDiff << " at pixel (" << c.maxDiffX << ", " << c.maxDiffY
-                 << "); " << c.blackWhereBright << " pixels black where the reference is bright");
+    INFO(std::string(cs.name) << ": " << c.within << " of " << c.pixels << " pixels within " << cs.absTol << " + "
+                              << cs.relTol << " |ref|; largest difference " << c.maxDiff << " at pixel (" << c.maxDiffX
+                              << ", " << c.maxDiffY << "); " << c.blackWhereBright
+                              << " pixels black where the reference is bright");
     CHECK(c.within >= minFraction * c.pixels);
     CHECK(c.blackWhereBright == 0);
 }
@@ -169,8 +176,8 @@ TEST_CASE("scale: shadow and bounce rays (no acne, no leaks) at scales 1e-4, 1e4
     // The probe itself must see something: lit and shadowed pixels, bounce hits everywhere.
     int lit = 0, shadowed = 0;
     for (const Color& c : ref.pixels) {
-        lit += c.r > 0.99f;        // all 4 shadow rays reached the light
-        shadowed += c.r < 0.01f;   // none did (or the pixel shows the light itself)
+        lit += c.r > 0.99f;       // all 4 shadow rays reached the light
+        shadowed += c.r < 0.01f;  // none did (or the pixel shows the light itself)
     }
     CHECK(lit > kRes * kRes / 4);
     CHECK(shadowed > kRes * kRes / 50);

@@ -24,9 +24,7 @@ const std::string kHead =
 std::string errorOf(const std::string& text, const std::string& path = "test.scene") {
     try {
         parseScene(text, path);
-    } catch (const InputError& e) {
-        return e.what();
-    } catch (const std::exception& e) {
+    } catch (const InputError& e) { return e.what(); } catch (const std::exception& e) {
         FAIL("expected ps::InputError, got another exception: " << e.what());
     }
     FAIL("expected ps::InputError, but the scene loaded:\n" << text);
@@ -75,7 +73,8 @@ TEST_CASE("scene errors: the test scenes are fine without the bad line (control)
     CHECK_NOTHROW(parseScene(kHead + "sphere center 0 0 0 radius 1 material w\n", "test.scene"));
     CHECK_NOTHROW(parseScene(kHead + "quad 0 0 0  1 0 0  1 1 0  0 1 0 emission 1 1 1\n", "test.scene"));
     writeFile("good.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 4 3\nf -4 -3 -2\n");
-    CHECK_NOTHROW(parseScene(kHead + "mesh good.obj material w scale 2 translate 1 2 3\n", scratchDir() + "/test.scene"));
+    CHECK_NOTHROW(
+        parseScene(kHead + "mesh good.obj material w scale 2 translate 1 2 3\n", scratchDir() + "/test.scene"));
 }
 
 TEST_CASE("scene errors: unknown keyword") {
@@ -93,9 +92,7 @@ TEST_CASE("scene errors: missing scene file") {
     try {
         loadScene(path);
         FAIL("loadScene of a missing file must throw");
-    } catch (const InputError& e) {
-        checkMessage(e.what(), {"no-such-file.scene: ", "cannot open scene file"});
-    }
+    } catch (const InputError& e) { checkMessage(e.what(), {"no-such-file.scene: ", "cannot open scene file"}); }
 }
 
 TEST_CASE("scene errors: missing mesh file") {
@@ -108,8 +105,10 @@ TEST_CASE("scene errors: malformed number") {
         CAPTURE(bad);
         expectLine3(std::string("sphere center 0 0 0 radius ") + bad + " material w",
                     {"malformed number", bad, "'radius'"});
-        expectLine3(std::string("sphere center 0 ") + bad + " 0 radius 1 material w", {"malformed number", bad, "'center'"});
-        expectLine3(std::string("triangle 0 0 0  1 0 0  0 ") + bad + " 0 material w", {"malformed number", bad, "corner 3"});
+        expectLine3(std::string("sphere center 0 ") + bad + " 0 radius 1 material w",
+                    {"malformed number", bad, "'center'"});
+        expectLine3(std::string("triangle 0 0 0  1 0 0  0 ") + bad + " 0 material w",
+                    {"malformed number", bad, "corner 3"});
     }
     expectLine3("sphere center 0 0 0 radius 1e39 material w", {"1e39", "out of range"});
     expectLine3("render spp 1.5", {"malformed integer '1.5'", "'spp'"});
@@ -148,7 +147,8 @@ TEST_CASE("scene errors: degenerate triangle") {
     }
     SUBCASE("a quad whose corners are not in order (a bow tie), or concave at corner 2 or 4") {
         expectLine3("quad 0 0 0  1 0 0  0 1 0  1 1 0 emission 1 1 1", {"face opposite ways", "not in order"});
-        expectLine3("quad 1 0 0  0.2 0.2 0  0 1 0  0 0 0 material w", {"face opposite ways", "concave at corner 2 or 4"});
+        expectLine3("quad 1 0 0  0.2 0.2 0  0 1 0  0 0 0 material w",
+                    {"face opposite ways", "concave at corner 2 or 4"});
         // Concave at corner 1 or 3 is fine: the split diagonal 1-3 lies inside.
         CHECK_NOTHROW(parseScene(kHead + "quad 0 0 0  1 0 0  0.2 0.2 0  0 1 0 material w\n", "test.scene"));
         CHECK_NOTHROW(parseScene(kHead + "quad 0.2 0.2 0  0 1 0  0 0 0  1 0 0 material w\n", "test.scene"));
@@ -175,14 +175,16 @@ TEST_CASE("scene errors: OBJ vertex index out of range") {
     checkMessage(meshError("relative", obj + "f -1 -2 -5\n"),
                  {"relative.obj:5: ", "relative vertex index", "before the first vertex", "test.scene:3"});
     checkMessage(meshError("zero", obj + "f 1 2 0\n"), {"zero.obj:5: ", "malformed vertex index '0'", "test.scene:3"});
-    checkMessage(meshError("letter", obj + "f 1 2 a\n"), {"letter.obj:5: ", "malformed vertex index 'a'", "test.scene:3"});
+    checkMessage(meshError("letter", obj + "f 1 2 a\n"),
+                 {"letter.obj:5: ", "malformed vertex index 'a'", "test.scene:3"});
 }
 
 TEST_CASE("scene errors: unknown material") {
     expectLine3("sphere center 0 0 0 radius 1 material wall", {"unknown material 'wall'", "defined so far: w"});
     // Materials must be defined before they are used.
-    const std::string msg = errorOf(kHead + "sphere center 0 0 0 radius 1 material late\n"
-                                            "material late diffuse albedo 0.5 0.5 0.5\n");
+    const std::string msg = errorOf(kHead +
+                                    "sphere center 0 0 0 radius 1 material late\n"
+                                    "material late diffuse albedo 0.5 0.5 0.5\n");
     checkMessage(msg, {"test.scene:3: ", "unknown material 'late'"});
     // A mesh without 'material' needs an MTL.
     checkMessage(meshError("nomtl", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", ""),
@@ -191,7 +193,8 @@ TEST_CASE("scene errors: unknown material") {
 }
 
 TEST_CASE("scene errors: duplicate material") {
-    expectLine3("material w phong albedo 0.5 0.5 0.5 exponent 10", {"material 'w' is defined twice", "first on line 2"});
+    expectLine3("material w phong albedo 0.5 0.5 0.5 exponent 10",
+                {"material 'w' is defined twice", "first on line 2"});
     // The loader's own name for black emitters cannot be taken (it would give emitters an albedo).
     expectLine3("material (emitter) diffuse albedo 1 1 1", {"'(emitter)'", "the loader's own"});
 }
@@ -302,8 +305,8 @@ TEST_CASE("scene errors: huge and far-away scenes are not called degenerate") {
     for (const char* size : {"1e15", "1e18", "1e30"}) {
         CAPTURE(size);
         const std::string s = size;
-        CHECK_NOTHROW(parseScene(kHead + "quad -" + s + " 0 -" + s + "  " + s + " 0 -" + s + "  " + s + " 0 " + s + "  -" +
-                                     s + " 0 " + s + " material w\n",
+        CHECK_NOTHROW(parseScene(kHead + "quad -" + s + " 0 -" + s + "  " + s + " 0 -" + s + "  " + s + " 0 " + s +
+                                     "  -" + s + " 0 " + s + " material w\n",
                                  "huge.scene"));
     }
 }
@@ -320,7 +323,10 @@ TEST_CASE("scene errors: OBJ faces with more than 255 corners, MTL values, files
     checkMessage(meshError("polygon300", obj + "\n"), {"polygon300.obj:301: ", "300 corners", "at most 255"});
 
     const std::string tri = "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl a\nf 1 2 3\n";
-    struct Bad { const char* mtl; const char* words; };
+    struct Bad {
+        const char* mtl;
+        const char* words;
+    };
     for (const Bad& b : {Bad{"newmtl a\nKd nan 0 0\n", "'nan'"}, Bad{"newmtl a\nKd abc 0.5 0.5\n", "'abc'"},
                          Bad{"newmtl a\nKd 0.5 0.5\n", "three numbers"}, Bad{"newmtl a\nKd 1.5 0 0\n", "at most 1"},
                          Bad{"newmtl a\nKe 1e39 1 1\n", "'1e39'"}, Bad{"newmtl a\nKe 1e31 1 1\n", "above 1e30"},

@@ -74,17 +74,17 @@ TEST_CASE("stats: sidak") {
 }
 
 TEST_CASE("stats: chi-square survival matches known values") {
-    struct Case { int dof; double x, q; };
+    struct Case {
+        int dof;
+        double x, q;
+    };
     const Case cases[] = {
-        {1, 3.841459, 0.049999994653195766},  {1, 0.1, 0.75182963404584928},
-        {1, 10, 0.0015654022580025497},       {1, 30, 4.3204630578274973e-8},
-        {2, 1, 0.60653065971263342},          {2, 5.991465, 0.049999988677700836},
-        {2, 20, 4.5399929762484852e-5},       {10, 18.307, 0.05000058909139812},
-        {10, 2, 0.99634015317265629},         {10, 10, 0.44049328506521241},
-        {10, 40, 1.6944743930067384e-5},      {100, 124.342, 0.050000715769971768},
-        {100, 80, 0.92966493334060505},       {100, 100, 0.48119168452795672},
-        {100, 200, 1.1784500720979422e-8},    {1000, 1000, 0.49405285382923964},
-        {1000, 1100, 0.014614408126295194},   {5000, 5300, 0.0015958249441347306},
+        {1, 3.841459, 0.049999994653195766}, {1, 0.1, 0.75182963404584928},      {1, 10, 0.0015654022580025497},
+        {1, 30, 4.3204630578274973e-8},      {2, 1, 0.60653065971263342},        {2, 5.991465, 0.049999988677700836},
+        {2, 20, 4.5399929762484852e-5},      {10, 18.307, 0.05000058909139812},  {10, 2, 0.99634015317265629},
+        {10, 10, 0.44049328506521241},       {10, 40, 1.6944743930067384e-5},    {100, 124.342, 0.050000715769971768},
+        {100, 80, 0.92966493334060505},      {100, 100, 0.48119168452795672},    {100, 200, 1.1784500720979422e-8},
+        {1000, 1000, 0.49405285382923964},   {1000, 1100, 0.014614408126295194}, {5000, 5300, 0.0015958249441347306},
     };
     for (const Case& c : cases) {
         INFO("dof " << c.dof << ", x " << c.x);
@@ -94,14 +94,16 @@ TEST_CASE("stats: chi-square survival matches known values") {
 }
 
 TEST_CASE("stats: Student t and normal two-sided p-values match known values") {
-    struct Case { double dof, t, p; };
+    struct Case {
+        double dof, t, p;
+    };
     const Case cases[] = {
-        {1, 12.706, 0.050000802358133188},  {1, 1, 0.5},
-        {1, 0.1, 0.93654896513889286},      {10, 2.228, 0.050011771817111365},
-        {10, 0.5, 0.62789360574297294},     {10, 6, 0.0001321088603547856},
+        {1, 12.706, 0.050000802358133188},   {1, 1, 0.5},
+        {1, 0.1, 0.93654896513889286},       {10, 2.228, 0.050011771817111365},
+        {10, 0.5, 0.62789360574297294},      {10, 6, 0.0001321088603547856},
         {1000, 1.962, 0.050039524372457284}, {1000, 0.2, 0.841521244323976},
-        {1000, 5, 6.7672563646486304e-7},   {1e6, 3, 0.0026998625414217971},
-        {1e6, 1e-3, 0.99920211577164909},   {2.5, 2, 0.15739149575796599},
+        {1000, 5, 6.7672563646486304e-7},    {1e6, 3, 0.0026998625414217971},
+        {1e6, 1e-3, 0.99920211577164909},    {2.5, 2, 0.15739149575796599},
     };
     for (const Case& c : cases) {
         INFO("dof " << c.dof << ", t " << c.t);
@@ -140,7 +142,8 @@ TEST_CASE("stats: chiSquare pools low cells and applies the zero-expected rule")
 
 TEST_CASE("stats: integrateSphere and integratePlanar are accurate, also for peaked pdfs") {
     // Tolerances: about 10x the errors measured when the cubature was tuned (statistics.cpp).
-    CHECK(stats::integrateSphere([](const Vec3&) { return 1.0 / (4.0 * kPiD); }) == doctest::Approx(1.0).epsilon(1e-12));
+    CHECK(stats::integrateSphere([](const Vec3&) { return 1.0 / (4.0 * kPiD); }) ==
+          doctest::Approx(1.0).epsilon(1e-12));
     CHECK(stats::integrateSphere(cosinePdf) == doctest::Approx(1.0).epsilon(1e-8));
     for (double n : {20.0, 1e4, 1e5}) {
         Phong lobe{n, kTilted};
@@ -158,8 +161,8 @@ TEST_CASE("stats: integrateSphere and integratePlanar are accurate, also for pea
 
 TEST_CASE("stats: chiSquareSphere accepts correct samplers") {
     SUBCASE("uniform sphere against 1 / (4 pi)") {
-        auto r = stats::chiSquareSphere(uniformSphere, [](const Vec3&) { return 1.0 / (4.0 * kPiD); }, 21, 42,
-                                        500000, 1, kAlpha);
+        auto r = stats::chiSquareSphere(
+            uniformSphere, [](const Vec3&) { return 1.0 / (4.0 * kPiD); }, 21, 42, 500000, 1, kAlpha);
         INFO(r.report);
         CHECK(r.passed);
     }
@@ -171,17 +174,20 @@ TEST_CASE("stats: chiSquareSphere accepts correct samplers") {
     SUBCASE("Phong lobes about a tilted axis, exponents 20 and 1e4") {
         for (double n : {20.0, 1e4}) {
             Phong lobe{n, kTilted};
-            auto r = stats::chiSquareSphere(lobe, [&](const Vec3& w) { return lobe.pdf(w); }, 51, 102, 500000, 3,
-                                            kAlpha);
+            auto r = stats::chiSquareSphere(
+                lobe, [&](const Vec3& w) { return lobe.pdf(w); }, 51, 102, 500000, 3, kAlpha);
             INFO(r.report);
             CHECK(r.passed);
         }
     }
     SUBCASE("a sampler with invalid samples, its pdf integrating to 1/2") {
         // Uniform sphere, lower half returned as the zero vector: pdf 1/(4 pi) on z > 0 only.
-        auto upper = [](const Vec2& u) { Vec3 w = uniformSphere(u); return w.z > 0.0f ? w : Vec3(0.0f); };
-        auto r = stats::chiSquareSphere(upper, [](const Vec3& w) { return w.z > 0.0f ? 1.0 / (4.0 * kPiD) : 0.0; },
-                                        21, 42, 500000, 4, kAlpha);
+        auto upper = [](const Vec2& u) {
+            Vec3 w = uniformSphere(u);
+            return w.z > 0.0f ? w : Vec3(0.0f);
+        };
+        auto r = stats::chiSquareSphere(
+            upper, [](const Vec3& w) { return w.z > 0.0f ? 1.0 / (4.0 * kPiD) : 0.0; }, 21, 42, 500000, 4, kAlpha);
         INFO(r.report);
         CHECK(r.passed);
     }
@@ -197,8 +203,8 @@ TEST_CASE("stats: chiSquareSphere rejects wrong samplers") {
         Phong sampled{20.0, kTilted}, claimed{22.0, kTilted};
         std::string path = dumpPath("stats_phong_dump.txt");
         std::remove(path.c_str());
-        auto r = stats::chiSquareSphere(sampled, [&](const Vec3& w) { return claimed.pdf(w); }, 21, 42, 500000, 6,
-                                        kAlpha, path);
+        auto r = stats::chiSquareSphere(
+            sampled, [&](const Vec3& w) { return claimed.pdf(w); }, 21, 42, 500000, 6, kAlpha, path);
         INFO(r.report);
         CHECK_FALSE(r.passed);
         // The dump holds the observed then the expected table: 2 x 21 rows of 42 numbers.
@@ -211,7 +217,8 @@ TEST_CASE("stats: chiSquareSphere rejects wrong samplers") {
     }
     SUBCASE("NaN samples are never accepted") {
         auto nan = [](const Vec2& u) { return u.x < 0.001f ? Vec3(std::nanf("")) : uniformSphere(u); };
-        auto r = stats::chiSquareSphere(nan, [](const Vec3&) { return 1.0 / (4.0 * kPiD); }, 21, 42, 100000, 7, kAlpha);
+        auto r = stats::chiSquareSphere(
+            nan, [](const Vec3&) { return 1.0 / (4.0 * kPiD); }, 21, 42, 100000, 7, kAlpha);
         INFO(r.report);
         CHECK_FALSE(r.passed);
     }

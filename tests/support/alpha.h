@@ -9,8 +9,8 @@
 
 namespace ps::testalpha {
 
-constexpr double kSuite = 0.01;   // false failure of the whole graded suite
-constexpr int kLessons = 8;       // lessons 0-7 (a lesson without statistical tests wastes its share)
+constexpr double kSuite = 0.01;  // false failure of the whole graded suite
+constexpr int kLessons = 8;      // lessons 0-7 (a lesson without statistical tests wastes its share)
 
 // The family-wise level of one lesson's statistical tests.
 inline double lessonFamily() { return ps::stats::sidak(kSuite, kLessons); }

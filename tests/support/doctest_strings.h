@@ -6,10 +6,12 @@
 #include <doctest/doctest.h>
 
 namespace doctest {
-template <> struct StringMaker<const char*> {
+template <>
+struct StringMaker<const char*> {
     static String convert(const char* s) { return s ? String(s) : String("(null)"); }
 };
-template <> struct StringMaker<char*> {
+template <>
+struct StringMaker<char*> {
     static String convert(const char* s) { return s ? String(s) : String("(null)"); }
 };
 }  // namespace doctest

@@ -16,7 +16,7 @@ namespace ps::testrender {
 struct Render {
     Image mean, variance;
     SampleStats stats;
-    std::string algo = "";   // default: for a Render made from a RenderResult by hand
+    std::string algo = "";  // default: for a Render made from a RenderResult by hand
 };
 
 // Renders `spp` iterations of the named integrator with a fixed seed. One thread by default:

@@ -40,7 +40,10 @@ inline std::string transformScene(const std::string& text, double s, double t, i
         std::istringstream ls(code);
         std::vector<std::string> tok;
         for (std::string w; ls >> w;) tok.push_back(w);
-        if (tok.empty()) { out << line << "\n"; continue; }
+        if (tok.empty()) {
+            out << line << "\n";
+            continue;
+        }
         const std::string& k = tok[0];
         size_t first = 1;
         if (k == "triangle" || k == "quad") {

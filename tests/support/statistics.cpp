@@ -38,7 +38,7 @@ std::string format(const char* fmt, ...) {
 
 constexpr int kMaxIterations = 1000000;  // the series and fractions need O(sqrt(a)) terms
 constexpr double kEps = 1e-15;
-constexpr double kTiny = 1e-300;          // guards the modified Lentz recurrences
+constexpr double kTiny = 1e-300;  // guards the modified Lentz recurrences
 
 // Regularized lower incomplete gamma P(a, x) by its series, for x < a + 1:
 // P(a, x) = e^{-x} x^a / Gamma(a) * sum_n x^n / (a (a+1) ... (a+n)).
@@ -142,8 +142,8 @@ ChiSquareResult rejectWith(std::string report) {
 }
 
 // Validates the tables; empty string when they are usable.
-std::string checkTables(const std::vector<double>& observed, const std::vector<double>& expected,
-                        double alpha, const CellName& name) {
+std::string checkTables(const std::vector<double>& observed, const std::vector<double>& expected, double alpha,
+                        const CellName& name) {
     if (observed.size() != expected.size() || observed.empty())
         return format("chi-square: %zu observed and %zu expected cells (must be equal and non-zero): rejected",
                       observed.size(), expected.size());
@@ -190,8 +190,7 @@ std::string worstCells(std::vector<Term> terms) {
                       [](const Term& a, const Term& b) { return a.contribution() > b.contribution(); });
     std::string s = "\n  worst cells:";
     for (size_t i = 0; i < k; ++i)
-        s += format(" %s observed %.0f expected %.1f;", terms[i].name.c_str(), terms[i].observed,
-                    terms[i].expected);
+        s += format(" %s observed %.0f expected %.1f;", terms[i].name.c_str(), terms[i].observed, terms[i].expected);
     return s;
 }
 
@@ -215,14 +214,15 @@ ChiSquareResult pearson(const std::vector<double>& observed, const std::vector<d
     for (const Term& t : terms) r.statistic += t.contribution();  // X^2 = sum (O - E)^2 / E
     r.dof = int(terms.size()) - 1;
     if (r.dof < 1)
-        return rejectWith(format("chi-square: only %zu cell(s) after pooling (dof %d < 1): too few samples or "
-                                 "cells for a test: rejected",
-                                 terms.size(), r.dof));
+        return rejectWith(
+            format("chi-square: only %zu cell(s) after pooling (dof %d < 1): too few samples or "
+                   "cells for a test: rejected",
+                   terms.size(), r.dof));
     r.pValue = chiSquareSurvival(r.statistic, r.dof);
     r.passed = r.pValue >= alpha;
     r.report = format("chi-square: statistic %.1f, dof %d, p = %.3g %s alpha %.3g: %s (%zu cells, %d pooled)",
-                      r.statistic, r.dof, r.pValue, r.passed ? ">=" : "<", alpha,
-                      r.passed ? "accepted" : "rejected", observed.size(), pooledCells);
+                      r.statistic, r.dof, r.pValue, r.passed ? ">=" : "<", alpha, r.passed ? "accepted" : "rejected",
+                      observed.size(), pooledCells);
     if (!r.passed) r.report += worstCells(terms);
     return r;
 }
@@ -299,8 +299,8 @@ double refine(const F& f, const Box& b, double whole, double absTol, int depth) 
     double maxValue = 0.0;
     for (int k = 0; k < 4; ++k) sum += part[k] = gauss4x4(f, q[k], zeros, maxValue);
     probeCorners(f, b, zeros, maxValue);
-    const bool straddlesSupport = zeros > 0 && zeros < 4 * 16 + 4 &&
-                                  0.05 * maxValue * (b.u1 - b.u0) * (b.v1 - b.v0) > absTol;
+    const bool straddlesSupport =
+        zeros > 0 && zeros < 4 * 16 + 4 && 0.05 * maxValue * (b.u1 - b.u0) * (b.v1 - b.v0) > absTol;
     if (depth == 0 || (!straddlesSupport && std::abs(sum - whole) <= std::max(absTol, kRelTol * std::abs(sum))))
         return sum;
     double total = 0.0;
@@ -420,7 +420,8 @@ void dumpTables(const std::string& path, const std::string& header, const Grid& 
     for (int t = 0; t < 2; ++t) {
         out << (t == 0 ? "# observed\n" : "# expected\n");
         for (int i = 0; i < g.rows; ++i) {
-            for (int j = 0; j < g.cols; ++j) out << format(t == 0 ? "%.0f " : "%.6g ", (*tables[t])[size_t(i) * g.cols + j]);
+            for (int j = 0; j < g.cols; ++j)
+                out << format(t == 0 ? "%.0f " : "%.6g ", (*tables[t])[size_t(i) * g.cols + j]);
             out << "\n";
         }
     }
@@ -452,8 +453,7 @@ ChiSquareResult finish(ChiSquareResult r, const SampleFaults& faults, long inval
 
 std::string checkSamplerArgs(int rows, int cols, int samples, double alpha) {
     if (rows < 1 || cols < 1 || samples < 1)
-        return format("chi-square: %d x %d cells and %d samples (all must be positive): rejected", rows, cols,
-                      samples);
+        return format("chi-square: %d x %d cells and %d samples (all must be positive): rejected", rows, cols, samples);
     if (!(alpha > 0.0 && alpha < 1.0)) return format("chi-square: alpha %g not in (0, 1): rejected", alpha);
     return "";
 }
@@ -491,8 +491,8 @@ ChiSquareResult chiSquare(const std::vector<double>& observed, const std::vector
 }
 
 ChiSquareResult chiSquareSphere(const std::function<Vec3(const Vec2&)>& sample,
-                                const std::function<double(const Vec3&)>& pdf, int thetaBins, int phiBins,
-                                int samples, uint64_t seed, double alpha, const std::string& dumpPath) {
+                                const std::function<double(const Vec3&)>& pdf, int thetaBins, int phiBins, int samples,
+                                uint64_t seed, double alpha, const std::string& dumpPath) {
     std::string bad = checkSamplerArgs(thetaBins, phiBins, samples, alpha);
     if (!bad.empty()) return rejectWith(bad);
     Grid g(thetaBins, phiBins);  // row: cos(theta) bin from -1 up, column: phi bin from 0
@@ -503,9 +503,15 @@ ChiSquareResult chiSquareSphere(const std::function<Vec3(const Vec2&)>& sample,
     Rng rng(seed, 0);
     for (int s = 0; s < samples; ++s) {
         const Vec3 w = sample(rng.uniform2());
-        if (!(std::isfinite(w.x) && std::isfinite(w.y) && std::isfinite(w.z))) { ++faults.nonFinite; continue; }
+        if (!(std::isfinite(w.x) && std::isfinite(w.y) && std::isfinite(w.z))) {
+            ++faults.nonFinite;
+            continue;
+        }
         const double x = w.x, y = w.y, z = w.z, len = std::sqrt(x * x + y * y + z * z);
-        if (len == 0.0) { g.observed[g.noCell()] += 1.0; continue; }
+        if (len == 0.0) {
+            g.observed[g.noCell()] += 1.0;
+            continue;
+        }
         if (std::abs(len - 1.0) > 1e-3) ++faults.nonUnit;
         double phi = std::atan2(y, x);
         if (phi < 0.0) phi += 2.0 * kPiD;
@@ -542,8 +548,8 @@ ChiSquareResult chiSquareSphere(const std::function<Vec3(const Vec2&)>& sample,
 }
 
 ChiSquareResult chiSquarePlanar(const std::function<Vec2(const Vec2&)>& sample,
-                                const std::function<double(const Vec2&)>& pdf, const Vec2& lo, const Vec2& hi,
-                                int bins, int samples, uint64_t seed, double alpha, const std::string& dumpPath) {
+                                const std::function<double(const Vec2&)>& pdf, const Vec2& lo, const Vec2& hi, int bins,
+                                int samples, uint64_t seed, double alpha, const std::string& dumpPath) {
     std::string bad = checkSamplerArgs(bins, bins, samples, alpha);
     if (!bad.empty()) return rejectWith(bad);
     if (!(hi.x > lo.x && hi.y > lo.y)) return rejectWith("chi-square: empty rectangle [lo, hi]: rejected");
@@ -555,8 +561,14 @@ ChiSquareResult chiSquarePlanar(const std::function<Vec2(const Vec2&)>& sample,
     Rng rng(seed, 0);
     for (int s = 0; s < samples; ++s) {
         const Vec2 p = sample(rng.uniform2());
-        if (!(std::isfinite(p.x) && std::isfinite(p.y))) { ++faults.nonFinite; continue; }
-        if (p.x < lo.x || p.x > hi.x || p.y < lo.y || p.y > hi.y) { g.observed[g.noCell()] += 1.0; continue; }
+        if (!(std::isfinite(p.x) && std::isfinite(p.y))) {
+            ++faults.nonFinite;
+            continue;
+        }
+        if (p.x < lo.x || p.x > hi.x || p.y < lo.y || p.y > hi.y) {
+            g.observed[g.noCell()] += 1.0;
+            continue;
+        }
         const int i = std::clamp(int((p.y - double(lo.y)) / dy), 0, bins - 1);
         const int j = std::clamp(int((p.x - double(lo.x)) / dx), 0, bins - 1);
         g.observed[size_t(i) * bins + j] += 1.0;
@@ -576,8 +588,8 @@ ChiSquareResult chiSquarePlanar(const std::function<Vec2(const Vec2&)>& sample,
     auto name = [&](size_t c) {
         if (c == g.noCell()) return std::string("the samples outside [lo, hi]");
         const int i = int(c / bins), j = int(c % bins);
-        return format("cell (x bin %d [%.4g, %.4g], y bin %d [%.4g, %.4g])", j, lo.x + j * dx, lo.x + (j + 1) * dx,
-                      i, lo.y + i * dy, lo.y + (i + 1) * dy);
+        return format("cell (x bin %d [%.4g, %.4g], y bin %d [%.4g, %.4g])", j, lo.x + j * dx, lo.x + (j + 1) * dx, i,
+                      lo.y + i * dy, lo.y + (i + 1) * dy);
     };
     ChiSquareResult r = pearson(g.observed, g.expected, alpha, 5.0, name);
     r.report += format("; pdf integral over the rectangle %.6f, %.0f samples outside of %d", integral,
@@ -646,15 +658,15 @@ TTestResult tTest(const Welford& samples, double reference, double alpha, double
     r.t = (r.mean - reference) / r.stdError;  // t = (mean - ref) / sqrt(s^2 / n), dof n - 1
     r.pValue = studentTwoSided(r.t, dof);
     r.passed = r.pValue >= alpha;
-    r.report = format("t-test: mean %.6g vs reference %.6g, std error %.3g, t = %.3f, dof %.0f, p = %.3g %s alpha %.3g: %s",
-                      r.mean, reference, r.stdError, r.t, dof, r.pValue, r.passed ? ">=" : "<", alpha,
-                      r.passed ? "accepted" : "rejected");
+    r.report = format(
+        "t-test: mean %.6g vs reference %.6g, std error %.3g, t = %.3f, dof %.0f, p = %.3g %s alpha %.3g: %s", r.mean,
+        reference, r.stdError, r.t, dof, r.pValue, r.passed ? ">=" : "<", alpha, r.passed ? "accepted" : "rejected");
     if (maxRelStdError > 0.0) {
         const double limit = maxRelStdError * std::abs(reference);
         const bool powerful = r.stdError <= limit;
-        r.report += format("\n  power: std error %.3g %s %.3g = %g x |reference|: %s", r.stdError,
-                           powerful ? "<=" : ">", limit, maxRelStdError,
-                           powerful ? "enough samples" : "too noisy to judge (rejected)");
+        r.report +=
+            format("\n  power: std error %.3g %s %.3g = %g x |reference|: %s", r.stdError, powerful ? "<=" : ">", limit,
+                   maxRelStdError, powerful ? "enough samples" : "too noisy to judge (rejected)");
         r.passed = r.passed && powerful;
     }
     return r;
@@ -663,10 +675,13 @@ TTestResult tTest(const Welford& samples, double reference, double alpha, double
 ZTestResult zTestImages(const Image& a, const Image& varA, const Image& b, const Image& varB, double alpha,
                         double requiredFraction, double varianceFloor) {
     ZTestResult r;
-    const auto sameSize = [&](const Image& im) { return im.width == a.width && im.height == a.height && im.pixels.size() == a.pixels.size(); };
+    const auto sameSize = [&](const Image& im) {
+        return im.width == a.width && im.height == a.height && im.pixels.size() == a.pixels.size();
+    };
     if (!sameSize(varA) || !sameSize(b) || !sameSize(varB) || a.pixels.empty()) {
-        r.report = format("z-test: image sizes differ or are empty (a %dx%d, varA %dx%d, b %dx%d, varB %dx%d): rejected",
-                          a.width, a.height, varA.width, varA.height, b.width, b.height, varB.width, varB.height);
+        r.report =
+            format("z-test: image sizes differ or are empty (a %dx%d, varA %dx%d, b %dx%d, varB %dx%d): rejected",
+                   a.width, a.height, varA.width, varA.height, b.width, b.height, varB.width, varB.height);
         return r;
     }
     struct Channel {
@@ -682,24 +697,25 @@ ZTestResult zTestImages(const Image& a, const Image& varA, const Image& b, const
             for (int c = 0; c < 3; ++c) {
                 const double va = a.at(x, y)[c], vb = b.at(x, y)[c];
                 const double var = double(varA.at(x, y)[c]) + double(varB.at(x, y)[c]) + varianceFloor;
-                double z = std::abs(va - vb) / std::sqrt(var);  // z = |a - b| / sqrt(varA + varB + floor)
+                double z = std::abs(va - vb) / std::sqrt(var);     // z = |a - b| / sqrt(varA + varB + floor)
                 if (!std::isfinite(z) || !(var > 0.0)) z = kInfD;  // NaN/Inf values or variances fail
                 if (!(normalTwoSided(z) >= level)) ++r.failed;
                 channels.push_back({x, y, c, va, vb, z});
             }
     r.fractionPassed = double(r.total - r.failed) / r.total;
     r.passed = r.fractionPassed >= requiredFraction;
-    r.report = format("z-test: %d of %d pixel channels fail at per-channel alpha %.3g (Sidak of %.3g), %.4f%% pass "
-                      "%s required %.4f%%: %s",
-                      r.failed, r.total, level, alpha, 100.0 * r.fractionPassed, r.passed ? ">=" : "<",
-                      100.0 * requiredFraction, r.passed ? "accepted" : "rejected");
+    r.report = format(
+        "z-test: %d of %d pixel channels fail at per-channel alpha %.3g (Sidak of %.3g), %.4f%% pass "
+        "%s required %.4f%%: %s",
+        r.failed, r.total, level, alpha, 100.0 * r.fractionPassed, r.passed ? ">=" : "<", 100.0 * requiredFraction,
+        r.passed ? "accepted" : "rejected");
     const size_t k = std::min<size_t>(5, channels.size());
     std::partial_sort(channels.begin(), channels.begin() + k, channels.end(),
                       [](const Channel& p, const Channel& q) { return p.z > q.z; });
     r.report += "\n  worst:";
     for (size_t i = 0; i < k; ++i)
-        r.report += format(" (x %d, y %d, %c) a %.5g b %.5g z %.2f;", channels[i].x, channels[i].y, "RGB"[channels[i].c],
-                           channels[i].a, channels[i].b, channels[i].z);
+        r.report += format(" (x %d, y %d, %c) a %.5g b %.5g z %.2f;", channels[i].x, channels[i].y,
+                           "RGB"[channels[i].c], channels[i].a, channels[i].b, channels[i].z);
     return r;
 }
 

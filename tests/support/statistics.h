@@ -27,14 +27,14 @@ struct ChiSquareResult {
     bool passed = false;
     double statistic = 0.0, pValue = 0.0;
     int dof = 0;
-    std::string report;   // statistic, dof, p, alpha; on failure the worst cells
+    std::string report;  // statistic, dof, p, alpha; on failure the worst cells
 };
 
 // Pearson's test of observed counts against expected counts (same length, expected summing to
 // the sample count). Cells are sorted by expected count and those with expected < minExpected
 // pooled; a cell with expected 0 that holds more than 1e-5 * N samples fails at once.
-ChiSquareResult chiSquare(const std::vector<double>& observed, const std::vector<double>& expected,
-                          double alpha, double minExpected = 5.0);
+ChiSquareResult chiSquare(const std::vector<double>& observed, const std::vector<double>& expected, double alpha,
+                          double minExpected = 5.0);
 
 // Goodness of fit of a direction sampler against its pdf (per unit solid angle) over the
 // sphere, in the equal-area parametrisation (cos(theta), phi): thetaBins x phiBins cells,
@@ -42,21 +42,21 @@ ChiSquareResult chiSquare(const std::vector<double>& observed, const std::vector
 // sample(u) may return a zero vector for an invalid sample (it then counts in no cell).
 // On failure, writes observed and expected tables to dumpPath (if not empty).
 ChiSquareResult chiSquareSphere(const std::function<Vec3(const Vec2&)>& sample,
-                                const std::function<double(const Vec3&)>& pdf, int thetaBins, int phiBins,
-                                int samples, uint64_t seed, double alpha, const std::string& dumpPath = "");
+                                const std::function<double(const Vec3&)>& pdf, int thetaBins, int phiBins, int samples,
+                                uint64_t seed, double alpha, const std::string& dumpPath = "");
 
 // The same for a sampler of points in the rectangle [lo, hi] with pdf per unit area.
 ChiSquareResult chiSquarePlanar(const std::function<Vec2(const Vec2&)>& sample,
-                                const std::function<double(const Vec2&)>& pdf, const Vec2& lo, const Vec2& hi,
-                                int bins, int samples, uint64_t seed, double alpha, const std::string& dumpPath = "");
+                                const std::function<double(const Vec2&)>& pdf, const Vec2& lo, const Vec2& hi, int bins,
+                                int samples, uint64_t seed, double alpha, const std::string& dumpPath = "");
 
 // Running mean and variance (Welford), in double.
 struct Welford {
     uint64_t n = 0;
     double mean = 0.0, m2 = 0.0;
     void add(double x);
-    double variance() const;      // sample variance
-    double stdError() const;      // sqrt(variance / n)
+    double variance() const;  // sample variance
+    double stdError() const;  // sqrt(variance / n)
 };
 
 struct TTestResult {
@@ -72,9 +72,9 @@ TTestResult tTest(const Welford& samples, double reference, double alpha, double
 
 struct ZTestResult {
     bool passed = false;
-    double fractionPassed = 0.0;   // of pixel channels
+    double fractionPassed = 0.0;  // of pixel channels
     int failed = 0, total = 0;
-    std::string report;            // the worst pixels: position, channel, values, z
+    std::string report;  // the worst pixels: position, channel, values, z
 };
 
 // Per-pixel z-test of two independent estimates a and b of the same image, each with its

@@ -52,8 +52,8 @@ std::string firstNonBlack(const Image& img) {
     for (int i = 0; i < img.width * img.height; ++i) {
         const Color& c = img.pixels[i];
         if (c.r != 0.0f || c.g != 0.0f || c.b != 0.0f)
-            return "(" + std::to_string(i % img.width) + ", " + std::to_string(i / img.width) + ") = " +
-                   fmt::str(Vec3(c.r, c.g, c.b));
+            return "(" + std::to_string(i % img.width) + ", " + std::to_string(i / img.width) +
+                   ") = " + fmt::str(Vec3(c.r, c.g, c.b));
     }
     return "";
 }
@@ -90,7 +90,8 @@ TEST_CASE("extreme: the integrators are all here (the lessons' integrators are l
     const std::vector<std::string> names = transportAlgorithms();
     std::string list;
     for (const std::string& n : names) list += n + " ";
-    CHECK_MESSAGE(names.size() >= 3, "expected the lessons' integrators (pt, ...) besides eyelight and normals, got: " << list);
+    CHECK_MESSAGE(names.size() >= 3,
+                  "expected the lessons' integrators (pt, ...) besides eyelight and normals, got: " << list);
 }
 
 TEST_CASE("extreme: an empty scene (a camera and nothing else) is black for every integrator") {
@@ -99,15 +100,15 @@ TEST_CASE("extreme: an empty scene (a camera and nothing else) is black for ever
 
 TEST_CASE("extreme: a closed box without lights is black for every light transport integrator") {
     const std::string text = std::string(kCamera) +
-        "material w diffuse albedo 0.9 0.9 0.9\n"
-        "material g phong albedo 0.9 0.9 0.9 exponent 100\n"
-        "quad -2 0 -5  2 0 -5  2 0 2  -2 0 2  material w\n"      // floor
-        "quad -2 3 -5  -2 3 2  2 3 2  2 3 -5  material w\n"      // ceiling
-        "quad -2 0 2  2 0 2  2 3 2  -2 3 2  material g\n"        // back
-        "quad -2 0 -5  -2 3 -5  2 3 -5  2 0 -5  material w\n"    // front, behind the camera
-        "quad -2 0 -5  -2 0 2  -2 3 2  -2 3 -5  material w\n"    // left
-        "quad 2 0 -5  2 3 -5  2 3 2  2 0 2  material w\n"        // right
-        "sphere center 0 0.5 0  radius 0.5  material g\n";
+                             "material w diffuse albedo 0.9 0.9 0.9\n"
+                             "material g phong albedo 0.9 0.9 0.9 exponent 100\n"
+                             "quad -2 0 -5  2 0 -5  2 0 2  -2 0 2  material w\n"    // floor
+                             "quad -2 3 -5  -2 3 2  2 3 2  2 3 -5  material w\n"    // ceiling
+                             "quad -2 0 2  2 0 2  2 3 2  -2 3 2  material g\n"      // back
+                             "quad -2 0 -5  -2 3 -5  2 3 -5  2 0 -5  material w\n"  // front, behind the camera
+                             "quad -2 0 -5  -2 0 2  -2 3 2  -2 3 -5  material w\n"  // left
+                             "quad 2 0 -5  2 3 -5  2 3 2  2 0 2  material w\n"      // right
+                             "sphere center 0 0.5 0  radius 0.5  material g\n";
     checkAll("no-lights", text, transportAlgorithms(), 2, true);
 }
 
@@ -117,68 +118,70 @@ TEST_CASE("extreme: a point light seen only in a mirror and through glass by the
     // BSDF or to the pinhole), so the exact answer of every technique is 0 — never a NaN from
     // "0 / 0" pdfs of delta events.
     const std::string text = std::string(kCamera) +
-        "material m mirror\n"
-        "material glass dielectric ior 1.5\n"
-        "quad -3 0 -5  -3 0 3  3 0 3  3 0 -5  material m\n"
-        "sphere center 0 0.7 0  radius 0.6  material glass\n"
-        "sphere center 1.2 0.4 0.5  radius 0.3  material m\n"
-        "pointlight position 0 2.5 0.5  intensity 10 10 10\n";
+                             "material m mirror\n"
+                             "material glass dielectric ior 1.5\n"
+                             "quad -3 0 -5  -3 0 3  3 0 3  3 0 -5  material m\n"
+                             "sphere center 0 0.7 0  radius 0.6  material glass\n"
+                             "sphere center 1.2 0.4 0.5  radius 0.3  material m\n"
+                             "pointlight position 0 2.5 0.5  intensity 10 10 10\n";
     checkAll("point-light-specular", text, transportAlgorithms(), 4, true);
 }
 
 TEST_CASE("extreme: point lights on a surface, at a corner and on an edge give finite images") {
     const std::string text = std::string(kCamera) +
-        "material w diffuse albedo 0.8 0.8 0.8\n"
-        "material g phong albedo 0.8 0.8 0.8 exponent 20\n"
-        "quad -1 0 -1  -1 0 1  1 0 1  1 0 -1  material w\n"
-        "quad -1 0 1  1 0 1  1 2 1  -1 2 1  material g\n"
-        "pointlight position 0.3 0 0.2  intensity 1 1 1\n"     // on the floor
-        "pointlight position -1 0 1  intensity 1 1 1\n"        // at a corner of both quads
-        "pointlight position 0.5 0 1  intensity 1 1 1\n"       // on the shared edge
-        "pointlight position 0 1 1  intensity 1 1 1\n";        // on the back wall
+                             "material w diffuse albedo 0.8 0.8 0.8\n"
+                             "material g phong albedo 0.8 0.8 0.8 exponent 20\n"
+                             "quad -1 0 -1  -1 0 1  1 0 1  1 0 -1  material w\n"
+                             "quad -1 0 1  1 0 1  1 2 1  -1 2 1  material g\n"
+                             "pointlight position 0.3 0 0.2  intensity 1 1 1\n"  // on the floor
+                             "pointlight position -1 0 1  intensity 1 1 1\n"     // at a corner of both quads
+                             "pointlight position 0.5 0 1  intensity 1 1 1\n"    // on the shared edge
+                             "pointlight position 0 1 1  intensity 1 1 1\n";     // on the back wall
     checkAll("point-light-on-surface", text, transportAlgorithms(), 4, false);
 }
 
 TEST_CASE("extreme: tiny bright lights (sphere r = 1e-4, triangle 1e-5 wide, L r^2 constant) give finite images") {
     const std::string text = std::string(kCamera) +
-        "material w diffuse albedo 0.8 0.8 0.8\n"
-        "material g phong albedo 0.8 0.8 0.8 exponent 10000\n"
-        "quad -2 0 -2  -2 0 2  2 0 2  2 0 -2  material g\n"
-        "quad -2 0 2  2 0 2  2 2 2  -2 2 2  material w\n"
-        "sphere center -0.5 1 0  radius 1e-4  emission 1e8 1e8 1e8\n"
-        "triangle 0.5 1.5 0  0.50001 1.5 0  0.5 1.5 0.00001  emission 1e10 1e10 1e10\n";
+                             "material w diffuse albedo 0.8 0.8 0.8\n"
+                             "material g phong albedo 0.8 0.8 0.8 exponent 10000\n"
+                             "quad -2 0 -2  -2 0 2  2 0 2  2 0 -2  material g\n"
+                             "quad -2 0 2  2 0 2  2 2 2  -2 2 2  material w\n"
+                             "sphere center -0.5 1 0  radius 1e-4  emission 1e8 1e8 1e8\n"
+                             "triangle 0.5 1.5 0  0.50001 1.5 0  0.5 1.5 0.00001  emission 1e10 1e10 1e10\n";
     checkAll("tiny-lights", text, transportAlgorithms(), 4, false);
 }
 
-TEST_CASE("extreme: Phong exponents 0, 1e4, 1e6 and 1e7 (the loader's largest) next to a mirror and glass give finite images") {
+TEST_CASE(
+    "extreme: Phong exponents 0, 1e4, 1e6 and 1e7 (the loader's largest) next to a mirror and glass give finite images") {
     const std::string text = std::string(kCamera) +
-        "material p0 phong albedo 0.8 0.8 0.8 exponent 0\n"
-        "material p4 phong albedo 0.8 0.8 0.8 exponent 10000\n"
-        "material p6 phong albedo 0.8 0.8 0.8 exponent 1000000\n"
-        "material p7 phong albedo 0.8 0.8 0.8 exponent 1e7\n"
-        "material m mirror\n"
-        "material glass dielectric ior 1.5\n"
-        "quad -2 0 -2  -2 0 2  2 0 2  2 0 -2  material p6\n"
-        "quad -2 0 2  2 0 2  2 2 2  -2 2 2  material p4\n"
-        "quad -2 0 -2  -2 2 -2  -2 2 2  -2 0 2  material p0\n"
-        "sphere center 0.6 0.4 0  radius 0.4  material glass\n"
-        "sphere center -0.6 0.4 0.5  radius 0.4  material m\n"
-        "sphere center 0 1.2 1  radius 0.3  material p7\n"
-        "quad -0.3 2 -0.3  0.3 2 -0.3  0.3 2 0.3  -0.3 2 0.3  emission 5 5 5\n"
-        "pointlight position 1 1.5 -1  intensity 1 1 1\n"
-        "background radiance 0.2 0.2 0.2\n";
+                             "material p0 phong albedo 0.8 0.8 0.8 exponent 0\n"
+                             "material p4 phong albedo 0.8 0.8 0.8 exponent 10000\n"
+                             "material p6 phong albedo 0.8 0.8 0.8 exponent 1000000\n"
+                             "material p7 phong albedo 0.8 0.8 0.8 exponent 1e7\n"
+                             "material m mirror\n"
+                             "material glass dielectric ior 1.5\n"
+                             "quad -2 0 -2  -2 0 2  2 0 2  2 0 -2  material p6\n"
+                             "quad -2 0 2  2 0 2  2 2 2  -2 2 2  material p4\n"
+                             "quad -2 0 -2  -2 2 -2  -2 2 2  -2 0 2  material p0\n"
+                             "sphere center 0.6 0.4 0  radius 0.4  material glass\n"
+                             "sphere center -0.6 0.4 0.5  radius 0.4  material m\n"
+                             "sphere center 0 1.2 1  radius 0.3  material p7\n"
+                             "quad -0.3 2 -0.3  0.3 2 -0.3  0.3 2 0.3  -0.3 2 0.3  emission 5 5 5\n"
+                             "pointlight position 1 1.5 -1  intensity 1 1 1\n"
+                             "background radiance 0.2 0.2 0.2\n";
     checkAll("phong-extremes", text, transportAlgorithms(), 4, false);
 }
 
-TEST_CASE("extreme: grazing rays (camera in the plane of a wall, lights in the plane of the floor) give finite images") {
+TEST_CASE(
+    "extreme: grazing rays (camera in the plane of a wall, lights in the plane of the floor) give finite images") {
     const std::string text =
-        "camera eye 0 0 -4  target 0 0 0  fov 45  resolution 16 16\n"   // in the floor's plane y = 0
+        "camera eye 0 0 -4  target 0 0 0  fov 45  resolution 16 16\n"  // in the floor's plane y = 0
         "material w diffuse albedo 0.8 0.8 0.8\n"
         "material g phong albedo 0.8 0.8 0.8 exponent 50\n"
         "quad -2 0 -2  -2 0 2  2 0 2  2 0 -2  material g\n"
-        "quad 0 -1 -2  0 -1 2  0 1 2  0 1 -2  material w\n"               // a wall seen edge-on
-        "quad -2 0 3  2 0 3  2 2 3  -2 2 3  emission 1 1 1\n"            // its lower edge on the floor's plane
-        "pointlight position 1 0 1  intensity 1 1 1\n";                   // in the floor's plane
+        "quad 0 -1 -2  0 -1 2  0 1 2  0 1 -2  material w\n"    // a wall seen edge-on
+        "quad -2 0 3  2 0 3  2 2 3  -2 2 3  emission 1 1 1\n"  // its lower edge on the floor's plane
+        "pointlight position 1 0 1  intensity 1 1 1\n";        // in the floor's plane
     checkAll("grazing", text, transportAlgorithms(), 4, false);
 }
 
@@ -196,8 +199,9 @@ TEST_CASE("extreme: albedo 1 in a closed emitting box terminates at the maximum 
         CAPTURE(algo);
         const Result r = renderWith(scene, algo, 2);
         CHECK_MESSAGE(r.stats.bad() == 0, algo << ": " << r.stats.nan << " NaN and " << r.stats.inf << " Inf samples");
-        CHECK_MESSAGE(meanValue(r.mean) <= 41.0 * 1.5, algo << ": mean " << meanValue(r.mean)
-                                                            << " is far above (D + 1) Le = 41: paths longer than the maximum depth?");
+        CHECK_MESSAGE(meanValue(r.mean) <= 41.0 * 1.5,
+                      algo << ": mean " << meanValue(r.mean)
+                           << " is far above (D + 1) Le = 41: paths longer than the maximum depth?");
     }
 }
 
@@ -211,16 +215,20 @@ TEST_CASE("extreme: the Cornell spheres scaled by 1e-4 and 1e4 and moved by 1e5 
     for (const char* file : {"cornell-spheres.scene", "cornell-point-light.scene"}) {
         const std::string text = scenetext::readText(dir + file);
         const Scene base = parseScene(scenetext::transformScene(text, 1.0, 0.0, 24), file);
-        struct Case { double s, t; const char* name; };
+        struct Case {
+            double s, t;
+            const char* name;
+        };
         for (const std::string& algo : transportAlgorithms()) {
             const Result ref = renderWith(base, algo, 4);
             REQUIRE(ref.stats.bad() == 0);
             const double m0 = meanValue(ref.mean);
-            for (const Case c : {Case{1e-4, 0.0, "scaled by 1e-4"}, Case{1e4, 0.0, "scaled by 1e4"},
-                                 Case{1.0, 1e5, "moved by 1e5"}}) {
+            for (const Case c :
+                 {Case{1e-4, 0.0, "scaled by 1e-4"}, Case{1e4, 0.0, "scaled by 1e4"}, Case{1.0, 1e5, "moved by 1e5"}}) {
                 const Scene scene = parseScene(scenetext::transformScene(text, c.s, c.t, 24), file);
                 const Result r = renderWith(scene, algo, 4);
-                CHECK_MESSAGE(r.stats.bad() == 0, file << " " << c.name << ", " << algo << ": " << r.stats.bad() << " NaN/Inf samples");
+                CHECK_MESSAGE(r.stats.bad() == 0,
+                              file << " " << c.name << ", " << algo << ": " << r.stats.bad() << " NaN/Inf samples");
                 const double m = meanValue(r.mean);
                 // Lesson 6's per-technique integrators (path-s0 ...) render paths of exactly
                 // maxdepth + 1 = 9 edges only: moved by 1e5, the rounding of the coordinates
@@ -235,7 +243,8 @@ TEST_CASE("extreme: the Cornell spheres scaled by 1e-4 and 1e4 and moved by 1e5 
     }
 }
 
-TEST_CASE("extreme: lesson 6's single-technique integrators moved by 1e5 agree with themselves at the origin (t-test)") {
+TEST_CASE(
+    "extreme: lesson 6's single-technique integrators moved by 1e5 agree with themselves at the origin (t-test)") {
     // The moved-by-1e5 comparison above needs the same paths for the same seed; the path-*
     // integrators' 9-edge paths decorrelate under the coarse rounding of the moved scene, so here
     // each one is compared with its own image at the original position as two independent
@@ -272,15 +281,15 @@ TEST_CASE("extreme: lesson 6's single-technique integrators moved by 1e5 agree w
             const double t = se > 0.0 ? std::abs(diff) / se : (diff == 0.0 ? 0.0 : INFINITY);
             const double dof = double(2 * kRuns - 2);
             const double p = stats::studentTwoSided(t, dof);
-            MESSAGE(file << ", " << algo << ": original " << a.mean << ", moved by 1e5 " << b.mean << ", se " << se << ", t = " << t
-                         << ", p = " << p);
-            CHECK_MESSAGE(p >= alpha, file << " moved by 1e5, " << algo << ": image mean " << b.mean
-                                           << " against " << a.mean << " at the origin (difference " << diff
-                                           << ", standard error " << se << ", p = " << p << " < alpha " << alpha
+            MESSAGE(file << ", " << algo << ": original " << a.mean << ", moved by 1e5 " << b.mean << ", se " << se
+                         << ", t = " << t << ", p = " << p);
+            CHECK_MESSAGE(p >= alpha, file << " moved by 1e5, " << algo << ": image mean " << b.mean << " against "
+                                           << a.mean << " at the origin (difference " << diff << ", standard error "
+                                           << se << ", p = " << p << " < alpha " << alpha
                                            << "): light leaks or lost shadow rays in the moved scene?");
             CHECK_MESSAGE(se <= 0.2 * std::abs(a.mean), file << ", " << algo << ": standard error " << se
-                                                            << " of the difference is above 20 % of the mean "
-                                                            << a.mean << ": the test has no power");
+                                                             << " of the difference is above 20 % of the mean "
+                                                             << a.mean << ": the test has no power");
         }
     }
 }
