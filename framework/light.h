@@ -19,6 +19,14 @@ struct Light {
     Distribution1D primByArea;    // area light: picks a primitive proportionally to its area
     float area = 0.0f;            // area light: total area
     int line = 0;                 // the scene file's line that made it (0: not from a file)
+    // Point light lying on a surface (within 2^-17 of its coordinates' magnitude, Scene::finalize):
+    // surfaceScale > 0, and surfaceNormal is the (mean) normal of the surfaces it lies on. Rays
+    // leaving it, and shadow rays ending at it, are offset off that surface to their own side
+    // (Scene::spawnRay, spawnRayTo), as at any surface point: the point is in the surface's plane,
+    // so a ray never hits that surface at t = 0, and each half-space sees half of its light.
+    Vec3 surfaceNormal = Vec3(0.0f);
+    float surfaceScale = 0.0f;
+
 
     bool isDelta() const { return kind == LightKind::Point; }  // a flag, not a huge pdf
     bool isInfinite() const { return kind == LightKind::Background; }

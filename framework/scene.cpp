@@ -101,6 +101,7 @@ void Scene::finalize() {
                              "lower its emission or scale the scene's units");
     }
     lightSelection = Distribution1D(power);
+    findSurfacePointLights();
 
     for (const Primitive& pr : prims) {
         switch (materials[pr.material].kind) {
@@ -111,6 +112,91 @@ void Scene::finalize() {
         }
     }
     caps.pinholeCamera = camera.isPinhole();
+}
+
+// A point light within 2^-17 of its coordinates' magnitude (64 float ulps) of a triangle's plane,
+// over the triangle, or of a sphere, lies on it: the watertight test cannot tell on which side
+// of that surface the light is, and rays from it would hit the surface at t = +-ulps at random
+// (a point light exactly on the Cornell box's ceiling: lt 5 % dark, bpt 15 % bright against pt,
+// which never shot a ray from the light). It is taken to be in the surface's plane: rays leaving
+// it and shadow rays ending at it are offset off the surface by 2^-16 of that magnitude (twice
+// the tolerance) to the side they go to (spawnRay, spawnRayTo), so the surface never sees it and
+// each side gets the half of its light that goes there; a warning says so.
+void Scene::findSurfacePointLights() {
+    surfacePointLights.clear();
+    constexpr double kTol = 0x1p-17;
+    const std::vector<BVHNode>& nodes = bvh.nodes();
+    for (size_t l = 0; l < lights.size(); ++l) {
+        Light& light = lights[l];
+        if (light.kind != LightKind::Point) continue;
+        light.surfaceNormal = Vec3(0.0f);
+        light.surfaceScale = 0.0f;
+        const glm::dvec3 p(light.position);
+        const double pScale = maxAbsComponent(light.position);
+        glm::dvec3 nSum(0.0), nFirst(0.0);
+        double scale = 0.0;
+        // The BVH's nodes whose boxes, grown by the tolerance, hold the light.
+        std::vector<uint32_t> stack;
+        if (!nodes.empty()) stack.push_back(0);
+        while (!stack.empty()) {
+            const BVHNode& node = nodes[stack.back()];
+            stack.pop_back();
+            const AABB& b = node.box;
+            const double grow = kTol * std::max(pScale, double(std::max(maxAbsComponent(b.lo), maxAbsComponent(b.hi))));
+            bool inside = true;
+            for (int k = 0; k < 3; ++k) inside = inside && p[k] >= b.lo[k] - grow && p[k] <= b.hi[k] + grow;
+            if (!inside) continue;
+            if (node.count == 0) {
+                stack.push_back(node.first);
+                stack.push_back(node.first + 1);
+                continue;
+            }
+            for (uint32_t j = node.first; j < node.first + node.count; ++j) {
+                const Primitive& pr = prims[bvh.primIndex()[j]];
+                glm::dvec3 n;
+                double s;
+                if (pr.shape == ShapeKind::Triangle) {
+                    const Triangle& t = triangles[pr.index];
+                    const glm::dvec3 p0(t.p0), e1 = glm::dvec3(t.p1) - p0, e2 = glm::dvec3(t.p2) - p0;
+                    const glm::dvec3 c = glm::cross(e1, e2);
+                    const double c2 = glm::dot(c, c);
+                    if (!(c2 > 0.0)) continue;
+                    s = std::max(pScale, double(t.errScale()));
+                    const double dist = glm::dot(c, p - p0) / std::sqrt(c2);
+                    if (std::abs(dist) > kTol * s) continue;
+                    // Barycentrics of the light's projection onto the plane (edges included).
+                    const glm::dvec3 q = p - p0;
+                    const double b1 = glm::dot(glm::cross(q, e2), c) / c2, b2 = glm::dot(glm::cross(e1, q), c) / c2;
+                    if (b1 < -kTol || b2 < -kTol || 1.0 - b1 - b2 < -kTol) continue;
+                    n = c / std::sqrt(c2);
+                } else {
+                    const Sphere& sph = spheres[pr.index];
+                    const glm::dvec3 d = p - glm::dvec3(sph.center);
+                    const double len = glm::length(d);
+                    s = std::max(pScale, double(sph.errScale()));
+                    if (!(len > 0.0) || std::abs(len - double(sph.radius)) > kTol * s) continue;
+                    n = d / len;
+                }
+                if (scale == 0.0) nFirst = n;
+                nSum += n;
+                scale = std::max(scale, s);
+            }
+        }
+        if (scale == 0.0) continue;
+        // On an edge or corner of surfaces at an angle: their mean normal (off all of them for
+        // rays into the space they bound); back to back (the sum vanishes): the first one's.
+        const double sumLen = glm::length(nSum);
+        light.surfaceNormal = Vec3(sumLen > 1e-3 ? nSum / sumLen : nFirst);
+        light.surfaceScale = float(8.0 * scale);  // offsetRayOrigin's 2^-19 x 8 = 2^-16 of it
+        surfacePointLights.push_back(int(l));
+        char buf[320];
+        std::snprintf(buf, sizeof buf,
+                      "the point light%s%s lies on a surface (within float rounding): it is taken to be in the "
+                      "surface's plane, so that surface gets none of its light and half of it goes to the surface's "
+                      "back; move it off the surface to light the surface itself",
+                      light.line > 0 ? " of line " : "", light.line > 0 ? std::to_string(light.line).c_str() : "");
+        warnings.push_back(buf);
+    }
 }
 
 SurfacePoint Scene::surfacePoint(uint32_t prim, const Vec3& p) const {
@@ -185,11 +271,28 @@ uint32_t ignoreFor(const Scene& s, const SurfacePoint& sp) {
 }
 }  // namespace
 
-Ray Scene::spawnRay(const SurfacePoint& sp, const Vec3& dir) const {
+const SurfacePoint& Scene::rayEnd(const SurfacePoint& sp, SurfacePoint& storage) const {
+    if (sp.light < 0 || surfacePointLights.empty()) return sp;
+    const Light& light = lights[size_t(sp.light)];
+    if (light.kind != LightKind::Point || !(light.surfaceScale > 0.0f)) return sp;
+    storage = sp;
+    storage.p = light.position;
+    storage.n = light.surfaceNormal;
+    storage.errScale = light.surfaceScale;
+    storage.prim = kNoPrimitive;
+    return storage;
+}
+
+Ray Scene::spawnRay(const SurfacePoint& spIn, const Vec3& dir) const {
+    SurfacePoint storage;
+    const SurfacePoint& sp = rayEnd(spIn, storage);
     return Ray(offsetRayOrigin(sp.p, sp.n, sp.errScale, dir), dir, kInf, ignoreFor(*this, sp));
 }
 
-Ray Scene::spawnRayTo(const SurfacePoint& sp, const SurfacePoint& q) const {
+Ray Scene::spawnRayTo(const SurfacePoint& spIn, const SurfacePoint& qIn) const {
+    SurfacePoint s1, s2;
+    const SurfacePoint& sp = rayEnd(spIn, s1);
+    const SurfacePoint& q = rayEnd(qIn, s2);
     const Vec3 o = offsetRayOrigin(sp.p, sp.n, sp.errScale, q.p - sp.p);
     const Vec3 target = offsetRayOrigin(q.p, q.n, q.errScale, sp.p - q.p);
     const Vec3 d = target - o;
@@ -197,7 +300,16 @@ Ray Scene::spawnRayTo(const SurfacePoint& sp, const SurfacePoint& q) const {
     return Ray(o, d / len, len, ignoreFor(*this, sp));
 }
 
-Ray Scene::spawnRayTo(const SurfacePoint& sp, const Vec3& q) const {
+Ray Scene::spawnRayTo(const SurfacePoint& spIn, const Vec3& q) const {
+    for (int l : surfacePointLights)
+        if (lights[size_t(l)].position == q) {
+            SurfacePoint target;
+            target.p = q;
+            target.light = l;
+            return spawnRayTo(spIn, target);
+        }
+    SurfacePoint storage;
+    const SurfacePoint& sp = rayEnd(spIn, storage);
     const Vec3 o = offsetRayOrigin(sp.p, sp.n, sp.errScale, q - sp.p);
     const Vec3 d = q - o;
     const float len = glm::length(d);

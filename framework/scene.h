@@ -85,6 +85,12 @@ public:
     Ray spawnRayTo(const SurfacePoint& sp, const SurfacePoint& q) const;
     // A shadow ray from sp to a point not on a surface (a point light, the pinhole).
     Ray spawnRayTo(const SurfacePoint& sp, const Vec3& q) const;
+    // All three treat a point light that lies on a surface (Light::surfaceScale > 0) as a point
+    // of that surface: as origin (sp.light is the light) and as target (q is its position), the
+    // ray is offset off the surface to its own side, so it never hits that surface at t ~ 0
+    // (float rounding makes the watertight test's t of an origin in a triangle's plane a
+    // random +-ulps, which would scatter or block the light at its own position).
+    std::vector<int> surfacePointLights;  // indices of such lights (finalize)
 
     // Light index for u in [0,1) and its probability.
     int selectLight(float u, float& prob) const;
@@ -94,6 +100,11 @@ public:
 
     // Point and normal at barycentrics (b1, b2) of a triangle, or for a sphere direction.
     SurfacePoint surfacePoint(uint32_t prim, const Vec3& p) const;
+
+private:
+    // sp itself, or for a point light lying on a surface the point rays leave it from.
+    const SurfacePoint& rayEnd(const SurfacePoint& sp, SurfacePoint& storage) const;
+    void findSurfacePointLights();
 };
 
 // Rays traced by this thread since the last call (for rays/s in render summaries).

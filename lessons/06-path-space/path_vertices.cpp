@@ -55,13 +55,15 @@ bool visible(const Scene& scene, const PathVertex& a, const PathVertex& b) {
     if (a.infinite || b.infinite) {
         const PathVertex& f = a.infinite ? b : a;
         const Vec3 d = a.infinite ? a.sp.n : b.sp.n;
-        const Ray r = f.deltaPosition() ? Ray(f.sp.p, d) : scene.spawnRay(f.sp, d);
+        // A pinhole or a point light has errScale 0 (no offset), unless the light lies on a
+        // surface: then the framework offsets the ray off it (Scene::spawnRay).
+        const Ray r = scene.spawnRay(f.sp, d);
         return !scene.occluded(r);
     }
     if (a.deltaPosition() && b.deltaPosition()) {
-        const Vec3 d = b.sp.p - a.sp.p;
-        const float len = glm::length(d);
-        return len > 0.0f && !scene.occluded(Ray(a.sp.p, d / len, len * (1.0f - 0x1p-20f)));
+        // The point light and the pinhole: spawnRayTo offsets neither (errScale 0), except a
+        // point light that lies on a surface, which it moves off that surface.
+        return glm::length(b.sp.p - a.sp.p) > 0.0f && !scene.occluded(scene.spawnRayTo(a.sp, b.sp.p));
     }
     if (b.deltaPosition()) return !scene.occluded(scene.spawnRayTo(a.sp, b.sp.p));
     if (a.deltaPosition()) return !scene.occluded(scene.spawnRayTo(b.sp, a.sp.p));

@@ -6,6 +6,7 @@
 // framework tests (ungraded), guarding the reference and the framework it calls.
 #include <doctest/doctest.h>
 #include <cmath>
+#include <map>
 #include <string>
 #include <vector>
 #include "format.h"
@@ -291,5 +292,136 @@ TEST_CASE(
                                                              << " of the difference is above 20 % of the mean "
                                                              << a.mean << ": the test has no power");
         }
+    }
+}
+
+namespace {
+
+// The image mean without the 3 x 3 pixels around raster position `around` (none if it is off
+// the image).
+double meanWithout(const Image& img, bool off, const Vec2& around) {
+    const int cx = int(std::floor(around.x)), cy = int(std::floor(around.y));
+    double s = 0.0;
+    size_t n = 0;
+    for (int y = 0; y < img.height; ++y)
+        for (int x = 0; x < img.width; ++x) {
+            if (!off && std::abs(x - cx) <= 1 && std::abs(y - cy) <= 1) continue;
+            const Color& c = img.pixels[size_t(y) * img.width + x];
+            s += double(c.r) + c.g + c.b;
+            n += 3;
+        }
+    return s / double(n);
+}
+
+}  // namespace
+
+TEST_CASE(
+    "extreme: a point light exactly on the Cornell box's ceiling: every integrator agrees with its reference (t-test)") {
+    // scenes/cornell-point-light.scene with the light moved up 10 mm onto the ceiling's plane
+    // y = 548.8. What is physically right: the light is a point in the plane of the one-sided
+    // ceiling, so the ceiling gets none of its light (cos = 0 there), the half of its light going
+    // up leaves through the ceiling's back, and the lower half lights the box. The framework
+    // takes a point light on a surface to be so (Scene::findSurfacePointLights, with a warning):
+    // rays from it and shadow rays to it are offset off the surface to their own side. Without
+    // that, rays leaving the light hit the ceiling at t = +-ulps in a third of all directions
+    // (the watertight test's rounding), scattering light at the light's position that pt never
+    // sees: lt was 5.5 % dark and bpt 14.7 % bright against pt.
+    //
+    // Every registered integrator renders it; each one that estimates light transport is
+    // compared with its reference, as two independent estimates of the same number: the image
+    // mean without the 3 x 3 pixels around the light (lt and bpt see the point light itself
+    // there, the path L E, which pt cannot sample), from kRuns renders (seeds apart) each.
+    // References: pt for the full transport; lesson 6's path-s1 for its fixed-length
+    // single-technique integrators (path-*); direct-light for lesson 2's direct-* integrators.
+    // BSDF sampling alone never hits a point light: pt-bsdf, direct-bsdf and path-s0 must be
+    // exactly black. Welch's t-test, two-sided, alpha = 0.01 with Sidak over every comparison;
+    // power: the standard error of the difference must be below 1.5 % of the reference mean
+    // (4 % for path-*). Without the fix, at this size: lt -9 %, bpt +10 %, bpt-balance +8 %,
+    // bpt-full -13 % against pt, path-s2 .. path-s4 and path-t1 -27 .. -29 % against path-s1,
+    // every one at p < 1e-13.
+    std::string text = scenetext::readText(std::string(PATHSPACE_SOURCE_DIR) + "/scenes/cornell-point-light.scene");
+    const std::string before = "pointlight position 278 538.8 279.5";
+    const size_t at = text.find(before);
+    REQUIRE_MESSAGE(at != std::string::npos, "scenes/cornell-point-light.scene no longer says '" << before << "'");
+    text.replace(at, before.size(), "pointlight position 278 548.8 279.5");
+    constexpr int kRes = 16, kRuns = 16, kSpp = 32;
+    const Scene scene =
+        parseScene(scenetext::transformScene(text, 1.0, 0.0, kRes), "cornell-point-light-on-ceiling.scene");
+    // Lesson 6's path-* render paths of exactly maxdepth + 1 edges: 4 here (the scene's 9-edge
+    // paths are too faint and noisy for the test's power), so that every technique s = 1 .. 4
+    // (s = 4 is t = 1, light tracing) has a light vertex y_1 (where the stray hits were) or a
+    // shadow ray to the light.
+    Scene shortPaths = scene;
+    shortPaths.settings.maxDepth = 3;
+    bool warned = false;
+    for (const std::string& w : scene.warnings) warned = warned || w.find("lies on a surface") != std::string::npos;
+    CHECK_MESSAGE(warned, "no warning that the point light lies on a surface");
+    Vec2 lightRaster;
+    const bool off = !scene.camera.rasterPosition(scene.lights[0].position, lightRaster);
+
+    const auto reference = [](const std::string& algo) -> std::string {
+        if (algo.rfind("path-", 0) == 0) return "path-s1";
+        if (algo.rfind("direct-", 0) == 0) return "direct-light";
+        return "pt";
+    };
+    const auto black = [](const std::string& algo) {
+        return algo == "pt-bsdf" || algo == "direct-bsdf" || algo == "path-s0";
+    };
+    struct Estimate {
+        stats::Welford w;
+        uint64_t bad = 0;
+        std::string nonBlack;
+    };
+    const auto estimate = [&](const std::string& algo, uint64_t seed) {
+        Estimate e;
+        for (int i = 0; i < kRuns; ++i) {
+            const Result r =
+                renderWith(algo.rfind("path-", 0) == 0 ? shortPaths : scene, algo, kSpp, seed + 7919 * uint64_t(i));
+            e.bad += r.stats.bad();
+            e.w.add(meanWithout(r.mean, off, lightRaster));
+            if (e.nonBlack.empty()) e.nonBlack = firstNonBlack(r.mean);
+        }
+        return e;
+    };
+    std::vector<std::string> compared;
+    for (const std::string& algo : transportAlgorithms())
+        if (!black(algo) && algo != reference(algo)) compared.push_back(algo);
+    const double alpha = stats::sidak(0.01, int(compared.size()));
+    std::map<std::string, Estimate> refs;
+    for (const std::string& algo : allAlgorithms()) {
+        CAPTURE(algo);
+        const bool transport = algo != "eyelight" && algo != "normals";
+        if (!transport || black(algo)) {
+            const Result r = renderWith(scene, algo, 2);
+            CHECK_MESSAGE(r.stats.bad() == 0, algo << ": " << r.stats.bad() << " NaN/Inf samples");
+            if (transport) {
+                const std::string where = firstNonBlack(r.mean);
+                CHECK_MESSAGE(where.empty(),
+                              algo << " cannot reach a point light, expected a black image, got pixel " << where);
+            }
+            continue;
+        }
+        const std::string refName = reference(algo);
+        if (!refs.count(refName)) refs[refName] = estimate(refName, 100);
+        const Estimate& ref = refs[refName];
+        REQUIRE_MESSAGE(ref.bad == 0, refName << ": " << ref.bad << " NaN/Inf samples");
+        REQUIRE_MESSAGE(ref.w.mean > 0.0, refName << " (the reference) renders black");
+        if (algo == refName) continue;
+        const Estimate e = estimate(algo, 1000003);  // seeds apart from the reference's
+        CHECK_MESSAGE(e.bad == 0, algo << ": " << e.bad << " NaN/Inf samples");
+        const double se = std::sqrt(e.w.variance() / double(e.w.n) + ref.w.variance() / double(ref.w.n));
+        const double diff = e.w.mean - ref.w.mean;
+        const double t = se > 0.0 ? std::abs(diff) / se : (diff == 0.0 ? 0.0 : INFINITY);
+        const double p = stats::studentTwoSided(t, double(2 * kRuns - 2));
+        MESSAGE(algo << " against " << refName << ": " << e.w.mean << " vs " << ref.w.mean << " ("
+                     << 100.0 * diff / ref.w.mean << " %), se " << se << ", t = " << t << ", p = " << p);
+        CHECK_MESSAGE(p >= alpha,
+                      algo << ": image mean " << e.w.mean << " against " << refName << "'s " << ref.w.mean << " ("
+                           << 100.0 * diff / ref.w.mean << " %, standard error " << se << ", p = " << p << " < alpha "
+                           << alpha << "): rays from the light hit the ceiling it lies on, or shadow rays to it do?");
+        const double power = algo.rfind("path-", 0) == 0 ? 0.04 : 0.015;
+        CHECK_MESSAGE(se <= power * ref.w.mean, algo << ": standard error " << se << " of the difference is above "
+                                                     << 100.0 * power << " % of " << refName << "'s mean " << ref.w.mean
+                                                     << ": the test has no power");
     }
 }
