@@ -439,9 +439,10 @@ TEST_CASE("extreme: albedo 1 in a closed emitting box at maximum depth 1e5: no p
     // Power: kRes^2 kSpp paths of D bounces, 3.84e7 bounces; at the old rate the chance that
     // none ends early (the test passes on the old code) is exp(-1.1e-7 x 3.84e7) = 1.5 %.
     // pt and lt are not exact per sample, cost 1.6 and 1 times pt-bsdf per bounce and would
-    // need at least as many bounces to meet the rare early ends: they are not run here. Measured after the fix (4 x 4 pixels): pt +0.007 % and +0.004 % (16 spp, standard
-    // error 0.007 %); lt +0.084 % (64 spp, standard error 0.026 %): a small excess in lt that
-    // is left to look into (issue 16).
+    // need at least as many bounces to meet the rare early ends: they are not run here.
+    // Measured after the fix (4 x 4 pixels, D = 1e5): pt +0.007 % and +0.004 % (16 spp, standard
+    // error 0.007 %); lt +0.08 .. +0.11 % in four runs (16 and 64 spp), whose spread at D = 1e4
+    // is about 0.07 %: whether lt keeps a small excess is left open (issue 16).
     std::string text = scenetext::readText(std::string(PATHSPACE_SOURCE_DIR) + "/scenes/furnace.scene");
     const size_t at = text.find("albedo 0.5 0.5 0.5");
     REQUIRE_MESSAGE(at != std::string::npos, "scenes/furnace.scene no longer says 'albedo 0.5 0.5 0.5'");
