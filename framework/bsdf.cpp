@@ -57,7 +57,7 @@ bool sampleBSDF(const Material& m, const Vec3& n, const Vec3& wo, const Vec2& u,
     const Vec3 ns = cosO < 0.0f ? -n : n;
     switch (isLambertian(m) ? BSDFKind::Diffuse : m.kind) {
     case BSDFKind::Diffuse: {
-        const Vec3 local = sampleCosineHemisphere(u);
+        const Vec3 local = sampleCosineHemisphere(cosineWarpU(u));  // never the rim
         s.wi = Frame(ns).toWorld(local);
         s.pdf = cosineHemispherePdf(Frame(ns).toLocal(s.wi));  // exactly pdfBSDF(wi)
         if (s.pdf <= 0.0f) return false;

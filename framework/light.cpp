@@ -80,7 +80,7 @@ EmissionSample sampleEmission(const Scene& scene, int l, const Vec2& uPos, const
     switch (light.kind) {
     case LightKind::Area: {
         sampleAreaPoint(scene, light, uPos, e.p, e.n);
-        const Vec3 local = sampleCosineHemisphere(uDir);
+        const Vec3 local = sampleCosineHemisphere(cosineWarpU(uDir));  // never the rim
         e.dir = Frame(e.n).toWorld(local);
         e.pdfA = pdfLightArea(scene, l);
         e.pdfW = cosineHemispherePdf(local);
