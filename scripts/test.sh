@@ -19,4 +19,4 @@ cd ..
 bash scripts/check-skeleton.sh build
 # Every reader of outside input under libFuzzer with ASan/UBSan: the corpus of past failures
 # replayed, then a few seconds of new inputs per reader (skipped, with a note, without clang++).
-bash scripts/fuzz.sh --seconds 5
+bash scripts/fuzz.sh --seconds 2
