@@ -43,6 +43,13 @@ struct UsageError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
+// The value of the option at args[i] (it is args[i + 1]; i moves onto it), else UsageError
+// "option OPT needs a value". Every command's option loop reads its values with it.
+inline const std::string& optionValue(const std::vector<std::string>& args, size_t& i) {
+    if (i + 1 >= args.size()) throw UsageError("option " + args[i] + " needs a value");
+    return args[++i];
+}
+
 // The whole value of option opt as a number, else UsageError "option OPT needs a number, got 'S'".
 template <class T>
 T parseNumber(const std::string& opt, const std::string& s) {

@@ -58,10 +58,7 @@ int runConverge(const std::vector<std::string>& args) {
     bool prune = true;
     for (size_t i = 0; i < args.size(); ++i) {
         const std::string& a = args[i];
-        auto value = [&]() -> std::string {
-            if (i + 1 >= args.size()) throw UsageError("option " + a + " needs a value");
-            return args[++i];
-        };
+        auto value = [&]() -> std::string { return optionValue(args, i); };
         if (a == "--algos") opt.algos = splitList(value());
         else if (a == "--time") opt.seconds = parsePositive(a, value());
         else if (a == "--spp") opt.spp = parseAtLeast<int>(a, value(), 1);

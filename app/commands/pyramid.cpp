@@ -35,10 +35,7 @@ int runPyramid(const std::vector<std::string>& args) {
     bool prune = true;
     for (size_t i = 0; i < args.size(); ++i) {
         const std::string& a = args[i];
-        auto value = [&]() -> std::string {
-            if (i + 1 >= args.size()) throw UsageError("option " + a + " needs a value");
-            return args[++i];
-        };
+        auto value = [&]() -> std::string { return optionValue(args, i); };
         if (a == "--max-length") maxLength = parseWithin<int>(a, value(), 1, kMaxLength);
         else if (a == "--spp") spp = parseAtLeast<int>(a, value(), 1);
         else if (a == "--seed") seed = parseNumber<uint64_t>(a, value());

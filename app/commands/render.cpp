@@ -40,10 +40,7 @@ int runRender(const std::vector<std::string>& args) {
     bool progress = stderrIsTerminal(), prune = true;
     for (size_t i = 0; i < args.size(); ++i) {
         const std::string& a = args[i];
-        auto value = [&]() -> std::string {
-            if (i + 1 >= args.size()) throw UsageError("option " + a + " needs a value");
-            return args[++i];
-        };
+        auto value = [&]() -> std::string { return optionValue(args, i); };
         if (a == "--algo") algo = value();
         else if (a == "--spp") spp = parseAtLeast<int>(a, value(), 1);
         else if (a == "--time") seconds = parsePositive(a, value());
