@@ -8,13 +8,19 @@ set -euo pipefail
 build="$(cd "${1:-build}" && pwd)"
 src="$(cd "$(dirname "$0")/.." && pwd)"
 handout="$build/handout"
+# The handout's build sits in it as build/ sits in the repository, so that each compile line is
+# the same as the main build's relative to the tree: with the main build's ccache launcher (and
+# CCACHE_BASEDIR at the repository) the framework and the tests come from the cache.
+hbuild="$handout/build"
 rm -rf "$handout" "$build/handout-build"
 bash "$src/scripts/handout.sh" "$handout"
 "$build/skeleton" leaks "$src/solutions" "$handout"
 
-cmake -S "$handout" -B "$build/handout-build" -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build "$build/handout-build" -j"$(nproc)" >/dev/null
-cd "$build/handout-build"
+launcher=$(sed -n 's/^CMAKE_CXX_COMPILER_LAUNCHER:[A-Z]*=//p' "$build/CMakeCache.txt" 2>/dev/null || true)
+export CCACHE_BASEDIR="${CCACHE_BASEDIR:-$src}"
+cmake -S "$handout" -B "$hbuild" -DCMAKE_BUILD_TYPE=Release ${launcher:+-DCMAKE_CXX_COMPILER_LAUNCHER="$launcher"} >/dev/null
+cmake --build "$hbuild" -j"$(nproc)" >/dev/null
+cd "$hbuild"
 total=$(ctest -N -L '^lesson-' | sed -n 's/^Total Tests: //p')
 [ "${total:-0}" -gt 0 ] || { echo "check-skeleton: no graded tests found" >&2; exit 1; }
 ctest -L '^lesson-' -j"$(nproc)" --timeout 120 --output-junit "$PWD/skeleton.xml" >/dev/null 2>&1 || true

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 #include "format.h"
+#include "lesson_files.h"
 #include "math.h"
 #include "statistics.h"
 #include "alpha.h"
@@ -35,7 +36,7 @@ inline double alpha() { return ps::testalpha::perTest(kStatisticalTests); }
 
 // Where a failing chi-square test writes its observed and expected tables.
 inline std::string dumpPath(const std::string& name) {
-    const std::filesystem::path dir = std::filesystem::path(PATHSPACE_BINARY_DIR) / "lesson-01";
+    const std::filesystem::path dir = std::filesystem::path(ps::testfiles::binaryDir()) / "lesson-01";
     std::error_code ec;
     std::filesystem::create_directories(dir, ec);
     return (dir / ("chi2-" + name + ".txt")).string();

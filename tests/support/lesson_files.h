@@ -1,6 +1,6 @@
 // The repository's files as the graded tests read them: a path in the source tree, a file's
-// text, a shipped scene at test resolution. For test programs built with PATHSPACE_SOURCE_DIR
-// (tests/CMakeLists.txt); each lesson's lessonNN.h brings these names into its namespace.
+// text, a shipped scene at test resolution. The source and build trees' paths come from
+// test_paths.cpp; each lesson's lessonNN.h brings these names into its namespace.
 #pragma once
 #include <regex>
 #include <string>
@@ -9,7 +9,11 @@
 
 namespace ps::testfiles {
 
-inline std::string sourcePath(const std::string& rel) { return std::string(PATHSPACE_SOURCE_DIR) + "/" + rel; }
+// The source tree (the repository or the handout) and the build tree (test_paths.cpp).
+const char* sourceDir();
+const char* binaryDir();
+
+inline std::string sourcePath(const std::string& rel) { return std::string(sourceDir()) + "/" + rel; }
 
 // The whole file; fails the test (REQUIRE) if it cannot be read.
 inline std::string readText(const std::string& path) { return scenetext::readText(path); }
