@@ -10,6 +10,20 @@
 # To fix a file: clang-format -i FILE (Debian: apt-get install clang-format).
 set -euo pipefail
 cd "$(dirname "$0")/.."
+# Control characters in text files: a LaTeX "\\frac", "\\beta" or "\\theta" written through a
+# string with escapes becomes a form feed, a backspace or a tab, and the equation is garbled in
+# the lesson or on the slide without any error. No such byte in tracked text (tabs only in code).
+ctrl=$(git ls-files -z | grep -zvE '\.(png|jpg|jpeg|pfm|hdr|exr|gz|zip|pdf|ico|bin)$' |
+  xargs -0 grep -lP '[\x00-\x08\x0b-\x1f]' 2>/dev/null || true)
+tabs=$(git ls-files -z '*.md' '*.scene' | xargs -0 grep -lP '\t' 2>/dev/null || true)
+if [ -n "$ctrl$tabs" ]; then
+  for f in $(printf "%s\n" $ctrl $tabs | sort -u); do
+    grep -nP '[\x00-\x08\x0b-\x1f]' "$f" | head -3 | cut -c1-100 | sed "s#^#$f:#" | cat -v
+    case "$f" in *.md|*.scene) grep -nP '\t' "$f" | head -3 | cut -c1-100 | sed "s#^#$f:#" | cat -T ;; esac
+  done
+  echo "check-format: control characters (^L, ^H, ^I ...) in text files: an escaped LaTeX command? Write \\frac, \\beta, \\theta" >&2
+  exit 1
+fi
 cf="${CLANG_FORMAT:-clang-format}"
 if ! command -v "$cf" >/dev/null 2>&1; then
   echo "check-format: $cf not found: format check skipped (Debian 12: apt-get install clang-format)" >&2

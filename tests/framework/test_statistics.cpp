@@ -199,6 +199,19 @@ TEST_CASE("stats: chiSquareSphere rejects wrong samplers") {
         INFO(r.report);
         CHECK_FALSE(r.passed);
     }
+    SUBCASE("a pdf off by a factor 2: said first, and the worst cells are cells of the sphere") {
+        // Cosine samples, half the cosine pdf: the pdf integrates to 1/2, so half the samples are
+        // "expected" in no cell. The report must say the integral, and its worst cells must be
+        // cells of the sphere, not the missing mass (issue 13: a message that named only it).
+        auto r = stats::chiSquareSphere(
+            cosineHemisphere, [](const Vec3& w) { return 0.5 * cosinePdf(w); }, 21, 42, 500000, 7, kAlpha);
+        INFO(r.report);
+        CHECK_FALSE(r.passed);
+        CHECK(r.report.rfind("the pdf integrates to 0.5000 over the sphere, not 1", 0) == 0);
+        const size_t worst = r.report.find("worst cells: cell (cos(theta) bin");
+        CHECK(worst != std::string::npos);
+        CHECK(r.report.find("the invalid samples (zero vectors): observed 0 expected 250000") != std::string::npos);
+    }
     SUBCASE("Phong exponent 20 sampled, exponent 22 pdf") {
         Phong sampled{20.0, kTilted}, claimed{22.0, kTilted};
         std::string path = dumpPath("stats_phong_dump.txt");

@@ -132,6 +132,7 @@ using CellName = std::function<std::string(size_t)>;
 struct Term {
     std::string name;
     double observed, expected;
+    bool noCell = false;  // the samples that fell in no cell (invalid or outside the domain)
     double contribution() const { return (observed - expected) * (observed - expected) / expected; }
 };
 
@@ -161,7 +162,7 @@ std::string checkTables(const std::vector<double>& observed, const std::vector<d
 // expected < minExpected, and then further ones until the pool reaches minExpected, go into a
 // single pooled cell. Cells with expected 0 are left out (the zero rule has judged them).
 std::vector<Term> poolCells(const std::vector<double>& observed, const std::vector<double>& expected,
-                            double minExpected, const CellName& name, int& pooledCells) {
+                            double minExpected, const CellName& name, size_t noCell, int& pooledCells) {
     std::vector<size_t> order(expected.size());
     std::iota(order.begin(), order.end(), size_t(0));
     std::stable_sort(order.begin(), order.end(), [&](size_t i, size_t j) { return expected[i] < expected[j]; });
@@ -170,6 +171,10 @@ std::vector<Term> poolCells(const std::vector<double>& observed, const std::vect
     pooledCells = 0;
     for (size_t i : order) {
         if (expected[i] == 0.0) continue;
+        if (i == noCell && expected[i] >= minExpected) {
+            terms.push_back({name(i), observed[i], expected[i], true});
+            continue;
+        }
         if (expected[i] < minExpected || (pooledExpected > 0.0 && pooledExpected < minExpected)) {
             pooledObserved += observed[i];
             pooledExpected += expected[i];
@@ -183,19 +188,37 @@ std::vector<Term> poolCells(const std::vector<double>& observed, const std::vect
     return terms;
 }
 
-// The up to 5 cells that contribute most to the statistic, for failure reports.
+// The up to 5 cells of the domain that contribute most to the statistic, for failure reports.
+// The samples in no cell are reported on their own line: when a pdf integrates to less than 1
+// they dominate the statistic, and listing them first would hide where in the domain the
+// sampler and the pdf disagree.
 std::string worstCells(std::vector<Term> terms) {
+    std::string s;
+    const auto none = std::find_if(terms.begin(), terms.end(), [](const Term& t) { return t.noCell; });
+    if (none != terms.end()) {
+        s += format("\n  %s: observed %.0f expected %.1f (the pdf's missing mass)", none->name.c_str(), none->observed,
+                    none->expected);
+        terms.erase(none);
+    }
     size_t k = std::min<size_t>(5, terms.size());
     std::partial_sort(terms.begin(), terms.begin() + k, terms.end(),
                       [](const Term& a, const Term& b) { return a.contribution() > b.contribution(); });
-    std::string s = "\n  worst cells:";
+    s += "\n  worst cells:";
     for (size_t i = 0; i < k; ++i)
         s += format(" %s observed %.0f expected %.1f;", terms[i].name.c_str(), terms[i].observed, terms[i].expected);
     return s;
 }
 
+// A pdf whose integral over the domain is not 1: said first, since it explains the rest (a pdf
+// off by a constant factor, e.g. a missing 1/pi or a factor 2, puts every cell off by it).
+std::string integralReport(double integral, const char* domain) {
+    if (std::abs(integral - 1.0) <= 1e-3) return "";
+    return format("the pdf integrates to %.4f over %s, not 1 (off by a factor %.4g if it is a constant factor); ",
+                  integral, domain, integral);
+}
+
 ChiSquareResult pearson(const std::vector<double>& observed, const std::vector<double>& expected, double alpha,
-                        double minExpected, const CellName& name) {
+                        double minExpected, const CellName& name, size_t noCell = size_t(-1)) {
     std::string invalid = checkTables(observed, expected, alpha, name);
     if (!invalid.empty()) return rejectWith(invalid);
 
@@ -210,7 +233,7 @@ ChiSquareResult pearson(const std::vector<double>& observed, const std::vector<d
 
     ChiSquareResult r;
     int pooledCells = 0;
-    std::vector<Term> terms = poolCells(observed, expected, minExpected, name, pooledCells);
+    std::vector<Term> terms = poolCells(observed, expected, minExpected, name, noCell, pooledCells);
     for (const Term& t : terms) r.statistic += t.contribution();  // X^2 = sum (O - E)^2 / E
     r.dof = int(terms.size()) - 1;
     if (r.dof < 1)
@@ -537,7 +560,8 @@ ChiSquareResult chiSquareSphere(const std::function<Vec3(const Vec2&)>& sample,
         return format("cell (cos(theta) bin %d [%.3f, %.3f], phi bin %d [%.3f, %.3f])", i, -1.0 + i * dz,
                       -1.0 + (i + 1) * dz, j, j * dphi, (j + 1) * dphi);
     };
-    ChiSquareResult r = pearson(g.observed, g.expected, alpha, 5.0, name);
+    ChiSquareResult r = pearson(g.observed, g.expected, alpha, 5.0, name, g.noCell());
+    if (!r.passed) r.report = integralReport(integral, "the sphere") + r.report;
     r.report += format("; pdf integral over the sphere %.6f, %.0f invalid samples of %d", integral,
                        g.observed[g.noCell()], samples);
     const std::string header = format(
@@ -591,7 +615,8 @@ ChiSquareResult chiSquarePlanar(const std::function<Vec2(const Vec2&)>& sample,
         return format("cell (x bin %d [%.4g, %.4g], y bin %d [%.4g, %.4g])", j, lo.x + j * dx, lo.x + (j + 1) * dx, i,
                       lo.y + i * dy, lo.y + (i + 1) * dy);
     };
-    ChiSquareResult r = pearson(g.observed, g.expected, alpha, 5.0, name);
+    ChiSquareResult r = pearson(g.observed, g.expected, alpha, 5.0, name, g.noCell());
+    if (!r.passed) r.report = integralReport(integral, "the rectangle") + r.report;
     r.report += format("; pdf integral over the rectangle %.6f, %.0f samples outside of %d", integral,
                        g.observed[g.noCell()], samples);
     const std::string header = format(
