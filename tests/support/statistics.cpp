@@ -205,7 +205,8 @@ std::string worstCells(std::vector<Term> terms) {
                       [](const Term& a, const Term& b) { return a.contribution() > b.contribution(); });
     s += "\n  worst cells:";
     for (size_t i = 0; i < k; ++i)
-        s += format(" %s observed %.0f expected %.1f;", terms[i].name.c_str(), terms[i].observed, terms[i].expected);
+        s += format("%s %s observed %.0f expected %.1f", i ? ";" : "", terms[i].name.c_str(), terms[i].observed,
+                    terms[i].expected);
     return s;
 }
 
