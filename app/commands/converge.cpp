@@ -11,6 +11,7 @@
 #include "image.h"
 #include "integrator.h"
 #include "report/converge.h"
+#include "report/label.h"
 #include "scene_loader.h"
 
 namespace ps {
@@ -32,7 +33,8 @@ const char* const kUsage = R"(converge options:
   --out DIR          where the report goes (default: converge-SCENE; made if missing); it holds
                      convergence.csv, convergence.svg (log-log relMSE against seconds with a
                      slope -1 guide), efficiency.md, equal-time.png (the algorithms' images at
-                     the end of the budget, left to right in --algos order, then the reference)
+                     the end of the budget, left to right in --algos order, then the reference,
+                     each under its label: algorithm and spp)
   --threads T, --maxdepth D, --no-prune, --progress/--no-progress   as for render
 A pixel in which a point light is seen directly is left out of every algorithm's error (a path
 tracer cannot sample that path: both ends are delta positions); the report says which.
@@ -144,9 +146,18 @@ int runConverge(const std::vector<std::string>& args) {
     writeText(outDir + "/efficiency.md", md.str());
     std::vector<Image> images = report.finalImages;
     images.push_back(ref);
-    const Image strip = sideBySide(images);
-    writePNG(outDir + "/equal-time.png", strip);
-    writePFM(outDir + "/equal-time.pfm", strip);
+    // The PNG says what each image is (algorithm and samples per pixel at the end of the budget,
+    // seed 0); the PFM holds the pixels only.
+    std::vector<std::string> labels;
+    for (const std::string& a : opt.algos) {
+        int spp = 0;
+        for (const ConvergencePoint& p : report.points)
+            if (p.algo == a && p.seed == 0) spp = p.spp;
+        labels.push_back(a + " " + std::to_string(spp) + " spp");
+    }
+    labels.push_back(reference.empty() ? "reference " + refAlgo : "reference");
+    writePNG(outDir + "/equal-time.png", labelledStrip(images, labels, Color(1.0f)));
+    writePFM(outDir + "/equal-time.pfm", sideBySide(images));
     std::cout << table;
     if (!regionNames.empty()) {
         const std::string regions = regionTable(report, opt.regions);

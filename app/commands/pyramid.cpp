@@ -2,10 +2,12 @@
 // lengths 1..K alone, as images laid out in rows k = 1..K, centred, row k holding s = 0..k+1.
 // (Lesson 7's plumbing: it could live in lessons/07-bidirectional/ next to the integrator.)
 #include <algorithm>
+#include <cmath>
 #include <iostream>
 #include "07-bidirectional/bpt.h"
 #include "command.h"
 #include "image.h"
+#include "report/label.h"
 #include "scene_loader.h"
 
 namespace ps {
@@ -68,12 +70,16 @@ int runPyramid(const std::vector<std::string>& args) {
     const TechniqueImages t = renderTechniques(scene, maxLength, spp, seed, threads, opt);
     const int w = scene.camera.width(), h = scene.camera.height(), gap = std::max(2, w / 16);
     const int cols = maxLength + 2;
-    Image unweighted(cols * (w + gap) + gap, maxLength * (h + gap) + gap, Color(0.15f));
+    // Each cell under its label "(s,t)", the first of a row under "k=K (0,t)" too (label.h); the
+    // ink is white after the PNG's exposure.
+    const int scale = labelScale(w), band = (kGlyphHeight + 2) * scale;
+    const Color ink(std::exp2(-exposure));
+    Image unweighted(cols * (w + gap) + gap, maxLength * (h + band + gap) + gap, Color(0.15f));
     Image weighted = unweighted;
     std::cout << "pathspace: pyramid of " << scenePath << ", " << spp << " spp; row k = path length k (k edges), "
               << "cells s = 0..k+1 from the left (t = k+1-s):\n";
     for (int k = 1; k <= maxLength; ++k) {
-        const int x0 = gap + (maxLength - k) * (w + gap) / 2, y0 = gap + (k - 1) * (h + gap);
+        const int x0 = gap + (maxLength - k) * (w + gap) / 2, y0 = gap + (k - 1) * (h + band + gap) + band;
         std::cout << "  k = " << k << ":";
         for (int s = 0; s <= k + 1; ++s) {
             const int idx = techniqueIndex(s, k);
@@ -82,6 +88,11 @@ int runPyramid(const std::vector<std::string>& args) {
             double sum = 0.0;
             for (const auto& c : u.pixels) sum += double(c.r) + c.g + c.b;
             std::cout << "  (" << s << "," << k + 1 - s << ")" << (sum > 0.0 ? "" : " black");
+            const std::string st = "(" + std::to_string(s) + "," + std::to_string(k + 1 - s) + ")";
+            const std::string label = s == 0 ? "k=" + std::to_string(k) + " " + st : st;
+            const int lx = x0 + s * (w + gap), ly = y0 - band + scale / 2;
+            drawText(unweighted, lx, ly, label, scale, ink, lx + w);
+            drawText(weighted, lx, ly, label, scale, ink, lx + w);
             for (int y = 0; y < h; ++y)
                 for (int x = 0; x < w; ++x) {
                     unweighted.at(x0 + s * (w + gap) + x, y0 + y) = u.at(x, y);

@@ -6,6 +6,7 @@
 #include <string>
 #include "metrics.h"
 #include "report/converge.h"
+#include "report/label.h"
 #include "scene_loader.h"
 
 using namespace ps;
@@ -63,4 +64,46 @@ TEST_CASE("report: a left-out pixel does not count in MSE, relMSE, trimmed relMS
     // The means are over the remaining pixels: one other pixel off by 0.5 of 5 left.
     img.at(2, 1) = Color(1.0f);
     CHECK(computeError(img, ref, mask).mse == doctest::Approx(0.25 / 5.0).epsilon(1e-12));
+}
+
+TEST_CASE("report: labels are drawn with the 5 x 7 font, scaled, clipped and above each image") {
+    // "1" at scale 1: the glyph's rows are ..#.., .##.., ..#.. x4, .###. (label.cpp).
+    Image img(12, 9);
+    drawText(img, 1, 1, "1", 1, Color(1.0f));
+    const char* rows[7] = {"..#..", ".##..", "..#..", "..#..", "..#..", "..#..", ".###."};
+    int lit = 0;
+    for (int y = 0; y < img.height; ++y)
+        for (int x = 0; x < img.width; ++x) {
+            const bool on = img.at(x, y).r > 0.5f;
+            const bool want = x >= 1 && x < 6 && y >= 1 && y < 8 && rows[y - 1][x - 1] == '#';
+            CHECK_MESSAGE(on == want, "pixel (" << x << ", " << y << ")");
+            lit += on;
+        }
+    CHECK(lit == 10);
+    // Scale 2: every font pixel is 2 x 2; an unknown character is a box; nothing beyond maxX.
+    Image big(40, 20);
+    drawText(big, 0, 0, "1", 2, Color(1.0f));
+    CHECK(big.at(4, 0).r == 1.0f);
+    CHECK(big.at(5, 1).r == 1.0f);
+    CHECK(big.at(3, 0).r == 0.0f);
+    Image box(10, 10);
+    drawText(box, 0, 0, "\x01", 1, Color(1.0f));
+    CHECK((box.at(0, 0).r == 1.0f && box.at(4, 6).r == 1.0f && box.at(2, 3).r == 0.0f));
+    Image clipped(20, 10);
+    drawText(clipped, 0, 0, "888", 1, Color(1.0f), 6);
+    for (int y = 0; y < 10; ++y)
+        for (int x = 6; x < 20; ++x) CHECK(clipped.at(x, y).r == 0.0f);
+    CHECK(textWidth("pt 16 spp", 2) == 9 * 6 * 2);
+    // The strip: a band of (7 + 4) x scale rows above the images, the images unchanged below it.
+    Image a(30, 20, Color(0.25f)), b(30, 20, Color(0.5f));
+    const Image strip = labelledStrip({a, b}, {"pt", "lt"}, Color(1.0f));
+    const int band = 11 * labelScale(30);
+    REQUIRE(strip.width == 60);
+    REQUIRE(strip.height == 20 + band);
+    CHECK(strip.at(0, band).r == 0.25f);
+    CHECK(strip.at(59, band + 19).r == 0.5f);
+    int ink = 0;
+    for (int y = 0; y < band; ++y)
+        for (int x = 0; x < 60; ++x) ink += strip.at(x, y).r == 1.0f;
+    CHECK(ink > 0);
 }
