@@ -7,6 +7,7 @@
 
 #define STB_IMAGE_WRITE_IMPLEMENTATION
 #include <stb_image_write.h>
+#include <tinyexr.h>
 
 namespace ps {
 
@@ -181,8 +182,22 @@ void writePNG(const std::string& path, const Image& img, float exposure) {
         throw InputError(path, 0, "cannot write PNG file");
 }
 
+// OpenEXR through tinyexr (Debian libtinyexr-dev): RGB, 32-bit float per channel (the pixels
+// exactly, like PFM), ZIP-compressed; opens in tev and the other HDR viewers.
+void writeEXR(const std::string& path, const Image& img) {
+    std::vector<float> rgb(size_t(img.width) * img.height * 3);
+    for (size_t i = 0; i < img.pixels.size(); ++i)
+        for (int k = 0; k < 3; ++k) rgb[3 * i + k] = img.pixels[i][k];
+    const char* err = nullptr;
+    if (SaveEXR(rgb.data(), img.width, img.height, 3, 0, path.c_str(), &err) != TINYEXR_SUCCESS) {
+        const std::string why = err ? err : "unknown error";
+        if (err) FreeEXRErrorMessage(err);
+        throw InputError(path, 0, "cannot write EXR file (" + why + ")");
+    }
+}
+
 const std::vector<std::string>& imageExtensions() {
-    static const std::vector<std::string> extensions = {".png", ".pfm", ".hdr"};
+    static const std::vector<std::string> extensions = {".png", ".pfm", ".hdr", ".exr"};
     return extensions;
 }
 
@@ -191,7 +206,8 @@ void writeImage(const std::string& path, const Image& img) {
     if (ext == "pfm") writePFM(path, img);
     else if (ext == "hdr") writeHDR(path, img);
     else if (ext == "png") writePNG(path, img);
-    else throw InputError(path, 0, "unknown image type '." + ext + "' (use .png, .pfm or .hdr)");
+    else if (ext == "exr") writeEXR(path, img);
+    else throw InputError(path, 0, "unknown image type '." + ext + "' (use .png, .pfm, .hdr or .exr)");
 }
 
 Image readImage(const std::string& path) {

@@ -21,10 +21,12 @@ void writePFM(const std::string& path, const Image& img);
 Image readPFM(const std::string& path);
 void writeHDR(const std::string& path, const Image& img);
 Image readHDR(const std::string& path);
+// OpenEXR, RGB 32-bit float (tinyexr): written, not read.
+void writeEXR(const std::string& path, const Image& img);
 // Tone mapping: x * 2^exposure, clamped to [0,1], sRGB transfer curve, 8 bits.
 void writePNG(const std::string& path, const Image& img, float exposure = 0.0f);
 
-// Writes by extension (.pfm, .hdr, .png); reads .pfm or .hdr.
+// Writes by extension (.pfm, .hdr, .png, .exr); reads .pfm or .hdr.
 void writeImage(const std::string& path, const Image& img);
 // The extensions writeImage knows, lower case with the dot: {".png", ".pfm", ".hdr"}.
 const std::vector<std::string>& imageExtensions();

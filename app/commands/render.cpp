@@ -22,8 +22,8 @@ const char* const kUsage = R"(render options:
   --seed S           random seed (default 0); the same seed gives the same image
   --threads T        worker threads, 1 to 1024 (default: all cores); the image does not
                      depend on it
-  --out FILE         output image, .png, .pfm or .hdr (default: SCENE's name + .png);
-                     a .pfm with the exact values is always written next to a .png or .hdr
+  --out FILE         output image, .png, .pfm, .hdr or .exr (default: SCENE's name + .png);
+                     a .pfm with the exact values is always written next to the others
   --variance FILE    also write the per-pixel variance of the mean (FILE ends in .pfm)
   --reference REF    a reference image (.pfm or .hdr): log error against run time
   --csv FILE         where that log goes (default: the output's name + .csv)

@@ -18,6 +18,7 @@
 #include "film.h"
 #include "image.h"
 #include "rng.h"
+#include <tinyexr.h>
 
 using namespace ps;
 namespace fs = std::filesystem;
@@ -92,6 +93,39 @@ TEST_CASE("film: PFM write/read round trip is bit-exact") {
     writeImage(path, img);
     CHECK(sameBits(img, readImage(path)));
     fs::remove(path);
+}
+
+TEST_CASE("film: EXR output holds the pixels exactly (32-bit float RGB, read back with tinyexr)") {
+    // The renderer only writes EXR; tinyexr's own reader is the oracle here. Finite values only:
+    // LoadEXR returns RGBA, top row first, like Image.
+    for (auto [w, h] : {std::pair<int, int>{7, 3}, {1, 1}, {3, 7}}) {
+        Image img(w, h);
+        Rng rng(uint64_t(w * 10 + h));
+        for (Color& c : img.pixels)
+            for (int ch = 0; ch < 3; ++ch) c[ch] = (rng.uniform() - 0.25f) * 1e3f;
+        img.at(0, 0) = Color(1e-30f, 3e38f, -0.0f);
+        img.at(w - 1, h - 1) = Color(-4, -5, -6);
+        const std::string path = tempPath("exr-" + std::to_string(w) + "x" + std::to_string(h) + ".EXR");
+        writeImage(path, img);
+        float* rgba = nullptr;
+        int bw = 0, bh = 0;
+        const char* err = nullptr;
+        const int rc = LoadEXR(&rgba, &bw, &bh, path.c_str(), &err);
+        fs::remove(path);
+        REQUIRE_MESSAGE(rc == TINYEXR_SUCCESS, (err ? err : "LoadEXR failed"));
+        INFO(w << "x" << h);
+        CHECK(bw == w);
+        CHECK(bh == h);
+        bool same = bw == w && bh == h;
+        for (int i = 0; same && i < w * h; ++i)
+            for (int ch = 0; ch < 3; ++ch)
+                same = same && std::memcmp(&rgba[4 * i + ch], &img.pixels[size_t(i)][ch], sizeof(float)) == 0;
+        std::free(rgba);
+        CHECK_MESSAGE(same, "the pixels read back differ from those written");
+    }
+    Image img(2, 2);
+    CHECK_THROWS_WITH_AS(writeEXR("/nonexistent-folder/x.exr", img),
+                         doctest::Contains("/nonexistent-folder/x.exr: cannot write EXR file"), InputError);
 }
 
 TEST_CASE("film: readPFM of a missing or malformed file throws InputError naming the file") {
