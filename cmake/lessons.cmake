@@ -14,8 +14,13 @@ else()
 endif()
 set(PATHSPACE_STUDENT "${_student_default}" CACHE STRING "lessons built from assignments/: '', 'all' or a list like '3;5'")
 set(PATHSPACE_ASSIGNMENTS_DIR "${PROJECT_SOURCE_DIR}/assignments" CACHE PATH "where the student's lesson folders are")
+# The handout has no reference: every lesson is the student's, whatever the command line says (a
+# lesson README's `-DPATHSPACE_STUDENT=3` works in the repository and in the handout alike, and
+# nothing sticks in the cache).
 if(NOT PATHSPACE_HAVE_SOLUTIONS AND NOT PATHSPACE_STUDENT STREQUAL "all")
-  message(FATAL_ERROR "There is no solutions/ folder here: every lesson must come from assignments/ (PATHSPACE_STUDENT=all).")
+  message(STATUS "pathspace: no solutions/ here (the student handout): every lesson is built from "
+                 "assignments/ (PATHSPACE_STUDENT='${PATHSPACE_STUDENT}' applies only where the reference is)")
+  set(PATHSPACE_STUDENT "all" CACHE STRING "lessons built from assignments/: '', 'all' or a list like '3;5'" FORCE)
 endif()
 
 # The lesson folders: lessons/NN-name.

@@ -17,4 +17,9 @@ git ls-files -z --cached --others --exclude-standard |
   xargs -0 -I{} cp --parents {} "$dest"/
 # The grader needs the reference; the handout has none.
 sed -i '/^# grade: the autograder/,$d' "$dest/tools/CMakeLists.txt"
+# The student's README (tools/handout/README.md) instead of the lecturer's, with the lessons
+# table of the lecturer's README (one source for both).
+lessons=$(sed -n '/^## Lessons$/,/^## [^L]/p' README.md | sed -n '/^| [0-9]/p')
+awk -v table="$lessons" '$0 == "@LESSONS@" { print table; next } { print }' tools/handout/README.md > "$dest/README.md"
+rm -rf "$dest/tools/handout"
 echo "handout: wrote $(find "$dest" -type f | wc -l) files to $dest (no solutions/)"
