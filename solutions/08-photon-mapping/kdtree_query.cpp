@@ -55,9 +55,9 @@ struct RadiusSearch {
         const size_t left = 2 * i, n = map.size();
         if (left <= n) {
             const float delta = x[ph.axis] - ph.p[ph.axis];
-            const size_t nearChild = delta > 0.0f ? left + 1 : left, farChild = delta > 0.0f ? left : left + 1;
-            if (nearChild <= n) locate(nearChild);
-            if (farChild <= n && delta * delta <= r2) locate(farChild);
+            const size_t sameSide = delta > 0.0f ? left + 1 : left, otherSide = delta > 0.0f ? left : left + 1;
+            if (sameSide <= n) locate(sameSide);
+            if (otherSide <= n && delta * delta <= r2) locate(otherSide);
         }
         ++visited;
         const float d2 = photonDistance2(ph.p, x);
