@@ -21,12 +21,12 @@ namespace ps {
 // One stored photon: 32 bytes. The direction it arrived from is kept in 2 x 16 bits
 // (octahedral encoding, error below 1e-4 rad).
 struct Photon {
-    Vec3 p;                  // where it landed
-    Color power;             // Delta Phi, its power in watts (Eq. 8.2)
+    Vec3 p;                    // where it landed
+    Color power;               // Delta Phi, its power in watts (Eq. 8.2)
     uint16_t dir[2] = {0, 0};  // wLight, unit, back towards where it came from (encodeDirection)
-    uint8_t axis = 0;        // the kd-tree's splitting axis at this node (0 x, 1 y, 2 z; Eq. 8.4)
+    uint8_t axis = 0;          // the kd-tree's splitting axis at this node (0 x, 1 y, 2 z; Eq. 8.4)
     uint8_t unused = 0;
-    Vec3 wLight() const;     // decodes dir
+    Vec3 wLight() const;  // decodes dir
     void setWLight(const Vec3& w);
 };
 
@@ -96,8 +96,8 @@ float filterKernel(Filter f, float d2, float r2, float coneK = kConeK);
 
 struct EstimateOptions {
     Filter filter = Filter::Box;
-    int k = 50;               // photons to gather (k-nearest), or 0: every photon within maxRadius
-    float maxRadius = 1.0f;   // the search radius (fixed radius when k == 0, else the largest)
+    int k = 50;              // photons to gather (k-nearest), or 0: every photon within maxRadius
+    float maxRadius = 1.0f;  // the search radius (fixed radius when k == 0, else the largest)
     float coneK = kConeK;
 };
 
@@ -129,8 +129,8 @@ void tracePhoton(const Scene& scene, Rng& rng, int maxDepth, MapKind kind, int e
 // Traces `emitted` photon paths (path i with taskRng(seed, iteration, i), in parallel tasks,
 // photons kept in path order) and builds their map (photon_map.cpp). Bit-identical for any
 // number of threads.
-PhotonMap tracePhotonMap(const Scene& scene, MapKind kind, int emitted, int maxDepth, uint64_t seed,
-                         uint32_t iteration, SampleStats& stats);
+PhotonMap tracePhotonMap(const Scene& scene, MapKind kind, int emitted, int maxDepth, uint64_t seed, uint32_t iteration,
+                         SampleStats& stats);
 
 // ---- the pm integrator (pm.cpp, Eq. 8.11) ----
 

@@ -44,11 +44,11 @@ struct PhotonMapper : Integrator {
                          SampleStats& stats) override {
         const PmOptions opt = options(scene);
         PhotonMaps maps;
-        maps.global = tracePhotonMap(scene, MapKind::Global, kGlobalPhotons, opt.maxDepth, seed ^ kGlobalSalt,
-                                     iteration, stats);
+        maps.global =
+            tracePhotonMap(scene, MapKind::Global, kGlobalPhotons, opt.maxDepth, seed ^ kGlobalSalt, iteration, stats);
         if (needsCausticMap(scene))
-            maps.caustic = tracePhotonMap(scene, MapKind::Caustic, kCausticPhotons, opt.maxDepth,
-                                          seed ^ kCausticSalt, iteration, stats);
+            maps.caustic = tracePhotonMap(scene, MapKind::Caustic, kCausticPhotons, opt.maxDepth, seed ^ kCausticSalt,
+                                          iteration, stats);
         renderPixelTasks(seed, iteration, out, stats, false, [&](int pixel, Rng& rng, Task&) {
             const Ray ray = scene.camera.generateRay(jitteredRaster(pixel, out.width, rng));
             return LiPhotonMap(scene, ray, rng, maps, opt);

@@ -26,13 +26,13 @@ std::vector<Seen> recordWalk(const ps::Scene& scene, ps::Rng& rng, int maxDepth,
     ps::lightWalk(
         scene, rng, maxDepth,
         [&](const ps::LightWalkVertex& v) {
-        Seen s;
-        s.v = v;
-        s.hasStart = v.start != nullptr;
-        if (v.start) s.start = *v.start;
-        s.v.start = nullptr;
-        seen.push_back(s);
-        return v.bounces != stopAt && seen.size() < 10000;
+            Seen s;
+            s.v = v;
+            s.hasStart = v.start != nullptr;
+            if (v.start) s.start = *v.start;
+            s.v.start = nullptr;
+            seen.push_back(s);
+            return v.bounces != stopAt && seen.size() < 10000;
         },
         survival);
     return seen;
@@ -62,7 +62,8 @@ bool closePoint(const Vec3& a, const Vec3& b) { return glm::length(a - b) <= 1e-
 // the calls as written (this compiler's order), inOrder = true draws the numbers left to right
 // into variables first; a walk is accepted if it matches either.
 std::string replay(const ps::Scene& scene, ps::Rng rng, int maxDepth, const std::vector<Seen>& seen, bool inOrder,
-                   ps::SurvivalFunction survival = ps::survivalProbability, const char* survivalName = "survivalProbability") {
+                   ps::SurvivalFunction survival = ps::survivalProbability,
+                   const char* survivalName = "survivalProbability") {
     std::ostringstream why;
     ps::LightPathStart start;
     if (inOrder) {
@@ -112,11 +113,11 @@ std::string replay(const ps::Scene& scene, ps::Rng rng, int maxDepth, const std:
         if (glm::length(v.wLight + ray.d) > 1e-6f)
             return text(why << "expected wLight = -ray.d = " << str(-ray.d) << ", got " << str(v.wLight));
         if (!closeColor(v.beta, beta))
-            return text(
-                why
-                << "expected the particle's power beta = " << str(beta) << " (start.beta times the adjoint weights, "
-                << "each survivor divided by q = " << survivalName << "(throughput, bounces), the throughput since the light "
-                << "being " << str(throughput) << "), got " << str(v.beta));
+            return text(why << "expected the particle's power beta = " << str(beta)
+                            << " (start.beta times the adjoint weights, "
+                            << "each survivor divided by q = " << survivalName
+                            << "(throughput, bounces), the throughput since the light "
+                            << "being " << str(throughput) << "), got " << str(v.beta));
         why.str("");
         if (k == maxDepth) continue;  // the loop's next round ends it
         ps::BSDFSample s;
@@ -254,11 +255,12 @@ TEST_CASE(
         const ps::Rng before = rng;
         const std::vector<Seen> seen = recordWalk(furnace.scene, rng, furnace.maxDepth, -1, survivalSeventy);
         std::string wrong = replay(furnace.scene, before, furnace.maxDepth, seen, false, survivalSeventy, "survival");
-        if (!wrong.empty() && replay(furnace.scene, before, furnace.maxDepth, seen, true, survivalSeventy, "survival").empty())
+        if (!wrong.empty() &&
+            replay(furnace.scene, before, furnace.maxDepth, seen, true, survivalSeventy, "survival").empty())
             wrong.clear();
-        CHECK_MESSAGE(wrong.empty(), furnace.name << ", lightWalk(..., survival) with survival = 0.7 at every bounce, light path "
-                                                  << i << ": " << wrong
-                                                  << " (q must come from the survival function passed in)");
+        CHECK_MESSAGE(wrong.empty(),
+                      furnace.name << ", lightWalk(..., survival) with survival = 0.7 at every bounce, light path " << i
+                                   << ": " << wrong << " (q must come from the survival function passed in)");
         if (!wrong.empty()) break;
     }
 }

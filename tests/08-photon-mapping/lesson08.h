@@ -35,7 +35,7 @@ using ps::fmt::str;
 //   radiance estimates of a linear irradiance, box, cone and Gaussian (t-tests)         -> 3
 //   the box filter's bias on a quadratic irradiance (t-test)                           -> 1
 //   pm against the path-traced Cornell box (a bias bound plus the noise at this level)  -> 1
-// m = 8; each runs at the Sidak level alpha' = 1 - (1 - a_L)^(1/8), where a_L is the lesson's
+// m = 8; each runs at the Sidak level alpha' = 1 - (1 - a_L)^(1/8) ~ 1.4e-4, where a_L is the lesson's
 // share of the whole course's 1 % (tests/support/alpha.h).
 constexpr int kStatisticalTests = 8;
 inline double alpha() { return ps::testalpha::perTest(kStatisticalTests); }
@@ -75,8 +75,8 @@ inline Photon photonAt(const Vec3& p) {
 inline std::vector<Photon> hardPhotonSet(uint64_t seed, int n = 10000) {
     ps::Rng rng(seed);
     std::vector<Photon> out;
-    const Vec3 centres[5] = {{0.2f, 0.2f, 0.2f}, {0.8f, 0.3f, 0.6f}, {0.5f, 0.9f, 0.1f}, {0.1f, 0.7f, 0.9f},
-                             {0.6f, 0.5f, 0.5f}};
+    const Vec3 centres[5] = {
+        {0.2f, 0.2f, 0.2f}, {0.8f, 0.3f, 0.6f}, {0.5f, 0.9f, 0.1f}, {0.1f, 0.7f, 0.9f}, {0.6f, 0.5f, 0.5f}};
     auto gauss = [&]() {
         const float u1 = std::max(rng.uniform(), 1e-7f), u2 = rng.uniform();
         return std::sqrt(-2.0f * std::log(u1)) * std::cos(2.0f * ps::kPi * u2);

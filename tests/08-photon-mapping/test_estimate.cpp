@@ -36,8 +36,7 @@ std::string kernelHint(ps::Filter f, double got, float coneK) {
     if (f == ps::Filter::Gaussian && near(1.6687))
         return " (the exponent is -beta d^2 / (2 r^2): with alpha = 0.918 the filter integrates to 1 only with "
                "-beta d^2 / r^2, Eq. 8.10)";
-    if (f == ps::Filter::Gaussian && near(ps::kPi * 0.34673))
-        return " (no 1 / r^2?)";
+    if (f == ps::Filter::Gaussian && near(ps::kPi * 0.34673)) return " (no 1 / r^2?)";
     return " (check the normalisation)";
 }
 
@@ -49,11 +48,11 @@ TEST_CASE("filters: box, cone and Gaussian kernels integrate to one over the dis
             for (float k : {1.0f, 1.1f, 2.0f}) {
                 if (f != ps::Filter::Cone && k != 1.1f) continue;
                 const double I = integrateKernel(f, r, k);
-                CHECK_MESSAGE(std::abs(I - 1.0) < 2e-3, ps::filterName(f)
-                                                            << " filter, r = " << r
-                                                            << (f == ps::Filter::Cone ? ", k = " + num(k) : std::string())
-                                                            << ": expected the kernel to integrate to 1 over the disc, got "
-                                                            << num(I) << kernelHint(f, I, k));
+                CHECK_MESSAGE(std::abs(I - 1.0) < 2e-3,
+                              ps::filterName(f)
+                                  << " filter, r = " << r << (f == ps::Filter::Cone ? ", k = " + num(k) : std::string())
+                                  << ": expected the kernel to integrate to 1 over the disc, got " << num(I)
+                                  << kernelHint(f, I, k));
             }
         }
         CHECK_MESSAGE(ps::filterKernel(f, 1.0001f, 1.0f, 1.1f) == 0.0f,
@@ -62,21 +61,27 @@ TEST_CASE("filters: box, cone and Gaussian kernels integrate to one over the dis
     // Shapes: the box is flat, the cone falls linearly to 1 - 1/k of its centre at d = r, the
     // Gaussian is alpha / r^2 at the centre and 0 at d = r.
     const float r2 = 4.0f;
-    CHECK_MESSAGE(ps::filterKernel(ps::Filter::Box, 0.0f, r2) == doctest::Approx(ps::filterKernel(ps::Filter::Box, 3.9f, r2)),
-                  "box filter: expected the same weight everywhere in the disc");
-    const float c0 = ps::filterKernel(ps::Filter::Cone, 0.0f, r2, 2.0f), c1 = ps::filterKernel(ps::Filter::Cone, 1.0f, r2, 2.0f),
+    CHECK_MESSAGE(
+        ps::filterKernel(ps::Filter::Box, 0.0f, r2) == doctest::Approx(ps::filterKernel(ps::Filter::Box, 3.9f, r2)),
+        "box filter: expected the same weight everywhere in the disc");
+    const float c0 = ps::filterKernel(ps::Filter::Cone, 0.0f, r2, 2.0f),
+                c1 = ps::filterKernel(ps::Filter::Cone, 1.0f, r2, 2.0f),
                 cr = ps::filterKernel(ps::Filter::Cone, r2, r2, 2.0f);
-    CHECK_MESSAGE((std::abs(c1 / c0 - 0.75f) < 1e-4f && std::abs(cr / c0 - 0.5f) < 1e-4f),
-                  "cone filter, k = 2, r = 2: expected weights proportional to 1 - d / (k r): 1, 0.75, 0.5 at d = 0, 1, 2, "
-                  "got ratios 1, "
-                      << num(c1 / c0) << ", " << num(cr / c0) << " (d is the distance, not its square)");
-    const float g0 = ps::filterKernel(ps::Filter::Gaussian, 0.0f, r2), gr = ps::filterKernel(ps::Filter::Gaussian, r2, r2);
+    CHECK_MESSAGE(
+        (std::abs(c1 / c0 - 0.75f) < 1e-4f && std::abs(cr / c0 - 0.5f) < 1e-4f),
+        "cone filter, k = 2, r = 2: expected weights proportional to 1 - d / (k r): 1, 0.75, 0.5 at d = 0, 1, 2, "
+        "got ratios 1, "
+            << num(c1 / c0) << ", " << num(cr / c0) << " (d is the distance, not its square)");
+    const float g0 = ps::filterKernel(ps::Filter::Gaussian, 0.0f, r2),
+                gr = ps::filterKernel(ps::Filter::Gaussian, r2, r2);
     CHECK_MESSAGE((std::abs(g0 - ps::kGaussAlpha / r2) < 1e-5f && std::abs(gr) < 1e-5f),
-                  "Gaussian filter, r = 2: expected alpha / r^2 = " << num(ps::kGaussAlpha / r2) << " at d = 0 and 0 at d = r, got "
-                                                                    << num(g0) << " and " << num(gr));
+                  "Gaussian filter, r = 2: expected alpha / r^2 = " << num(ps::kGaussAlpha / r2)
+                                                                    << " at d = 0 and 0 at d = r, got " << num(g0)
+                                                                    << " and " << num(gr));
 }
 
-TEST_CASE("radiance estimate: the k nearest photons, r the k-th distance, f from each photon's direction (Eq. 8.6) [2 pts]") {
+TEST_CASE(
+    "radiance estimate: the k nearest photons, r the k-th distance, f from each photon's direction (Eq. 8.6) [2 pts]") {
     // Photons around the origin of the plane z = 0 with powers and directions of their own (some
     // from below the plane: f = 0 there), a glossy Phong material; the estimate must be the sum
     // over the brute-force k nearest, with r^2 the k-th squared distance. A fixed-radius estimate
@@ -126,10 +131,11 @@ TEST_CASE("radiance estimate: the k nearest photons, r the k-th distance, f from
             }
             const Color got = ps::radianceEstimate(map, sp, glossy, wo, opt);
             const bool ok = glm::length(got - expected) <= 1e-4f * (glm::length(expected) + 1e-6f);
-            CHECK_MESSAGE(ok, ps::filterName(f) << " filter, " << (k ? "k = " + std::to_string(k) : std::string("fixed radius"))
-                                                << ", maxRadius 0.2, at " << str(sp.p) << ": expected "
-                                                << str(expected) << " (" << n << " photons, r^2 = " << num(r2)
-                                                << ", f(wo, photon.wLight()) * power * K), got " << str(got));
+            CHECK_MESSAGE(ok, ps::filterName(f)
+                                  << " filter, " << (k ? "k = " + std::to_string(k) : std::string("fixed radius"))
+                                  << ", maxRadius 0.2, at " << str(sp.p) << ": expected " << str(expected) << " (" << n
+                                  << " photons, r^2 = " << num(r2) << ", f(wo, photon.wLight()) * power * K), got "
+                                  << str(got));
         }
     }
     PhotonMap empty;
@@ -214,7 +220,8 @@ TEST_CASE("radiance estimate: unbiased on a linear irradiance with every filter 
         const ps::stats::TTestResult t = ps::stats::tTest(w, 1.0, alpha(), 0.01);
         std::string hint;
         if (std::abs(w.mean - ps::kPi) < 0.1) hint = " (a factor pi: the 1 / pi of 1 / (pi r^2) is missing)";
-        else if (std::abs(w.mean - 1.0 / ps::kPi) < 0.03) hint = " (a factor 1 / pi: f already has its 1 / pi, do not divide again)";
+        else if (std::abs(w.mean - 1.0 / ps::kPi) < 0.03)
+            hint = " (a factor 1 / pi: f already has its 1 / pi, do not divide again)";
         else if (w.mean < 0.05) hint = " (almost nothing: photons not found, or f = 0 for photons from above?)";
         CHECK_MESSAGE(t.passed, ps::filterName(f) << " filter, fixed radius 0.1, " << linear.name
                                                   << ": expected estimate / E = 1 on average (unbiased), got "
@@ -222,7 +229,8 @@ TEST_CASE("radiance estimate: unbiased on a linear irradiance with every filter 
     }
 }
 
-TEST_CASE("radiance estimate: the box filter's bias on a quadratic irradiance is (E_xx + E_yy) r^2 / 8 (Eq. 8.12, t-test) [2 pts]") {
+TEST_CASE(
+    "radiance estimate: the box filter's bias on a quadratic irradiance is (E_xx + E_yy) r^2 / 8 (Eq. 8.12, t-test) [2 pts]") {
     // E = 1 + 0.5 x^2 + 0.3 y^2 + 0.2 x y: E_xx + E_yy = 1.6, so with r = 0.3 every estimate is
     // 1.6 * 0.09 / 8 = 0.018 too high on average (the mean of E over the disc, Eq. 8.12).
     const Field quadratic{"E = 1 + 0.5 x^2 + 0.3 y^2 + 0.2 x y",
@@ -233,7 +241,7 @@ TEST_CASE("radiance estimate: the box filter's bias on a quadratic irradiance is
     const ps::stats::Welford w = sampleEstimates(quadratic, ps::Filter::Box, r, 60, 20000, ps::testseed::seed(826),
                                                  [](double est, double E) { return est - E; });
     const ps::stats::TTestResult t = ps::stats::tTest(w, bias, alpha(), 0.25);
-    CHECK_MESSAGE(t.passed, "box filter, fixed radius " << r << ", " << quadratic.name
-                                                        << ": expected estimate - E = (E_xx + E_yy) r^2 / 8 = " << num(bias)
-                                                        << " on average, got " << num(w.mean) << "\n  " << t.report);
+    CHECK_MESSAGE(t.passed, "box filter, fixed radius "
+                                << r << ", " << quadratic.name << ": expected estimate - E = (E_xx + E_yy) r^2 / 8 = "
+                                << num(bias) << " on average, got " << num(w.mean) << "\n  " << t.report);
 }

@@ -10,7 +10,10 @@ TEST_CASE("exercise: the box filter's bias on a quadratic irradiance (Eq. 8.E1) 
     struct Case {
         double gx, gy, a, b, c, r;
     };
-    const Case cases[] = {{0, 0, 1, 0, 0, 1}, {0, 0, 0, 1, 0, 2}, {3, -2, 0.5, 0.3, 0.2, 0.3}, {1, 1, -2, 5, 4, 0.7},
+    const Case cases[] = {{0, 0, 1, 0, 0, 1},
+                          {0, 0, 0, 1, 0, 2},
+                          {3, -2, 0.5, 0.3, 0.2, 0.3},
+                          {1, 1, -2, 5, 4, 0.7},
                           {0, 0, 0, 0, 7, 1.5}};
     for (const Case& c : cases) {
         const int nr = 400, nt = 64;

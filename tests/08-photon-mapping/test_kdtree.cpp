@@ -37,9 +37,9 @@ TEST_CASE("kd-tree: the left-balanced subtree size of n nodes (Eq. 8.4) [1 pt]")
             expected += top == 2;
         }
         const size_t got = ps::leftSubtreeSize(n);
-        CHECK_MESSAGE(got == expected, "leftSubtreeSize(" << n << "): expected " << expected
-                                                          << " (every level full but the last, packed to the left), got "
-                                                          << got);
+        CHECK_MESSAGE(got == expected, "leftSubtreeSize("
+                                           << n << "): expected " << expected
+                                           << " (every level full but the last, packed to the left), got " << got);
         if (got != expected) break;
     }
 }
@@ -87,9 +87,9 @@ TEST_CASE("kd-tree: every photon once, in heap order, split on the axis of large
             std::ostringstream why;
             if (a > 2) why << "node " << i << ": axis " << a << " is not 0, 1 or 2";
             else if (e[a] < largest)
-                why << "node " << i << " (" << all.size() << " photons below it): splits on axis " << a
-                    << " (extent " << num(e[a]) << "), expected the axis of largest extent (" << num(largest)
-                    << ", extents " << str(e) << ")";
+                why << "node " << i << " (" << all.size() << " photons below it): splits on axis " << a << " (extent "
+                    << num(e[a]) << "), expected the axis of largest extent (" << num(largest) << ", extents " << str(e)
+                    << ")";
             else {
                 for (size_t j : left)
                     if (map.nodes[j].p[a] > node.p[a]) {
@@ -143,8 +143,8 @@ TEST_CASE("kd-tree: the k nearest photons are the brute-force ones, a max-heap (
                 break;
             }
             if (f.d2 != ps::photonDistance2(map.nodes[f.node].p, x)) {
-                why << "node " << f.node << " with d2 = " << num(f.d2) << ", but its photon is at d2 = "
-                    << num(ps::photonDistance2(map.nodes[f.node].p, x));
+                why << "node " << f.node << " with d2 = " << num(f.d2)
+                    << ", but its photon is at d2 = " << num(ps::photonDistance2(map.nodes[f.node].p, x));
                 break;
             }
             got.push_back(f.d2);
@@ -162,8 +162,9 @@ TEST_CASE("kd-tree: the k nearest photons are the brute-force ones, a max-heap (
             if (!got.empty()) why << " with " << num(got.front()) << " .. " << num(got.back());
             size_t i = 0;
             while (i < got.size() && i < within.size() && got[i] == within[i]) ++i;
-            if (i < within.size()) why << " (the " << i + 1 << "-th nearest, d2 = " << num(within[i]) << ", missing or wrong"
-                                       << " : a subtree pruned that could hold a nearer photon?)";
+            if (i < within.size())
+                why << " (the " << i + 1 << "-th nearest, d2 = " << num(within[i]) << ", missing or wrong"
+                    << " : a subtree pruned that could hold a nearer photon?)";
         }
         if (why.str().empty() && !std::is_heap(found.begin(), found.end(), ps::nearerPhoton))
             why << "found is not a max-heap under nearerPhoton (found[0] must be the farthest)";
@@ -194,7 +195,7 @@ TEST_CASE("kd-tree: the radius search finds exactly the photons within the radiu
     ps::Rng rng(ps::testseed::seed(806));
     std::vector<ps::NearPhoton> found;
     for (int q = 0; q < 300; ++q) {
-        const Vec3 x = q % 3 == 0 ? map.nodes[1 + size_t(rng.uniform() * float(map.size())) % map.size()].p
+        const Vec3 x = q % 3 == 0   ? map.nodes[1 + size_t(rng.uniform() * float(map.size())) % map.size()].p
                        : q % 3 == 1 ? Vec3(0.04f * float(q % 25), 0.5f, 0.3f + 0.02f * float(q % 5))  // duplicates
                                     : uniform3(rng);
         const float r2 = (float[]){0.0f, 1e-4f, 1e-3f, 0.01f, 0.05f}[q % 5];
@@ -206,8 +207,9 @@ TEST_CASE("kd-tree: the radius search finds exactly the photons within the radiu
         std::sort(got.begin(), got.end());
         if (got != expected) {
             FAIL_CHECK("photonsInRadius(x = " << str(x) << ", r2 = " << num(r2) << ") on 10^4 photons: expected the "
-                                              << expected.size() << " photons with d2 <= r2 (brute force, each once), got "
-                                              << got.size() << (got.size() < expected.size() ? " (pruned too much?)" : ""));
+                                              << expected.size()
+                                              << " photons with d2 <= r2 (brute force, each once), got " << got.size()
+                                              << (got.size() < expected.size() ? " (pruned too much?)" : ""));
             break;
         }
     }
@@ -235,14 +237,16 @@ TEST_CASE("kd-tree: a search prunes, visiting far fewer nodes than a full scan (
     knn /= queries;
     radius /= queries;
     MESSAGE("visited nodes on average: k = 50: " << num(knn) << ", radius: " << num(radius));
-    CHECK_MESSAGE(knn <= 1500.0, "k = 50 nearest of 10^4 uniform photons: expected at most 1500 visited nodes on average, "
-                                 "got "
-                                     << num(knn)
-                                     << " (visit the far child only if the squared distance to the splitting plane is "
-                                        "<= the current bound, which shrinks to found[0].d2 once k are found)");
+    CHECK_MESSAGE(knn <= 1500.0,
+                  "k = 50 nearest of 10^4 uniform photons: expected at most 1500 visited nodes on average, "
+                  "got "
+                      << num(knn)
+                      << " (visit the far child only if the squared distance to the splitting plane is "
+                         "<= the current bound, which shrinks to found[0].d2 once k are found)");
     CHECK_MESSAGE(knn >= 50.0, "k = 50: a search must visit at least the 50 photons it returns, it says it visited "
                                    << num(knn) << " on average (return the number of nodes visited)");
-    CHECK_MESSAGE(radius <= 400.0, "radius search (about 20 photons within r) on 10^4 uniform photons: expected at most "
-                                   "400 visited nodes on average, got "
-                                       << num(radius) << " (visit the far child only if delta^2 <= r2)");
+    CHECK_MESSAGE(radius <= 400.0,
+                  "radius search (about 20 photons within r) on 10^4 uniform photons: expected at most "
+                  "400 visited nodes on average, got "
+                      << num(radius) << " (visit the far child only if delta^2 <= r2)");
 }

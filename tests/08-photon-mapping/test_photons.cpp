@@ -25,8 +25,8 @@ PhotonMap trace(const ps::Scene& scene, ps::MapKind kind, int emitted, int maxDe
 void checkCount(const std::string& what, double count, double n, double p) {
     const double mean = n * p, sd = std::sqrt(n * p * (1.0 - p));
     const double z = (count - mean) / sd;
-    CHECK_MESSAGE(std::abs(z) <= zCritical(), what << ": expected " << num(mean) << " photons on average (sd " << num(sd)
-                                                   << "), got " << count << " (z = " << num(z) << ", level "
+    CHECK_MESSAGE(std::abs(z) <= zCritical(), what << ": expected " << num(mean) << " photons on average (sd "
+                                                   << num(sd) << "), got " << count << " (z = " << num(z) << ", level "
                                                    << num(alpha()) << ")");
 }
 
@@ -61,9 +61,10 @@ TEST_CASE("photons: every stored photon carries Phi / N, on the floor, arriving 
             if (std::abs(ratio * N - 1.0) < 0.1 || std::abs(ratio - double(N)) < 0.1 * N)
                 hint = " (the power is not divided by N = emitted?)";
             else if (ratio < 1.0)
-                hint = " (power lost at a bounce: survive with q = the largest component of the throughput from the "
-                       "first bounce on, and let lightWalk divide by q; lesson 3's survivalProbability waits 3 "
-                       "bounces)";
+                hint =
+                    " (power lost at a bounce: survive with q = the largest component of the throughput from the "
+                    "first bounce on, and let lightWalk divide by q; lesson 3's survivalProbability waits 3 "
+                    "bounces)";
         }
         CHECK_MESSAGE(wrongPower == 0, name << " map: " << wrongPower << " of " << map.size()
                                             << " photons do not carry Phi / N = 4 pi I / N = " << num(expected)
@@ -88,11 +89,12 @@ TEST_CASE("photons: the caustic map holds the L S+ D paths, the global map every
     int outside = 0;
     for (size_t i = 1; i <= caustic.size(); ++i)
         outside += std::abs(caustic.nodes[i].p.x) > 1.5f + 1e-3f || std::abs(caustic.nodes[i].p.z) > 1.5f + 1e-3f;
-    CHECK_MESSAGE(outside == 0, "caustic map: " << outside
-                                                << " photons outside the mirror's footprint |x|, |z| <= 1.5: only photons "
-                                                   "that came from the light through specular bounces alone (L S+ D)");
-    checkCount("caustic map, " + std::to_string(N) + " emitted (rho_m Omega_m / 4 pi = " +
-                   num(kMirrorAlbedo * omegaM / (4.0 * ps::kPi)) + ")",
+    CHECK_MESSAGE(outside == 0,
+                  "caustic map: " << outside
+                                  << " photons outside the mirror's footprint |x|, |z| <= 1.5: only photons "
+                                     "that came from the light through specular bounces alone (L S+ D)");
+    checkCount("caustic map, " + std::to_string(N) +
+                   " emitted (rho_m Omega_m / 4 pi = " + num(kMirrorAlbedo * omegaM / (4.0 * ps::kPi)) + ")",
                double(caustic.size()), N, kMirrorAlbedo * omegaM / (4.0 * ps::kPi));
     // Global map at maxdepth 2: the floor's direct hits and the mirror's caustic hits, each path
     // at most one photon (a bounce off the floor reaches the mirror at the second bounce, where
@@ -116,9 +118,8 @@ TEST_CASE("photons: the power stored on the floor is the irradiance integral I *
     const double p = omegaF / (4.0 * ps::kPi), perPhoton = 4.0 * ps::kPi * kIntensity / N;
     const double mean = kIntensity * omegaF, sd = perPhoton * std::sqrt(N * p * (1.0 - p));
     const double z = (total - mean) / sd;
-    CHECK_MESSAGE(std::abs(z) <= zCritical(),
-                  "sum of the photons' power on the floor (maxdepth 1, " << N << " emitted): expected the flux I Omega_f = "
-                                                                           << num(mean) << " W (sd " << num(sd)
-                                                                           << "), got " << num(total)
-                                                                           << " W (z = " << num(z) << ")");
+    CHECK_MESSAGE(std::abs(z) <= zCritical(), "sum of the photons' power on the floor (maxdepth 1, "
+                                                  << N << " emitted): expected the flux I Omega_f = " << num(mean)
+                                                  << " W (sd " << num(sd) << "), got " << num(total)
+                                                  << " W (z = " << num(z) << ")");
 }

@@ -15,7 +15,8 @@
 
 using namespace lesson08;
 
-TEST_CASE("pm: the photon-mapped Cornell box agrees with the path-traced reference within the stated bias bound (Eq. 8.11) [3 pts]") {
+TEST_CASE(
+    "pm: the photon-mapped Cornell box agrees with the path-traced reference within the stated bias bound (Eq. 8.11) [3 pts]") {
     const ps::Scene scene = loadSceneAt("scenes/cornell-box.scene", 32, 32);
     const ps::Image ref = ps::readPFM(sourcePath("tests/03-path-tracing/data/cornell-box-32.pfm"));
     const ps::Image refVar = ps::readPFM(sourcePath("tests/03-path-tracing/data/cornell-box-32-variance.pfm"));
@@ -47,8 +48,8 @@ TEST_CASE("pm: the photon-mapped Cornell box agrees with the path-traced referen
             mean[region].add(s / n);
         }
     }
-    CHECK_MESSAGE(stats.bad() == 0, "pm on the Cornell box: expected 0 NaN and 0 Inf samples, got " << stats.nan << " NaN and "
-                                                                                                    << stats.inf << " Inf");
+    CHECK_MESSAGE(stats.bad() == 0, "pm on the Cornell box: expected 0 NaN and 0 Inf samples, got "
+                                        << stats.nan << " NaN and " << stats.inf << " Inf");
     for (int region = 0; region < 5; ++region) {
         double r = 0.0, rv = 0.0;
         int n = 0;
@@ -69,12 +70,14 @@ TEST_CASE("pm: the photon-mapped Cornell box agrees with the path-traced referen
         std::string hint;
         const double ratio = mean[region].mean / r;
         if (ratio < 0.85) hint = " (too dark: direct light, final gathering or the global map's estimate missing?)";
-        else if (ratio > 1.15) hint = " (too bright: light counted twice, e.g. emission at the gather point, or a "
-                                      "missing 1 / pi in the estimate?)";
+        else if (ratio > 1.15)
+            hint =
+                " (too bright: light counted twice, e.g. emission at the gather point, or a "
+                "missing 1 / pi in the estimate?)";
         CHECK_MESSAGE(std::abs(diff) <= bound + noise,
-                      "pm, " << iterations << " iterations, " << names[region] << ": expected the mean "
-                             << num(r) << " of the path-traced reference within the bias bound " << num(bound) << " ("
-                             << (region == 0 ? 3 : 6) << " %) + noise " << num(noise) << ", got " << num(mean[region].mean)
-                             << " (ratio " << num(ratio) << ")" << hint);
+                      "pm, " << iterations << " iterations, " << names[region] << ": expected the mean " << num(r)
+                             << " of the path-traced reference within the bias bound " << num(bound) << " ("
+                             << (region == 0 ? 3 : 6) << " %) + noise " << num(noise) << ", got "
+                             << num(mean[region].mean) << " (ratio " << num(ratio) << ")" << hint);
     }
 }
