@@ -1,6 +1,7 @@
 // Lesson 8 — the photon mapper the render command knows as `pm` (plumbing: read it, nothing to
-// write here). Every iteration traces a new global map (kGlobalPhotons photon paths) and, when the
-// scene has a specular surface, a new caustic map (kCausticPhotons), with seeds of their own
+// write here). Every iteration traces a new global map (photonsPerMap: as many photon paths as
+// pixels, at least kMinPhotons) and, when the scene has a specular surface, a new caustic map (as
+// many), with seeds of their own
 // derived from the render's seed and the iteration (tracePhotonMap: the framework's task loop, so
 // the maps do not depend on the number of threads), then one camera ray through a jittered point
 // of every pixel, estimated by LiPhotonMap (Eq. 8.11). The iterations are independent estimates
@@ -15,8 +16,10 @@ namespace ps {
 
 namespace {
 
-constexpr int kGlobalPhotons = 20000;   // photon paths emitted per iteration for the global map
-constexpr int kCausticPhotons = 20000;  // and for the caustic map
+// Photon paths emitted per iteration for each map: as many as the image has pixels (as lesson 5's
+// light tracer traces light paths), at least kMinPhotons.
+constexpr int kMinPhotons = 8192;
+int photonsPerMap(const Image& out) { return std::max(kMinPhotons, out.width * out.height); }
 constexpr uint64_t kGlobalSalt = 0x8A1F0C3D5B7E9246ull, kCausticSalt = 0x3C6EF372FE94F82Bull;
 
 bool needsCausticMap(const Scene& scene) { return !scene.settings.prune || scene.caps.hasDeltaBSDF(); }
@@ -44,11 +47,11 @@ struct PhotonMapper : Integrator {
                          SampleStats& stats) override {
         const PmOptions opt = options(scene);
         PhotonMaps maps;
-        maps.global =
-            tracePhotonMap(scene, MapKind::Global, kGlobalPhotons, opt.maxDepth, seed ^ kGlobalSalt, iteration, stats);
+        maps.global = tracePhotonMap(scene, MapKind::Global, photonsPerMap(out), opt.maxDepth, seed ^ kGlobalSalt,
+                                     iteration, stats);
         if (needsCausticMap(scene))
-            maps.caustic = tracePhotonMap(scene, MapKind::Caustic, kCausticPhotons, opt.maxDepth, seed ^ kCausticSalt,
-                                          iteration, stats);
+            maps.caustic = tracePhotonMap(scene, MapKind::Caustic, photonsPerMap(out), opt.maxDepth,
+                                          seed ^ kCausticSalt, iteration, stats);
         renderPixelTasks(seed, iteration, out, stats, false, [&](int pixel, Rng& rng, Task&) {
             const Ray ray = scene.camera.generateRay(jitteredRaster(pixel, out.width, rng));
             return LiPhotonMap(scene, ray, rng, maps, opt);

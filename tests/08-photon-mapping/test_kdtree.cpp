@@ -127,7 +127,8 @@ TEST_CASE("kd-tree: the k nearest photons are the brute-force ones, a max-heap (
                  : q % 4 == 1 ? Vec3(0.2f, 0.2f, 0.2f) + 0.02f * (uniform3(rng) - 0.5f)
                  : q % 4 == 2 ? onLayer(rng)
                               : 1.2f * uniform3(rng) - 0.1f;
-        const int k = (int[]){1, 8, 50, 200, 500}[q % 5];
+        const int ks[5] = {1, 8, 50, 200, 500};
+        const int k = ks[q % 5];
         const float maxD2 = q % 3 == 0 ? 0.01f : 1e30f;
         const int visited = ps::nearestPhotons(map, x, k, maxD2, found);
         std::vector<float> d = allDistances(map, x), within;
@@ -198,7 +199,8 @@ TEST_CASE("kd-tree: the radius search finds exactly the photons within the radiu
         const Vec3 x = q % 3 == 0   ? map.nodes[1 + size_t(rng.uniform() * float(map.size())) % map.size()].p
                        : q % 3 == 1 ? Vec3(0.04f * float(q % 25), 0.5f, 0.3f + 0.02f * float(q % 5))  // duplicates
                                     : uniform3(rng);
-        const float r2 = (float[]){0.0f, 1e-4f, 1e-3f, 0.01f, 0.05f}[q % 5];
+        const float radii2[5] = {0.0f, 1e-4f, 1e-3f, 0.01f, 0.05f};
+        const float r2 = radii2[q % 5];
         ps::photonsInRadius(map, x, r2, found);
         std::vector<uint32_t> expected, got;
         for (size_t i = 1; i <= map.size(); ++i)
