@@ -6,7 +6,7 @@
 
 namespace ps {
 
-void lightWalk(const Scene& scene, Rng& rng, int maxDepth, const LightWalkVisitor& visit) {
+void lightWalk(const Scene& scene, Rng& rng, int maxDepth, const LightWalkVisitor& visit, SurvivalFunction survival) {
     //! TODO(05) The particle's walk (Eq. 5.1, 5.2, 5.6-5.8): start it with startLightPath
     //!          (rng.uniform(), rng.uniform2(), rng.uniform2()); nothing if not valid. Visit y0
     //!          (bounces 0), then for bounces = 1 .. maxDepth: intersect (a miss ends the walk,
@@ -14,12 +14,13 @@ void lightWalk(const Scene& scene, Rng& rng, int maxDepth, const LightWalkVisito
     //!          sampleAdjointBSDF(material, n, wLight, rng.uniform2(), rng.uniform(), s) (end if
     //!          it fails or beta turns black) and play Russian roulette as in lesson 3 (Eq. 3.5),
     //!          its number drawn only when q < 1. A LightWalkVertex's fields say what it holds.
-    //!          Pitfalls: q = survivalProbability(throughput, bounces) follows the product of the
+    //!          Pitfalls: q = survival(throughput, bounces) (the function passed in: lesson 3's
+    //!          survivalProbability unless the caller gives another) follows the product of the
     //!          scattering weights alone (start at 1, not at start.beta, whose scale is the
     //!          light's power); a survivor divides both beta and throughput by q. The tests
     //!          replay the random numbers: draw them inside the calls as written (or left to
     //!          right into variables).
-    //! STUB (void)scene; (void)rng; (void)maxDepth; (void)visit;
+    //! STUB (void)scene; (void)rng; (void)maxDepth; (void)visit; (void)survival;
     //! STUB (void)PS_TODO("lesson 05: lightWalk", 0);
     //! BEGIN
     const LightPathStart start = startLightPath(scene, rng.uniform(), rng.uniform2(), rng.uniform2());
@@ -46,7 +47,7 @@ void lightWalk(const Scene& scene, Rng& rng, int maxDepth, const LightWalkVisito
         beta *= s.weight;
         throughput *= s.weight;
         if (isBlack(beta)) break;
-        const float q = survivalProbability(throughput, bounces);
+        const float q = survival(throughput, bounces);
         if (q < 1.0f) {
             if (rng.uniform() >= q) break;
             beta /= q;

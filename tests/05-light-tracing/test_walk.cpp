@@ -20,19 +20,26 @@ struct Seen {
     ps::LightPathStart start;  // a copy of *v.start (the walk's own dies with it)
 };
 
-std::vector<Seen> recordWalk(const ps::Scene& scene, ps::Rng& rng, int maxDepth, int stopAt = -1) {
+std::vector<Seen> recordWalk(const ps::Scene& scene, ps::Rng& rng, int maxDepth, int stopAt = -1,
+                             ps::SurvivalFunction survival = ps::survivalProbability) {
     std::vector<Seen> seen;
-    ps::lightWalk(scene, rng, maxDepth, [&](const ps::LightWalkVertex& v) {
-        Seen s;
-        s.v = v;
-        s.hasStart = v.start != nullptr;
-        if (v.start) s.start = *v.start;
-        s.v.start = nullptr;
-        seen.push_back(s);
-        return v.bounces != stopAt && seen.size() < 10000;
-    });
+    ps::lightWalk(
+        scene, rng, maxDepth,
+        [&](const ps::LightWalkVertex& v) {
+            Seen s;
+            s.v = v;
+            s.hasStart = v.start != nullptr;
+            if (v.start) s.start = *v.start;
+            s.v.start = nullptr;
+            seen.push_back(s);
+            return v.bounces != stopAt && seen.size() < 10000;
+        },
+        survival);
     return seen;
 }
+
+// A survival function other than lesson 3's: 0.7 at every bounce.
+float survivalSeventy(const Color&, int) { return 0.7f; }
 
 std::string bounceList(const std::vector<Seen>& seen) {
     std::string s;
@@ -54,7 +61,9 @@ bool closePoint(const Vec3& a, const Vec3& b) { return glm::length(a - b) <= 1e-
 // rng.uniform2()) may draw its numbers in another order than written. inOrder = false replays
 // the calls as written (this compiler's order), inOrder = true draws the numbers left to right
 // into variables first; a walk is accepted if it matches either.
-std::string replay(const ps::Scene& scene, ps::Rng rng, int maxDepth, const std::vector<Seen>& seen, bool inOrder) {
+std::string replay(const ps::Scene& scene, ps::Rng rng, int maxDepth, const std::vector<Seen>& seen, bool inOrder,
+                   ps::SurvivalFunction survival = ps::survivalProbability,
+                   const char* survivalName = "survivalProbability") {
     std::ostringstream why;
     ps::LightPathStart start;
     if (inOrder) {
@@ -104,11 +113,11 @@ std::string replay(const ps::Scene& scene, ps::Rng rng, int maxDepth, const std:
         if (glm::length(v.wLight + ray.d) > 1e-6f)
             return text(why << "expected wLight = -ray.d = " << str(-ray.d) << ", got " << str(v.wLight));
         if (!closeColor(v.beta, beta))
-            return text(
-                why
-                << "expected the particle's power beta = " << str(beta) << " (start.beta times the adjoint weights, "
-                << "each survivor divided by q = survivalProbability(throughput, bounces), the throughput since the light "
-                << "being " << str(throughput) << "), got " << str(v.beta));
+            return text(why << "expected the particle's power beta = " << str(beta)
+                            << " (start.beta times the adjoint weights, "
+                            << "each survivor divided by q = " << survivalName
+                            << "(throughput, bounces), the throughput since the light "
+                            << "being " << str(throughput) << "), got " << str(v.beta));
         why.str("");
         if (k == maxDepth) continue;  // the loop's next round ends it
         ps::BSDFSample s;
@@ -125,7 +134,7 @@ std::string replay(const ps::Scene& scene, ps::Rng rng, int maxDepth, const std:
         else {
             beta *= s.weight;
             throughput *= s.weight;
-            const float q = ps::survivalProbability(throughput, k);
+            const float q = survival(throughput, k);
             if (ps::isBlack(beta)) end = "its power is black";
             else if (q < 1.0f && rng.uniform() >= q) end = "Russian roulette ended it (q = " + num(q) + ")";
             else if (q < 1.0f) {
@@ -237,5 +246,21 @@ TEST_CASE(
         CHECK_MESSAGE(checked == 200, c.name << ": " << checked << " of 200 walks as expected");
         if (c.maxDepth == 60)
             CHECK_MESSAGE(long_ > 20, "test setup: the furnace should give walks long enough for the roulette");
+    }
+    // The walk plays its roulette with the survival function it is given (lesson 8's photons
+    // pass their own): here q = 0.7 at every bounce, on the coloured furnace.
+    const Case& furnace = cases[0];
+    for (int i = 0; i < 100; ++i) {
+        ps::Rng rng = ps::taskRng(ps::testseed::seed(594), 0, uint32_t(i));
+        const ps::Rng before = rng;
+        const std::vector<Seen> seen = recordWalk(furnace.scene, rng, furnace.maxDepth, -1, survivalSeventy);
+        std::string wrong = replay(furnace.scene, before, furnace.maxDepth, seen, false, survivalSeventy, "survival");
+        if (!wrong.empty() &&
+            replay(furnace.scene, before, furnace.maxDepth, seen, true, survivalSeventy, "survival").empty())
+            wrong.clear();
+        CHECK_MESSAGE(wrong.empty(),
+                      furnace.name << ", lightWalk(..., survival) with survival = 0.7 at every bounce, light path " << i
+                                   << ": " << wrong << " (q must come from the survival function passed in)");
+        if (!wrong.empty()) break;
     }
 }

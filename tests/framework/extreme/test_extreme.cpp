@@ -367,6 +367,10 @@ TEST_CASE(
     const auto black = [](const std::string& algo) {
         return algo == "pt-bsdf" || algo == "direct-bsdf" || algo == "path-s0";
     };
+    // Photon mapping (lesson 8) is consistent, not unbiased: its expectation differs from pt's by
+    // the density estimate's blur (lesson 8, Eq. 8.12), so it is not t-tested here, only checked
+    // for a finite, non-black image (lesson 8's graded test bounds its bias on the Cornell box).
+    const auto biased = [](const std::string& algo) { return algo == "pm"; };
     struct Estimate {
         stats::Welford w;
         uint64_t bad = 0;
@@ -385,7 +389,7 @@ TEST_CASE(
     };
     std::vector<std::string> compared;
     for (const std::string& algo : transportAlgorithms())
-        if (!black(algo) && algo != reference(algo)) compared.push_back(algo);
+        if (!black(algo) && !biased(algo) && algo != reference(algo)) compared.push_back(algo);
     const double alpha = stats::sidak(0.01, int(compared.size()));
     std::map<std::string, Estimate> refs;
     for (const std::string& algo : allAlgorithms()) {
@@ -399,6 +403,12 @@ TEST_CASE(
                 CHECK_MESSAGE(where.empty(),
                               algo << " cannot reach a point light, expected a black image, got pixel " << where);
             }
+            continue;
+        }
+        if (biased(algo)) {
+            const Result r = renderWith(scene, algo, 2);
+            CHECK_MESSAGE(r.stats.bad() == 0, algo << ": " << r.stats.bad() << " NaN/Inf samples");
+            CHECK_MESSAGE(!firstNonBlack(r.mean).empty(), algo << ": a black image");
             continue;
         }
         const std::string refName = reference(algo);

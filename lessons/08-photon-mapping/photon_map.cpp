@@ -1,0 +1,77 @@
+// Lesson 8 — the photon's storage and the photon pass (plumbing: read it, nothing to write
+// here): the octahedral direction encoding of Photon, the filters' names, and tracePhotonMap,
+// which traces a map's photon paths in the framework's parallel task loop (framework/tasks.h):
+// path i draws from taskRng(seed, iteration, i), each task keeps its photons in its own list, and
+// the lists are joined in task order, so the map does not depend on the number of threads.
+#include <cmath>
+#include "08-photon-mapping/photonmap.h"
+#include "tasks.h"
+
+namespace ps {
+
+namespace {
+float signNotZero(float v) { return v >= 0.0f ? 1.0f : -1.0f; }
+uint16_t quantize(float v) {  // [-1, 1] -> [0, 65535]
+    return static_cast<uint16_t>(std::lround((std::clamp(v, -1.0f, 1.0f) * 0.5f + 0.5f) * 65535.0f));
+}
+float dequantize(uint16_t q) { return float(q) / 65535.0f * 2.0f - 1.0f; }
+}  // namespace
+
+// Octahedral encoding: w projected onto the octahedron |x| + |y| + |z| = 1, the lower half folded
+// over the upper one, the two coordinates in 16 bits each.
+void Photon::setWLight(const Vec3& w) {
+    const float l1 = std::abs(w.x) + std::abs(w.y) + std::abs(w.z);
+    float x = l1 > 0.0f ? w.x / l1 : 0.0f, y = l1 > 0.0f ? w.y / l1 : 0.0f;
+    if (w.z < 0.0f) {
+        const float fx = (1.0f - std::abs(y)) * signNotZero(x), fy = (1.0f - std::abs(x)) * signNotZero(y);
+        x = fx;
+        y = fy;
+    }
+    dir[0] = quantize(x);
+    dir[1] = quantize(y);
+}
+
+Vec3 Photon::wLight() const {
+    float x = dequantize(dir[0]), y = dequantize(dir[1]);
+    const float z = 1.0f - std::abs(x) - std::abs(y);
+    if (z < 0.0f) {
+        const float fx = (1.0f - std::abs(y)) * signNotZero(x), fy = (1.0f - std::abs(x)) * signNotZero(y);
+        x = fx;
+        y = fy;
+    }
+    return glm::normalize(Vec3(x, y, z));
+}
+
+static_assert(sizeof(Photon) <= 32, "a photon must fit in 32 bytes");
+
+const char* filterName(Filter f) {
+    switch (f) {
+    case Filter::Box: return "box";
+    case Filter::Cone: return "cone";
+    case Filter::Gaussian: return "Gaussian";
+    }
+    return "?";
+}
+
+PhotonMap tracePhotonMap(const Scene& scene, MapKind kind, int emitted, int maxDepth, uint64_t seed, uint32_t iteration,
+                         SampleStats& stats) {
+    PhotonMap map;
+    map.emitted = emitted;
+    if (emitted <= 0) return map;
+    std::vector<std::vector<Photon>> perTask(size_t(taskCount(emitted)));
+    runTasks(emitted, seed, iteration, nullptr, 0.0f, stats,
+             [&](int, Rng& rng, Task& task) { tracePhoton(scene, rng, maxDepth, kind, emitted, perTask[task.index]); });
+    std::vector<Photon> photons;
+    size_t n = 0;
+    for (const auto& list : perTask) n += list.size();
+    photons.reserve(n);
+    // A photon whose power is NaN or Inf is counted (as a sample would be) and not stored.
+    for (const auto& list : perTask)
+        for (const Photon& ph : list)
+            if (isFinite(ph.power)) photons.push_back(ph);
+            else checkSample(ph.power, stats);
+    buildPhotonMap(std::move(photons), map);
+    return map;
+}
+
+}  // namespace ps

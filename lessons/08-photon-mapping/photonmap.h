@@ -1,0 +1,157 @@
+// Lesson 8's photon mapping (Jensen's two-pass method): photons traced from the lights on
+// lesson 5's light walk with a Russian roulette that keeps every photon's power at Phi / N
+// (Eq. 8.1-8.3), stored at non-specular hits in a caustic map (paths L S+ D) and a global map;
+// each map is a left-balanced kd-tree kept in one array in heap order (Eq. 8.4), searched for
+// the k nearest photons with a bounded max-heap or for every photon within a radius (Eq. 8.5);
+// the radiance leaving a surface point is a density estimate over those photons with the box,
+// cone or Gaussian filter (Eq. 8.6-8.10); the `pm` integrator adds direct light (next-event
+// estimation), caustics from the caustic map and indirect light by final gathering into the
+// global map (Eq. 8.11). Implemented in solutions/08-photon-mapping/*.cpp (reference) or
+// assignments/08-photon-mapping/*.cpp (yours); lessons/08-photon-mapping/README.md derives every
+// formula (Eq. 8.1-8.12).
+#pragma once
+#include <cstdint>
+#include <vector>
+#include "05-light-tracing/lighttracer.h"
+
+namespace ps {
+
+// ---- the photon (framework of this lesson: photon_map.cpp) ----
+
+// One stored photon: 32 bytes. The direction it arrived from is kept in 2 x 16 bits
+// (octahedral encoding, error below 1e-4 rad).
+struct Photon {
+    Vec3 p;                    // where it landed
+    Color power;               // Delta Phi, its power in watts (Eq. 8.2)
+    uint16_t dir[2] = {0, 0};  // wLight, unit, back towards where it came from (encodeDirection)
+    uint8_t axis = 0;          // the kd-tree's splitting axis at this node (0 x, 1 y, 2 z; Eq. 8.4)
+    uint8_t unused = 0;
+    Vec3 wLight() const;  // decodes dir
+    void setWLight(const Vec3& w);
+};
+
+// A photon map: the kd-tree of Eq. 8.4 in one array in heap order. nodes[0] is unused; the
+// root is nodes[1]; the children of node i are nodes[2i] and nodes[2i + 1] when those indices
+// are <= size(); no pointers. A left-balanced tree of n photons fills nodes[1 .. n] exactly.
+struct PhotonMap {
+    std::vector<Photon> nodes;
+    int emitted = 0;  // N, the photons emitted to make this map (their power is Phi / N)
+    size_t size() const { return nodes.empty() ? 0 : nodes.size() - 1; }
+};
+
+// ---- the kd-tree (kdtree.cpp, Eq. 8.4) ----
+
+// The number of nodes in the left subtree of a left-balanced binary tree of n >= 1 nodes
+// (every level full but the last, whose nodes are packed to the left).
+size_t leftSubtreeSize(size_t n);
+
+// Builds the left-balanced kd-tree of the photons (any order) in O(n log n): each node splits
+// its photons on the axis of largest extent of their bounding box, at the median that makes its
+// left subtree leftSubtreeSize(n) photons (std::nth_element), the median photon goes to the node
+// (axis set), those with a smaller or equal coordinate to its left subtree (node 2i), the rest to
+// its right (2i + 1). Fills map.nodes (size n + 1); map.emitted is left as it is.
+void buildPhotonMap(std::vector<Photon> photons, PhotonMap& map);
+
+// ---- queries (kdtree_query.cpp, Eq. 8.5) ----
+
+// A photon found by a query: its node index in map.nodes and its squared distance to the query
+// point, |p - x|^2 computed as photonDistance2 does.
+struct NearPhoton {
+    uint32_t node = 0;
+    float d2 = 0.0f;
+};
+inline float photonDistance2(const Vec3& p, const Vec3& x) { return glm::dot(p - x, p - x); }
+// Orders a max-heap of NearPhoton by d2 (std::push_heap / std::pop_heap with this comparison:
+// the farthest photon on top, at found[0]).
+inline bool nearerPhoton(const NearPhoton& a, const NearPhoton& b) { return a.d2 < b.d2; }
+
+// The k nearest photons to x with d2 <= maxD2 (Eq. 8.5): found is cleared, then holds
+// min(k, number within maxD2) photons as a max-heap under nearerPhoton (found[0] the farthest).
+// Ties (equal distances) may be broken either way. The search descends first into the child on
+// x's side of the splitting plane and visits the other child only if the squared distance from x
+// to the plane is <= the current bound (maxD2 until k photons are found, then found[0].d2).
+// Returns the number of nodes visited (whose photon's distance was computed).
+int nearestPhotons(const PhotonMap& map, const Vec3& x, int k, float maxD2, std::vector<NearPhoton>& found);
+
+// Every photon with d2 <= r2 (any order): found is cleared first. Same pruning (a subtree is
+// visited only if the squared distance to its splitting plane is <= r2). Returns the number of
+// nodes visited.
+int photonsInRadius(const PhotonMap& map, const Vec3& x, float r2, std::vector<NearPhoton>& found);
+
+// ---- filters (filters.cpp, Eq. 8.7-8.10) ----
+
+enum class Filter { Box, Cone, Gaussian };
+const char* filterName(Filter f);
+// Jensen's constants: the cone's slope k (>= 1) and the Gaussian's alpha and beta (Eq. 8.10).
+constexpr float kConeK = 1.1f;
+constexpr float kGaussAlpha = 0.918f, kGaussBeta = 1.953f;
+
+// The filter kernel K(d) of Eq. 8.7-8.10 for a photon at squared distance d2 <= r2 from the
+// query point: box 1 / (pi r^2), cone (1 - d / (k r)) / ((1 - 2 / (3k)) pi r^2), Gaussian
+// alpha [1 - (1 - e^(-beta d^2 / r^2)) / (1 - e^(-beta))] / r^2; each integrates to 1 over the
+// disc of radius r (0 for d2 > r2).
+float filterKernel(Filter f, float d2, float r2, float coneK = kConeK);
+
+// ---- the radiance estimate (estimate.cpp, Eq. 8.6) ----
+
+struct EstimateOptions {
+    Filter filter = Filter::Box;
+    int k = 50;              // photons to gather (k-nearest), or 0: every photon within maxRadius
+    float maxRadius = 1.0f;  // the search radius (fixed radius when k == 0, else the largest)
+    float coneK = kConeK;
+};
+
+// The radiance leaving sp towards wo (Eq. 8.6): L = sum over the photons found of
+// f(wo, photon.wLight) DeltaPhi K(d), with the material's evalBSDF (a photon arriving from the
+// other side of a surface that does not transmit gets f = 0) and K = filterKernel with r^2 the
+// largest d2 found when k photons were found (k-nearest), else maxRadius^2. No photon: black.
+Color radianceEstimate(const PhotonMap& map, const SurfacePoint& sp, const Material& m, const Vec3& wo,
+                       const EstimateOptions& opt);
+
+// ---- photon tracing (photon_tracing.cpp, Eq. 8.1-8.3) ----
+
+// Russian roulette for photons (Eq. 8.3): the particle survives with q = the largest component of
+// its throughput since the light (after the bounce's weight), at most 1, from the first bounce
+// on. Because the throughput is divided by q, its largest component stays 1: every stored
+// photon carries Phi / N (for grey surfaces exactly).
+float photonSurvival(const Color& throughput, int bounces);
+
+enum class MapKind { Caustic, Global };
+
+// One photon path (Eq. 8.1-8.3): lesson 5's lightWalk with photonSurvival; at every vertex with
+// bounces >= 1 on a non-specular material, a photon (position, power = the particle's beta / N
+// with N = emitted, wLight). Global map: every such vertex. Caustic map: only a vertex reached
+// from the light through specular bounces alone (L S+ D: bounces >= 2, every earlier surface
+// specular); the walk ends there, and at the first non-specular surface in any case. Appends to
+// out.
+void tracePhoton(const Scene& scene, Rng& rng, int maxDepth, MapKind kind, int emitted, std::vector<Photon>& out);
+
+// Traces `emitted` photon paths (path i with taskRng(seed, iteration, i), in parallel tasks,
+// photons kept in path order) and builds their map (photon_map.cpp). Bit-identical for any
+// number of threads.
+PhotonMap tracePhotonMap(const Scene& scene, MapKind kind, int emitted, int maxDepth, uint64_t seed, uint32_t iteration,
+                         SampleStats& stats);
+
+// ---- the pm integrator (pm.cpp, Eq. 8.11) ----
+
+struct PhotonMaps {
+    PhotonMap caustic, global;
+};
+
+struct PmOptions {
+    EstimateOptions causticEstimate;  // the caustic map's (sharp: few photons, small radius)
+    EstimateOptions globalEstimate;   // the global map's, looked up at the final gather's hits
+    int maxDepth = 8;
+};
+
+// Radiance along a camera ray (Eq. 8.11): lesson 3's cameraWalk; emission where the walk sees it
+// directly or through specular bounces alone; specular surfaces are followed (the walk goes on);
+// at the first non-specular surface x: direct light by next-event estimation (lesson 2's
+// sampleDirectLight), caustics from the caustic map (radianceEstimate), and the indirect light by
+// final gathering: one BSDF sample from x, followed through specular surfaces to a non-specular
+// surface y, where the global map's radianceEstimate towards x is the radiance that arrives
+// (emission met on the way is left out: next-event estimation and the caustic map have it). The
+// walk ends at x.
+Color LiPhotonMap(const Scene& scene, const Ray& ray, Rng& rng, const PhotonMaps& maps, const PmOptions& opt);
+
+}  // namespace ps

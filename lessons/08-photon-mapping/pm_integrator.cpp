@@ -1,0 +1,67 @@
+// Lesson 8 — the photon mapper the render command knows as `pm` (plumbing: read it, nothing to
+// write here). Every iteration traces a new global map (photonsPerMap: as many photon paths as
+// pixels, at least kMinPhotons) and, when the scene has a specular surface, a new caustic map (as
+// many), with seeds of their own derived from the render's seed and the iteration
+// (tracePhotonMap: the framework's task loop, so the maps do not depend on the number of
+// threads), then one camera ray through a jittered point of every pixel, estimated by
+// LiPhotonMap (Eq. 8.11). The iterations are independent estimates
+// with the same bias: averaging them removes the noise, not the bias (README, "Bias").
+//
+// Left out where the scene shows it cannot contribute (exact): without a specular surface there
+// is no L S+ D path, so no caustic map is traced.
+#include "08-photon-mapping/photonmap.h"
+#include "tasks.h"
+
+namespace ps {
+
+namespace {
+
+// Photon paths emitted per iteration for each map: as many as the image has pixels (as lesson 5's
+// light tracer traces light paths), at least kMinPhotons.
+constexpr int kMinPhotons = 8192;
+int photonsPerMap(const Image& out) { return std::max(kMinPhotons, out.width * out.height); }
+constexpr uint64_t kGlobalSalt = 0x8A1F0C3D5B7E9246ull, kCausticSalt = 0x3C6EF372FE94F82Bull;
+
+bool needsCausticMap(const Scene& scene) { return !scene.settings.prune || scene.caps.hasDeltaBSDF(); }
+
+struct PhotonMapper : Integrator {
+    std::vector<std::string> leftOut(const Scene& scene) const override {
+        if (needsCausticMap(scene)) return {};
+        return {"the caustic map: no specular surface, so no photon path L S+ D (lesson 8, Eq. 8.2)"};
+    }
+
+    // The estimates' settings, in the scene's own length unit (scene.radius).
+    static PmOptions options(const Scene& scene) {
+        PmOptions opt;
+        opt.maxDepth = scene.settings.maxDepth;
+        opt.globalEstimate.filter = Filter::Box;
+        opt.globalEstimate.k = 50;
+        opt.globalEstimate.maxRadius = 0.1f * scene.radius;
+        opt.causticEstimate.filter = Filter::Cone;
+        opt.causticEstimate.k = 50;
+        opt.causticEstimate.maxRadius = 0.02f * scene.radius;
+        return opt;
+    }
+
+    void renderIteration(const Scene& scene, uint32_t iteration, uint64_t seed, Image& out,
+                         SampleStats& stats) override {
+        const PmOptions opt = options(scene);
+        PhotonMaps maps;
+        maps.global = tracePhotonMap(scene, MapKind::Global, photonsPerMap(out), opt.maxDepth, seed ^ kGlobalSalt,
+                                     iteration, stats);
+        if (needsCausticMap(scene))
+            maps.caustic = tracePhotonMap(scene, MapKind::Caustic, photonsPerMap(out), opt.maxDepth,
+                                          seed ^ kCausticSalt, iteration, stats);
+        renderPixelTasks(seed, iteration, out, stats, false, [&](int pixel, Rng& rng, Task&) {
+            const Ray ray = scene.camera.generateRay(jitteredRaster(pixel, out.width, rng));
+            return LiPhotonMap(scene, ray, rng, maps, opt);
+        });
+    }
+};
+
+}  // namespace
+
+PS_REGISTER_INTEGRATOR(PhotonMapper, "pm",
+                       "photon mapping: direct light, caustic map, final gathering into the global map (lesson 8)");
+
+}  // namespace ps
