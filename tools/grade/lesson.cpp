@@ -37,14 +37,14 @@ std::string doctestFilter(const std::string& name) {
 // A folder submission code may write to: owned by nobody when it runs as nobody.
 void makeWritable(const fs::path& dir, const Sandbox& box) {
     fs::create_directories(dir);
-    fs::permissions(dir, fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
-                             fs::perms::others_read | fs::perms::others_exec);
+    fs::permissions(dir, fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec | fs::perms::others_read |
+                             fs::perms::others_exec);
     if (box.unprivileged() && chown(dir.c_str(), kNobody, kNobody) != 0)
         throw std::runtime_error("cannot give " + dir.string() + " to uid " + std::to_string(kNobody));
 }
 
-const fs::perms kReadable = fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read |
-                            fs::perms::others_read;
+const fs::perms kReadable =
+    fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read | fs::perms::others_read;
 
 // The end of a long text (a build log), whole lines.
 std::string tail(const std::string& text, int n) {
@@ -68,7 +68,7 @@ std::vector<std::string> environment(const fs::path& home) {
 }
 
 // The verdict on one test from its outcome and what it printed.
-void judge(TestResult& r, const Outcome& o, const std::string& output, double timeout) {
+void judge(TestResult& r, const Outcome& o, const std::string& output, double timeout, bool sandboxed) {
     r.seconds = o.seconds;
     r.output = clip(output);
     if (o.timedOut) {
@@ -76,8 +76,15 @@ void judge(TestResult& r, const Outcome& o, const std::string& output, double ti
         r.message = o.describe(timeout);
         return;
     }
-    if (!o.error.empty() || o.signal) {
-        r.message = o.error.empty() ? "crashed: " + o.describe(timeout) : o.error;
+    if (!o.error.empty()) {
+        r.message = o.error;
+        return;
+    }
+    // bwrap reports a command killed by signal N as exit status 128 + N.
+    if (o.signal || (sandboxed && o.exitCode > 128 && o.exitCode < 128 + 65)) {
+        Outcome killed = o;
+        killed.signal = o.signal ? o.signal : o.exitCode - 128;
+        r.message = "crashed: " + killed.describe(timeout);
         return;
     }
     static const std::regex summary(R"(\[doctest\] test cases:\s*(\d+)\s*\|\s*(\d+) passed\s*\|\s*(\d+) failed)");
@@ -134,8 +141,8 @@ std::vector<TestResult> gradeLesson(const Grading& g, const std::string& lesson,
     const fs::path dir = g.work / nn, src = dir / "src", build = dir / "build";
     fs::create_directories(src);
     fs::permissions(dir, fs::perms::owner_all | fs::perms::others_exec | fs::perms::group_exec);
-    fs::permissions(src, fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
-                             fs::perms::others_read | fs::perms::others_exec);
+    fs::permissions(src, fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec | fs::perms::others_read |
+                             fs::perms::others_exec);
     makeWritable(build, g.sandbox);
     const fs::path from = g.submission / lesson;
     std::string sources;
@@ -160,9 +167,16 @@ std::vector<TestResult> gradeLesson(const Grading& g, const std::string& lesson,
 
     // 2. The build, in the sandbox.
     Step make;
-    make.argv = {findProgram("make"), "-r", "-f", (g.tree / "rules" / "lesson.mk").string(),
-                 "-j" + std::to_string(g.jobs), "TREE=" + g.tree.string(), "LESSON=" + nn, "SRCDIR=" + src.string(),
-                 "SOURCES=" + sources, "lesson_tests"};
+    make.argv = {findProgram("make"),
+                 "-r",
+                 "-f",
+                 (g.tree / "rules" / "lesson.mk").string(),
+                 "-j" + std::to_string(g.jobs),
+                 "TREE=" + g.tree.string(),
+                 "LESSON=" + nn,
+                 "SRCDIR=" + src.string(),
+                 "SOURCES=" + sources,
+                 "lesson_tests"};
     make.env = environment(build);
     make.cwd = build.string();
     make.log = (g.logs / (nn + "-build.log")).string();
@@ -197,7 +211,8 @@ std::vector<TestResult> gradeLesson(const Grading& g, const std::string& lesson,
         steps.push_back(g.sandbox.wrap(t, View{{(g.tree / "data").string(), program.string()}, {scratch.string()}}));
     }
     const std::vector<Outcome> outcomes = runAll(steps, g.jobs);
-    for (size_t i = 0; i < results.size(); ++i) judge(results[i], outcomes[i], readText(steps[i].log), g.testTimeout);
+    for (size_t i = 0; i < results.size(); ++i)
+        judge(results[i], outcomes[i], readText(steps[i].log), g.testTimeout, g.sandbox.on());
     return results;
 }
 

@@ -84,9 +84,9 @@ const char* kHelp =
 // grade --prepare: a reference build whose by-product is the tree.
 int prepare(const fs::path& source, const fs::path& dir, int jobs) {
     const fs::path build = dir / "build";
-    const std::string configure = "cmake -S " + quote(source.string()) + " -B " + quote(build.string()) +
-                                  " -DCMAKE_BUILD_TYPE=Release -DPATHSPACE_STUDENT= -DPATHSPACE_GRADER_TREE=" +
-                                  quote(dir.string());
+    const std::string configure =
+        "cmake -S " + quote(source.string()) + " -B " + quote(build.string()) +
+        " -DCMAKE_BUILD_TYPE=Release -DPATHSPACE_STUDENT= -DPATHSPACE_GRADER_TREE=" + quote(dir.string());
     const std::string make =
         "cmake --build " + quote(build.string()) + " -j" + std::to_string(jobs) + " --target grader_tree";
     std::cerr << "grade: preparing " << dir.string() << " (reference build in " << build.string() << ")\n";

@@ -106,25 +106,28 @@ std::vector<pid_t> myChildren() {
         out.error = "cannot start " + step.argv[0] + " (log " + step.log + "): " + std::strerror(errno);
     } else {
         setpgid(child, child);  // also here: no race with the kill below
-        int status = 0;
+        // Wait for the command to end, without reaping it (WNOWAIT): while it is a zombie, its
+        // pid, which names its process group, cannot be given to another process.
+        siginfo_t info{};
         for (int pause = 1;; pause = std::min(pause * 2, 20)) {
-            if (waitpid(child, &status, WNOHANG) == child) break;
+            info.si_pid = 0;
+            if (waitid(P_PID, child, &info, WEXITED | WNOHANG | WNOWAIT) == 0 && info.si_pid == child) break;
             if (step.timeout > 0 && elapsed() > step.timeout) {
                 out.timedOut = true;
                 kill(-child, SIGKILL);
                 kill(child, SIGKILL);
-                waitpid(child, &status, 0);
+                waitid(P_PID, child, &info, WEXITED | WNOWAIT);
                 break;
             }
             std::this_thread::sleep_for(std::chrono::milliseconds(pause));
         }
         out.seconds = elapsed();
         if (!out.timedOut) {
-            if (WIFEXITED(status)) out.exitCode = WEXITSTATUS(status);
-            else if (WIFSIGNALED(status)) out.signal = WTERMSIG(status);
+            if (info.si_code == CLD_EXITED) out.exitCode = info.si_status;
+            else out.signal = info.si_status;
         }
         // Everything the step left behind: its process group, then every child this supervisor
-        // has (the orphans it inherited), until there is none.
+        // has (the command, the orphans it inherited), until there is none.
         kill(-child, SIGKILL);
         for (;;) {
             for (pid_t p : myChildren()) kill(p, SIGKILL);
@@ -139,7 +142,7 @@ std::vector<pid_t> myChildren() {
     _exit(0);
 }
 
-Outcome readOutcome(int fd) {
+Outcome readOutcome(int fd, int supervisorStatus) {
     std::string text;
     char buf[4096];
     for (ssize_t n; (n = read(fd, buf, sizeof buf)) > 0;) text.append(buf, size_t(n));
@@ -147,7 +150,10 @@ Outcome readOutcome(int fd) {
     Outcome out;
     std::istringstream in(text);
     if (!(in >> out.timedOut >> out.exitCode >> out.signal >> out.seconds)) {
-        out.error = "the grader's supervisor of this step died";
+        out.error = "the grader's supervisor of this step died (" +
+                    (WIFSIGNALED(supervisorStatus) ? "signal " + std::to_string(WTERMSIG(supervisorStatus))
+                                                   : "exit status " + std::to_string(WEXITSTATUS(supervisorStatus))) +
+                    ", report '" + text + "')";
         return out;
     }
     in.get();
@@ -198,7 +204,7 @@ std::vector<Outcome> runAll(const std::vector<Step>& steps, int jobs) {
         const pid_t done = waitpid(-1, &status, 0);
         auto it = running.find(done);
         if (it == running.end()) continue;
-        outcomes[it->second.first] = readOutcome(it->second.second);
+        outcomes[it->second.first] = readOutcome(it->second.second, status);
         running.erase(it);
     }
     return outcomes;

@@ -187,8 +187,8 @@ void writeReport(const std::vector<TestResult>& results, const std::map<std::str
             x << "    <system-out>" << xmlEscape(n->second) << "</system-out>\n";
         for (const TestResult& r : results) {
             if (r.lesson != lesson) continue;
-            x << "    <testcase classname=\"" << xmlEscape(lesson) << "\" name=\"" << xmlEscape(r.name)
-              << "\" time=\"" << r.seconds << "\"";
+            x << "    <testcase classname=\"" << xmlEscape(lesson) << "\" name=\"" << xmlEscape(r.name) << "\" time=\""
+              << r.seconds << "\"";
             if (r.passed) {
                 x << "/>\n";
                 continue;

@@ -25,8 +25,8 @@ std::string findProgram(const std::string& name) {
 
 Step Sandbox::wrap(Step step, const View& view) const {
     if (!on()) return step;
-    std::vector<std::string> a = {bwrap_,          "--unshare-all", "--unshare-user", "--disable-userns",
-                                  "--die-with-parent", "--new-session"};
+    std::vector<std::string> a = {
+        bwrap_, "--unshare-all", "--unshare-user", "--disable-userns", "--die-with-parent", "--new-session"};
     // The system, read-only. /bin, /lib, ... are links into /usr on Debian 12 ("merged /usr").
     a.insert(a.end(), {"--ro-bind", "/usr", "/usr"});
     for (const char* top : {"/bin", "/sbin", "/lib", "/lib32", "/lib64", "/libx32"}) {
@@ -35,10 +35,12 @@ Step Sandbox::wrap(Step step, const View& view) const {
         else if (fs::is_directory(top, ec)) a.insert(a.end(), {"--ro-bind", top, top});
     }
     a.insert(a.end(), {"--ro-bind-try", "/etc/ld.so.cache", "/etc/ld.so.cache", "--ro-bind-try", "/etc/alternatives",
-                       "/etc/alternatives", "--proc", "/proc", "--dev", "/dev", "--size",
-                       std::to_string(256 << 20), "--tmpfs", "/tmp"});
+                       "/etc/alternatives", "--proc", "/proc", "--dev", "/dev", "--size", std::to_string(256 << 20),
+                       "--tmpfs", "/tmp"});
     for (const std::string& p : view.readOnly) a.insert(a.end(), {"--ro-bind", p, p});
     for (const std::string& p : view.writable) a.insert(a.end(), {"--bind", p, p});
+    // The root holds the mount points bwrap made for the view: read-only like the rest.
+    a.insert(a.end(), {"--remount-ro", "/"});
     if (!step.cwd.empty()) a.insert(a.end(), {"--chdir", step.cwd});
     a.push_back("--");
     a.insert(a.end(), step.argv.begin(), step.argv.end());
