@@ -14,7 +14,6 @@
 #include <cstdio>
 #include <cstring>
 #include <dirent.h>
-#include <fstream>
 #include <map>
 #include <sstream>
 #include <thread>
@@ -79,11 +78,18 @@ std::vector<pid_t> myChildren() {
         char* end = nullptr;
         const long pid = std::strtol(e->d_name, &end, 10);
         if (*end != '\0' || pid <= 0) continue;
-        std::ifstream in(std::string("/proc/") + e->d_name + "/stat");
-        std::string stat((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-        const size_t close = stat.rfind(')');
-        if (close == std::string::npos) continue;
-        std::istringstream fields(stat.substr(close + 1));
+        // read(), not a stream: a process may end while it is read (ESRCH), which libstdc++'s
+        // streambuf iterators turn into an exception.
+        char buf[1024];
+        const int fd = open((std::string("/proc/") + e->d_name + "/stat").c_str(), O_RDONLY | O_CLOEXEC);
+        if (fd < 0) continue;
+        const ssize_t n = read(fd, buf, sizeof buf);
+        close(fd);
+        if (n <= 0) continue;
+        const std::string stat(buf, size_t(n));
+        const size_t paren = stat.rfind(')');
+        if (paren == std::string::npos) continue;
+        std::istringstream fields(stat.substr(paren + 1));
         std::string state;
         long ppid = 0;
         if (fields >> state >> ppid && ppid == me) kids.push_back(static_cast<pid_t>(pid));
