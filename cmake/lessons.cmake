@@ -50,12 +50,13 @@ function(pathspace_lesson_is_student NN OUT)
   set(${OUT} ${_is} PARENT_SCOPE)
 endfunction()
 
-# pathspace_lesson_sources(NAME OUT): the .cpp files of lesson NAME (e.g. 01-monte-carlo): the
-# lesson's own plumbing, lessons/NAME/*.cpp (integrator registration, task loops: the same for
-# everyone), and the pieces the student writes, from the student's folder or the reference
-# (solutions/NAME/*.cpp), as chosen above. A file in the student's folder with the name of a
-# plumbing file (a submission made from an older handout) is left out: the lesson's wins.
-function(pathspace_lesson_sources NAME OUT)
+# pathspace_lesson_sources(NAME PIECES PLUMBING): the .cpp files of lesson NAME (e.g.
+# 01-monte-carlo). PLUMBING: the lesson's own code, lessons/NAME/*.cpp (integrator registration,
+# task loops: the same for everyone). PIECES: what the student writes, from the student's folder
+# or the reference (solutions/NAME/*.cpp), as chosen above. A file in the student's folder with
+# the name of a plumbing file (a submission made from an older handout) is left out: the
+# lesson's wins.
+function(pathspace_lesson_sources NAME PIECES PLUMBING)
   string(SUBSTRING ${NAME} 0 2 _nn)
   pathspace_lesson_is_student(${_nn} _student)
   if(_student)
@@ -65,28 +66,44 @@ function(pathspace_lesson_sources NAME OUT)
     set(_dir ${PROJECT_SOURCE_DIR}/solutions/${NAME})
     set(_from "reference")
   endif()
-  file(GLOB _pieces CONFIGURE_DEPENDS ${_dir}/*.cpp)
-  if(NOT _pieces)
+  file(GLOB _files CONFIGURE_DEPENDS ${_dir}/*.cpp)
+  if(NOT _files)
     message(FATAL_ERROR "lesson ${NAME}: no .cpp files in ${_dir}")
   endif()
   file(GLOB _plumbing CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/lessons/${NAME}/*.cpp)
-  set(_src ${_plumbing})
-  foreach(_f ${_pieces})
+  set(_pieces "")
+  foreach(_f ${_files})
     get_filename_component(_base ${_f} NAME)
     if(EXISTS ${PROJECT_SOURCE_DIR}/lessons/${NAME}/${_base})
       message(STATUS "lesson ${NAME}: ${_f} left out (lessons/${NAME}/${_base} is the lesson's own)")
     else()
-      list(APPEND _src ${_f})
+      list(APPEND _pieces ${_f})
     endif()
   endforeach()
   message(STATUS "lesson ${NAME}: ${_from}")
-  set(${OUT} ${_src} PARENT_SCOPE)
+  set(${PIECES} ${_pieces} PARENT_SCOPE)
+  set(${PLUMBING} ${_plumbing} PARENT_SCOPE)
 endfunction()
 
-# pathspace_lessons: the code of lessons 2 and up (integrators and what they need), one object
-# library per lesson, linked into the program and every test as object files, so that the
-# integrators they register (PS_REGISTER_INTEGRATOR) are always there. Lessons 0 and 1 are
-# part of the framework itself (framework/CMakeLists.txt).
+# pathspace_add_lesson(NAME): lesson NAME's code as object libraries: lesson_NN (the pieces, the
+# student's or the reference's) and, if the lesson has plumbing, lesson_NN_plumbing. Object
+# files, not archives: the integrators they register (PS_REGISTER_INTEGRATOR) must always be
+# linked. Two libraries so that the grader's prepared tree (cmake/grader.cmake) can ship the
+# plumbing compiled and the reference pieces apart from it.
+function(pathspace_add_lesson NAME)
+  string(SUBSTRING ${NAME} 0 2 NN)
+  pathspace_lesson_sources(${NAME} _pieces _plumbing)
+  add_library(lesson_${NN} OBJECT ${_pieces})
+  target_link_libraries(lesson_${NN} PUBLIC pathspace_framework_core)
+  if(_plumbing)
+    add_library(lesson_${NN}_plumbing OBJECT ${_plumbing})
+    target_link_libraries(lesson_${NN}_plumbing PUBLIC pathspace_framework_core)
+  endif()
+endfunction()
+
+# pathspace_lessons: the code of lessons 2 and up (integrators and what they need), linked into
+# the program and every test as object files. Lessons 0 and 1 are part of the framework itself
+# (framework/CMakeLists.txt).
 function(pathspace_add_lesson_libraries)
   add_library(pathspace_lessons INTERFACE)
   foreach(L ${PATHSPACE_LESSONS})
@@ -94,11 +111,13 @@ function(pathspace_add_lesson_libraries)
     if(NN STREQUAL "00" OR NN STREQUAL "01")
       continue()
     endif()
-    pathspace_lesson_sources(${L} _src)
-    add_library(lesson_${NN} OBJECT ${_src})
-    target_link_libraries(lesson_${NN} PUBLIC pathspace_framework)
-    target_sources(pathspace_lessons INTERFACE $<TARGET_OBJECTS:lesson_${NN}>)
-    target_link_libraries(pathspace_lessons INTERFACE lesson_${NN})
+    pathspace_add_lesson(${L})
+    foreach(_t lesson_${NN} lesson_${NN}_plumbing)
+      if(TARGET ${_t})
+        target_sources(pathspace_lessons INTERFACE $<TARGET_OBJECTS:${_t}>)
+        target_link_libraries(pathspace_lessons INTERFACE ${_t})
+      endif()
+    endforeach()
   endforeach()
   target_link_libraries(pathspace_lessons INTERFACE pathspace_framework)
 endfunction()

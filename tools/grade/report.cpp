@@ -1,0 +1,205 @@
+// Reading CTest's JUnit, writing the table, results.json and junit.xml (report.h).
+#include "report.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+namespace fs = std::filesystem;
+
+namespace grade {
+
+namespace {
+
+std::string xmlUnescape(std::string s) {
+    const std::pair<const char*, const char*> ents[] = {{"&quot;", "\""}, {"&apos;", "'"}, {"&lt;", "<"}, {"&gt;", ">"},
+                                                        {"&#10;", "\n"},  {"&#13;", "\r"}, {"&amp;", "&"}};
+    for (auto [from, to] : ents)
+        for (size_t p = 0; (p = s.find(from, p)) != std::string::npos; p += std::string(to).size())
+            s.replace(p, std::string(from).size(), to);
+    return s;
+}
+
+std::string xmlEscape(const std::string& s) {
+    std::string out;
+    for (char c : s) {
+        switch (c) {
+        case '&': out += "&amp;"; break;
+        case '<': out += "&lt;"; break;
+        case '>': out += "&gt;"; break;
+        case '"': out += "&quot;"; break;
+        default:
+            if (static_cast<unsigned char>(c) < 0x20 && c != '\n' && c != '\t') out += ' ';
+            else out += c;
+        }
+    }
+    return out;
+}
+
+std::string jsonEscape(const std::string& s) {
+    std::string out;
+    for (unsigned char c : s) {
+        switch (c) {
+        case '"': out += "\\\""; break;
+        case '\\': out += "\\\\"; break;
+        case '\n': out += "\\n"; break;
+        case '\t': out += "\\t"; break;
+        default:
+            if (c < 0x20 || c == 0x7f) {
+                char b[8];
+                std::snprintf(b, sizeof b, "\\u%04x", c);
+                out += b;
+            } else out += static_cast<char>(c);
+        }
+    }
+    return out;
+}
+
+// The value of attribute `name` in the start tag `tag` ("" if absent).
+std::string attribute(const std::string& tag, const std::string& name) {
+    const std::string key = " " + name + "=\"";
+    const size_t a = tag.find(key);
+    if (a == std::string::npos) return "";
+    const size_t b = a + key.size(), e = tag.find('"', b);
+    return e == std::string::npos ? "" : tag.substr(b, e - b);
+}
+
+// What a failed test's report shows: the reason, then what it printed.
+std::string feedback(const TestResult& r) {
+    if (r.passed) return "";
+    return r.message + (r.output.empty() ? "" : "\n" + r.output);
+}
+
+}  // namespace
+
+std::string readText(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+int pointsOf(const std::string& name) {
+    static const std::regex re(R"(\[(\d+) pts?\])");
+    std::smatch m;
+    return std::regex_search(name, m, re) ? std::stoi(m[1]) : 1;
+}
+
+std::vector<std::string> declaredTests(const fs::path& dir) {
+    static const std::regex re(R"re(TEST_CASE\s*\(\s*"((?:[^"\\]|\\.)*)")re");
+    std::vector<std::string> names;
+    std::vector<fs::path> files;
+    for (const auto& e : fs::directory_iterator(dir))
+        if (e.path().extension() == ".cpp") files.push_back(e.path());
+    std::sort(files.begin(), files.end());
+    for (const fs::path& f : files) {
+        const std::string text = readText(f);
+        for (std::sregex_iterator it(text.begin(), text.end(), re), end; it != end; ++it) names.push_back((*it)[1]);
+    }
+    return names;
+}
+
+// Parsed with find(), not std::regex: libstdc++'s regex recurses per character and overflows the
+// stack on the megabytes of output a failing skeleton produces.
+std::map<std::string, TestResult> readJUnit(const fs::path& file) {
+    std::map<std::string, TestResult> out;
+    const std::string xml = readText(file);
+    for (size_t pos = 0; (pos = xml.find("<testcase", pos)) != std::string::npos;) {
+        const size_t tagEnd = xml.find('>', pos);
+        if (tagEnd == std::string::npos) break;
+        const std::string tag = xml.substr(pos, tagEnd - pos);
+        std::string body;
+        size_t next = tagEnd + 1;
+        if (xml[tagEnd - 1] != '/') {  // <testcase ...> body </testcase>
+            const size_t close = xml.find("</testcase>", tagEnd);
+            body = xml.substr(tagEnd + 1, (close == std::string::npos ? xml.size() : close) - tagEnd - 1);
+            next = close == std::string::npos ? xml.size() : close;
+        }
+        pos = next;
+        TestResult r;
+        r.name = xmlUnescape(attribute(tag, "name"));
+        r.seconds = std::atof(attribute(tag, "time").c_str());
+        const std::string status = attribute(tag, "status");
+        const size_t failure = body.find("<failure");
+        r.passed = status == "run" && failure == std::string::npos;
+        if (failure != std::string::npos)
+            r.message = xmlUnescape(attribute(body.substr(failure, body.find('>', failure) - failure), "message"));
+        const size_t so = body.find("<system-out>");
+        if (so != std::string::npos) {
+            const size_t b = so + std::string("<system-out>").size(), e = body.find("</system-out>", b);
+            r.output = xmlUnescape(body.substr(b, (e == std::string::npos ? body.size() : e) - b));
+        }
+        if (!r.passed && r.message.empty()) r.message = status == "notrun" ? "not run" : "failed";
+        out[r.name] = r;
+    }
+    return out;
+}
+
+void writeReport(const std::vector<TestResult>& results, const std::map<std::string, std::string>& notes,
+                 const fs::path& out, bool junit) {
+    int score = 0, maxScore = 0;
+    std::map<std::string, std::pair<int, int>> perLesson;
+    std::ostringstream tests;
+    std::printf("\n%-16s %-70s %6s  %s\n", "lesson", "test", "points", "result");
+    for (size_t i = 0; i < results.size(); ++i) {
+        const TestResult& r = results[i];
+        const int got = r.passed ? r.points : 0;
+        score += got;
+        maxScore += r.points;
+        perLesson[r.lesson].first += got;
+        perLesson[r.lesson].second += r.points;
+        std::printf("%-16s %-70.70s %3d/%-2d  %s\n", r.lesson.c_str(), r.name.c_str(), got, r.points,
+                    r.passed     ? "pass"
+                    : r.timedOut ? "TIMEOUT"
+                                 : "FAIL");
+        if (!r.passed) std::printf("%16s     %s\n", "", r.message.c_str());
+        tests << (i ? ",\n" : "") << "    {\"name\": \"" << jsonEscape(r.lesson + ": " + r.name)
+              << "\", \"score\": " << got << ", \"max_score\": " << r.points << ", \"status\": \""
+              << (r.passed ? "passed" : "failed") << "\", \"execution_time\": " << r.seconds
+              << ", \"visibility\": \"visible\", \"output\": \"" << jsonEscape(feedback(r)) << "\"}";
+    }
+    std::printf("\n");
+    std::string summary;
+    for (const auto& [lesson, s] : perLesson) {
+        std::printf("%-16s %d / %d\n", lesson.c_str(), s.first, s.second);
+        summary += lesson + ": " + std::to_string(s.first) + " / " + std::to_string(s.second) + "\n";
+        if (auto n = notes.find(lesson); n != notes.end() && !n->second.empty()) summary += n->second + "\n";
+    }
+    std::printf("%-16s %d / %d\n", "total", score, maxScore);
+    std::ofstream(out / "results.json") << "{\n  \"score\": " << score << ",\n  \"max_score\": " << maxScore
+                                        << ",\n  \"output\": \"" << jsonEscape(summary) << "\""
+                                        << ",\n  \"tests\": [\n"
+                                        << tests.str() << "\n  ]\n}\n";
+    if (!junit) return;
+    // One suite per lesson; a test's failure type says why: failure, timeout, crash or build.
+    std::ostringstream x;
+    x << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites tests=\"" << results.size() << "\">\n";
+    for (const auto& [lesson, s] : perLesson) {
+        int count = 0, failures = 0;
+        double seconds = 0;
+        for (const TestResult& r : results)
+            if (r.lesson == lesson) ++count, failures += !r.passed, seconds += r.seconds;
+        x << "  <testsuite name=\"" << xmlEscape(lesson) << "\" tests=\"" << count << "\" failures=\"" << failures
+          << "\" time=\"" << seconds << "\">\n";
+        if (auto n = notes.find(lesson); n != notes.end() && !n->second.empty())
+            x << "    <system-out>" << xmlEscape(n->second) << "</system-out>\n";
+        for (const TestResult& r : results) {
+            if (r.lesson != lesson) continue;
+            x << "    <testcase classname=\"" << xmlEscape(lesson) << "\" name=\"" << xmlEscape(r.name) << "\" time=\""
+              << r.seconds << "\"";
+            if (r.passed) {
+                x << "/>\n";
+                continue;
+            }
+            x << ">\n      <failure type=\"" << (r.timedOut ? "timeout" : "failure") << "\" message=\""
+              << xmlEscape(r.message) << "\">" << xmlEscape(r.output) << "</failure>\n    </testcase>\n";
+        }
+        x << "  </testsuite>\n";
+    }
+    x << "</testsuites>\n";
+    std::ofstream(out / "junit.xml") << x.str();
+}
+
+}  // namespace grade
