@@ -31,3 +31,13 @@ ctest -L '^lesson-' -j"$(nproc)" --timeout 120 --output-junit "$PWD/skeleton.xml
   exit 1
 }
 echo "check-skeleton: all $total graded tests fail on the untouched skeleton, as they must"
+# The student's score command in the handout (tools/score.cpp, scripts/score.sh) scores the same
+# run: 0 of the same maximum as the grader's.
+"$hbuild/score" --source "$handout" --junit "$PWD/skeleton.xml" --out "$hbuild/score-report" > "$build/score-skeleton.txt"
+want=$(sed -n 's/^total *\([0-9]*\) \/ \([0-9]*\)$/0 \/ \2/p' "$build/grade-skeleton.txt")
+got=$(sed -n 's/^total *\([0-9]*\) \/ \([0-9]*\)$/\1 \/ \2/p' "$build/score-skeleton.txt")
+if [ -z "$want" ] || [ "$got" != "$want" ]; then
+  echo "check-skeleton: the handout's score command says '$got', the grader '$want' (build/score-skeleton.txt)" >&2
+  exit 1
+fi
+echo "check-skeleton: the handout's score command agrees: $got"

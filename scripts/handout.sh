@@ -13,7 +13,7 @@ fi
 mkdir -p "$dest"
 cd "$src"
 git ls-files -z --cached --others --exclude-standard |
-  grep -zv -E '^(solutions/|\.ci/|tests/course/|scripts/handout\.sh|scripts/check-skeleton\.sh|scripts/grade-bench\.sh|tools/grade/|cmake/grader)' |
+  grep -zv -E '^(solutions/|\.ci/|tests/course/|scripts/handout\.sh|scripts/check-skeleton\.sh|scripts/grade-bench\.sh|tools/grade/(main|lesson|process|sandbox)|cmake/grader)' |
   xargs -0 -I{} cp --parents {} "$dest"/
 # The grader needs the reference; the handout has none.
 sed -i '/^# grade: the autograder/,$d' "$dest/tools/CMakeLists.txt"

@@ -1,0 +1,102 @@
+// score: the student's score, without the reference: the graded tests of each lesson as the
+// student's own build ran them (a CTest JUnit report), in the grader's table (tools/grade/report.h)
+// with the same points. scripts/score.sh builds, runs the tests and calls it.
+//
+//   score --source SRC --junit FILE [--lessons 0,3|all] [--out DIR]
+//
+// Every graded test the lesson declares (tests/NN-name/*.cpp) is listed: one the report does not
+// have (its lesson did not build, or it was not run) scores 0. Writes DIR/results.json (default
+// DIR: ./score). Exit status 0, or 2 for a bad command line.
+#include <algorithm>
+#include <filesystem>
+#include <iostream>
+#include <map>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "grade/report.h"
+
+namespace fs = std::filesystem;
+using namespace grade;
+
+namespace {
+
+[[noreturn]] void usage(const std::string& message) {
+    std::cerr << "score: " << message << "\nusage: score --source SRC --junit FILE [--lessons 0,3|all] [--out DIR]\n";
+    std::exit(2);
+}
+
+// "all" or "0,3,7" -> the lesson numbers (empty: all).
+std::set<int> parseLessons(const std::string& s) {
+    std::set<int> wanted;
+    if (s == "all") return wanted;
+    std::stringstream in(s);
+    for (std::string item; std::getline(in, item, ',');) {
+        if (item.empty() || item.size() > 2 || item.find_first_not_of("0123456789") != std::string::npos)
+            usage("--lessons needs 'all' or lesson numbers such as 0,3, got '" + s + "'");
+        wanted.insert(std::stoi(item));
+    }
+    return wanted;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    fs::path source, junit, out = "score";
+    std::string lessonsArg = "all";
+    for (int i = 1; i < argc; ++i) {
+        const std::string a = argv[i];
+        auto value = [&]() -> std::string {
+            if (i + 1 >= argc) usage(a + " needs a value");
+            return argv[++i];
+        };
+        if (a == "--source") source = value();
+        else if (a == "--junit") junit = value();
+        else if (a == "--lessons") lessonsArg = value();
+        else if (a == "--out") out = value();
+        else usage("unknown argument '" + a + "'");
+    }
+    if (source.empty() || junit.empty()) usage("--source and --junit are needed");
+    const std::set<int> wanted = parseLessons(lessonsArg);
+    if (!fs::is_directory(source / "tests")) usage(source.string() + "/tests: no such folder");
+
+    std::vector<std::string> lessons;
+    for (const auto& e : fs::directory_iterator(source / "tests")) {
+        const std::string n = e.path().filename().string();
+        if (e.is_directory() && n.size() > 3 && std::isdigit(static_cast<unsigned char>(n[0])) &&
+            std::isdigit(static_cast<unsigned char>(n[1])) && n[2] == '-' &&
+            (wanted.empty() || wanted.count(std::stoi(n.substr(0, 2)))))
+            lessons.push_back(n);
+    }
+    std::sort(lessons.begin(), lessons.end());
+    if (lessons.empty()) usage("no lesson matches '" + lessonsArg + "'");
+
+    const std::map<std::string, TestResult> reported =
+        fs::is_regular_file(junit) ? readJUnit(junit) : std::map<std::string, TestResult>();
+    std::vector<TestResult> results;
+    std::map<std::string, std::string> notes;
+    for (const std::string& lesson : lessons) {
+        int missing = 0;
+        for (const std::string& name : declaredTests(source / "tests" / lesson)) {
+            auto it = reported.find(name);
+            TestResult r = it != reported.end() ? it->second : TestResult();
+            if (it == reported.end()) {
+                r.message = "not run (did the lesson build?)";
+                ++missing;
+            }
+            r.lesson = lesson;
+            r.name = name;
+            r.points = pointsOf(name);
+            results.push_back(r);
+        }
+        if (missing) notes[lesson] = std::to_string(missing) + " graded test(s) did not run";
+    }
+    std::error_code ec;
+    fs::create_directories(out, ec);
+    if (!fs::is_directory(out)) usage("--out " + out.string() + ": cannot make that folder");
+    writeReport(results, notes, out, false);
+    std::cout << "\nWhy a test failed: ctest -L lesson-NN -R 'part of its name' --output-on-failure (in build/)\n";
+    return 0;
+}
