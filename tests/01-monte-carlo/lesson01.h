@@ -39,7 +39,8 @@ inline double alpha() { return ps::testalpha::perTest(kStatisticalTests); }
 // the environment's PATHSPACE_TEST_OUTPUT_DIR (the grader's scratch folder for each test).
 inline std::string dumpPath(const std::string& name) {
     const char* out = std::getenv("PATHSPACE_TEST_OUTPUT_DIR");
-    const std::filesystem::path dir = std::filesystem::path(out && *out ? out : ps::testfiles::binaryDir()) / "lesson-01";
+    const std::filesystem::path dir =
+        std::filesystem::path(out && *out ? out : ps::testfiles::binaryDir()) / "lesson-01";
     std::error_code ec;
     std::filesystem::create_directories(dir, ec);
     return (dir / ("chi2-" + name + ".txt")).string();
