@@ -9,7 +9,7 @@ namespace ps {
 Proposal mutateIndependent(double x, double u) {
     // TODO(09) Eq. 9.1: y = u, and both densities: a uniform proposal on [0, 1] does not depend on x.
     (void)x; (void)u;
-    return PS_TODO("lesson 09: mutateIndependent", Proposal{x, 1.0, 1.0});
+    return PS_TODO("lesson 09: mutateIndependent", (Proposal{x, 1.0, 1.0}));
 }
 
 Proposal mutateLocal(double x, double u, double r) {
@@ -18,13 +18,13 @@ Proposal mutateLocal(double x, double u, double r) {
     //          Pitfall: clamping x + r (2u - 1) to [0, 1] instead puts mass on 0 and 1, which has
     //          no density at all.
     (void)x; (void)u; (void)r;
-    return PS_TODO("lesson 09: mutateLocal", Proposal{x, 1.0, 1.0});
+    return PS_TODO("lesson 09: mutateLocal", (Proposal{x, 1.0, 1.0}));
 }
 
 Proposal mutate(double x, double uSelect, double u, const Mutations& m) {
     // TODO(09) The mixture: mutateIndependent(x, u) if uSelect < m.pLarge, else mutateLocal(x, u, m.r).
     (void)x; (void)uSelect; (void)u; (void)m;
-    return PS_TODO("lesson 09: mutate", Proposal{x, 1.0, 1.0});
+    return PS_TODO("lesson 09: mutate", (Proposal{x, 1.0, 1.0}));
 }
 
 }  // namespace ps

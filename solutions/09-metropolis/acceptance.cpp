@@ -22,7 +22,7 @@ Step metropolisStep(const Function1D& f, double x, const Mutations& m, Rng& rng)
     //!          this order (the tests replay them); p = mutate(x, uSelect, u, m),
     //!          a = acceptance(f(x), f(p.y), p); next = p.y if the number is < a, else x.
     //! STUB (void)f; (void)m; (void)rng;
-    //! STUB return PS_TODO("lesson 09: metropolisStep", Step{x, Proposal{x, 1.0, 1.0}, 0.0});
+    //! STUB return PS_TODO("lesson 09: metropolisStep", (Step{x, Proposal{x, 1.0, 1.0}, 0.0}));
     //! BEGIN
     const double uSelect = rng.uniformDouble();
     const double u = rng.uniformDouble();
