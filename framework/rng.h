@@ -5,6 +5,13 @@
 #include <cstdint>
 #include "math.h"
 
+// A branch the hot loop almost never takes (the path tracer's numbers are replayed only by lesson 9).
+#if defined(__GNUC__) || defined(__clang__)
+#define PS_UNLIKELY(x) __builtin_expect(!!(x), 0)
+#else
+#define PS_UNLIKELY(x) (x)
+#endif
+
 namespace ps {
 
 // SplitMix64 finaliser: a bijective 64-bit mix, used to decorrelate seeds.
@@ -14,6 +21,17 @@ inline uint64_t mix64(uint64_t x) {
     x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
     return x ^ (x >> 31);
 }
+
+// Where an Rng's uniform() takes its numbers from instead of its own generator: lesson 9's
+// Metropolis sampler replays a vector of primary samples through the unchanged path tracer
+// (lessons/09-metropolis/pssmlt.h, PrimarySamples).
+class UniformSource {
+public:
+    virtual float next() = 0;  // the next number in [0, 1)
+
+protected:
+    ~UniformSource() = default;
+};
 
 class Rng {
 public:
@@ -31,8 +49,12 @@ public:
         uint32_t rot = static_cast<uint32_t>(old >> 59u);
         return (xorshifted >> rot) | (xorshifted << ((32u - rot) & 31u));
     }
-    // Uniform in [0, 1): 24 random bits, so the result is never 1.
-    float uniform() { return static_cast<float>(nextU32() >> 8) * 0x1p-24f; }
+    // Uniform in [0, 1): 24 random bits, so the result is never 1. While replaying (replayFrom),
+    // the source's next number instead.
+    float uniform() {
+        if (PS_UNLIKELY(source_ != nullptr)) return source_->next();
+        return static_cast<float>(nextU32() >> 8) * 0x1p-24f;
+    }
     Vec2 uniform2() {
         float a = uniform();
         return Vec2(a, uniform());
@@ -42,9 +64,13 @@ public:
         uint64_t hi = nextU32(), lo = nextU32();
         return static_cast<double>(((hi << 32) | lo) >> 11) * 0x1p-53;
     }
+    // From now on uniform() and uniform2() return source->next() (nullptr: the generator again).
+    // Only those two: nextU32() and uniformDouble() always use the generator.
+    void replayFrom(UniformSource* source) { source_ = source; }
 
 private:
     uint64_t state_, inc_;
+    UniformSource* source_ = nullptr;
 };
 
 // The generator for one task (a pixel, or a batch of light paths) in one iteration.

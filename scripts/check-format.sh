@@ -24,6 +24,14 @@ if [ -n "$ctrl$tabs" ]; then
   echo "check-format: control characters (^L, ^H, ^I ...) in text files: an escaped LaTeX command? Write \\frac, \\beta, \\theta" >&2
   exit 1
 fi
+# Merge-conflict markers left in a tracked text file (a lesson README once shipped with them).
+conflicts=$(git ls-files -z | grep -zvE '\.(png|jpg|jpeg|pfm|hdr|exr|gz|zip|pdf|ico|bin)$' |
+  xargs -0 grep -lE '^(<<<<<<< |>>>>>>> )' 2>/dev/null || true)
+if [ -n "$conflicts" ]; then
+  printf '%s\n' $conflicts | sed 's/$/: merge-conflict markers (<<<<<<< ... >>>>>>>)/'
+  echo "check-format: merge-conflict markers in tracked files" >&2
+  exit 1
+fi
 cf="${CLANG_FORMAT:-clang-format}"
 if ! command -v "$cf" >/dev/null 2>&1; then
   echo "check-format: $cf not found: format check skipped (Debian 12: apt-get install clang-format)" >&2

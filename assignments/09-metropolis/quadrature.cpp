@@ -1,0 +1,24 @@
+// Lesson 9 — Metropolis quadrature: the normalisation b estimated separately, and the chain's
+// plain and expected-values estimates of the integral of g f. Interface:
+// lessons/09-metropolis/metropolis1d.h. Equation numbers refer to lessons/09-metropolis/README.md.
+#include "09-metropolis/metropolis1d.h"
+#include "todo.h"
+
+namespace ps {
+
+double estimateNormalization(const Function1D& f, int n, Rng& rng) {
+    // TODO(09) Eq. 9.6: b = integral of f, by n uniform samples: the mean of f(rng.uniformDouble()).
+    (void)f; (void)n; (void)rng;
+    return PS_TODO("lesson 09: estimateNormalization", 0.0);
+}
+
+Quadrature metropolisQuadrature(const Function1D& f, const Function1D& g, double b, double x0, int n,
+                                const Mutations& m, Rng& rng) {
+    // TODO(09) n steps of metropolisStep from x0. Plain (Eq. 9.4): b times the mean of g(next)
+    //          over the n steps. Expected values (Eq. 9.5): b times the mean of
+    //          (1 - a) g(x) + a g(p.y), x the state before the step. Both from the same chain.
+    (void)f; (void)g; (void)b; (void)x0; (void)n; (void)m; (void)rng;
+    return PS_TODO("lesson 09: metropolisQuadrature", Quadrature{});
+}
+
+}  // namespace ps

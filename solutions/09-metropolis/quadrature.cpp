@@ -1,0 +1,39 @@
+// Lesson 9 — Metropolis quadrature: the normalisation b estimated separately, and the chain's
+// plain and expected-values estimates of the integral of g f. Interface:
+// lessons/09-metropolis/metropolis1d.h. Equation numbers refer to lessons/09-metropolis/README.md.
+#include "09-metropolis/metropolis1d.h"
+#include "todo.h"
+
+namespace ps {
+
+double estimateNormalization(const Function1D& f, int n, Rng& rng) {
+    //! TODO(09) Eq. 9.6: b = integral of f, by n uniform samples: the mean of f(rng.uniformDouble()).
+    //! STUB (void)f; (void)n; (void)rng;
+    //! STUB return PS_TODO("lesson 09: estimateNormalization", 0.0);
+    //! BEGIN
+    double sum = 0.0;
+    for (int i = 0; i < n; ++i) sum += f(rng.uniformDouble());
+    return sum / n;
+    //! END
+}
+
+Quadrature metropolisQuadrature(const Function1D& f, const Function1D& g, double b, double x0, int n,
+                                const Mutations& m, Rng& rng) {
+    //! TODO(09) n steps of metropolisStep from x0. Plain (Eq. 9.4): b times the mean of g(next)
+    //!          over the n steps. Expected values (Eq. 9.5): b times the mean of
+    //!          (1 - a) g(x) + a g(p.y), x the state before the step. Both from the same chain.
+    //! STUB (void)f; (void)g; (void)b; (void)x0; (void)n; (void)m; (void)rng;
+    //! STUB return PS_TODO("lesson 09: metropolisQuadrature", Quadrature{});
+    //! BEGIN
+    double plain = 0.0, expected = 0.0, x = x0;
+    for (int i = 0; i < n; ++i) {
+        const Step s = metropolisStep(f, x, m, rng);
+        expected += (1.0 - s.a) * g(x) + s.a * g(s.p.y);
+        x = s.next;
+        plain += g(x);
+    }
+    return Quadrature{b * plain / n, b * expected / n};
+    //! END
+}
+
+}  // namespace ps
