@@ -123,6 +123,16 @@ if wanted 07; then
   done_fig "$d/caustics-equal-spp.png, caustics-regions.md, caustics-efficiency.md"
 fi
 
+# Lesson 9: Veach's door, pt and pssmlt at equal time (lessons/09 README, "What it buys").
+if wanted 09; then
+  d="$(dest 09-metropolis)"; s="$(scene door 128)"
+  for a in pt pssmlt; do
+    "$ps" render "$s" --algo "$a" --time "$(t 20 0.3)" --threads 1 --out "$work/door-$a.png" --no-progress > "$work/door-$a.log"
+    cp "$work/door-$a.png" "$d/door-$a.png"
+  done
+  done_fig "$d/door-pt.png, door-pssmlt.png"
+fi
+
 # Every image a slide deck shows from a lesson folder must be one this script makes (so one command
 # remakes all of them); checked when every lesson was run.
 if [ ${#only[@]} -eq 0 ]; then
