@@ -39,8 +39,12 @@ Step Sandbox::wrap(Step step, const View& view) const {
                        "--tmpfs", "/tmp"});
     for (const std::string& p : view.readOnly) a.insert(a.end(), {"--ro-bind", p, p});
     for (const std::string& p : view.writable) a.insert(a.end(), {"--bind", p, p});
-    // The root holds the mount points bwrap made for the view: read-only like the rest.
-    a.insert(a.end(), {"--remount-ro", "/"});
+    // The root holds the mount points bwrap made for the view: read-only like the rest. So does
+    // the empty /tmp once the view is in place: a view under /tmp (a tree or a build there) has
+    // its parent folders made in it, where a submission could otherwise write at the paths of the
+    // source tree or OUT (only in the sandbox's memory, but a probe cannot tell). Steps write
+    // their temporary files to TMPDIR, their own folder (lesson.cpp).
+    a.insert(a.end(), {"--remount-ro", "/", "--remount-ro", "/tmp"});
     if (!step.cwd.empty()) a.insert(a.end(), {"--chdir", step.cwd});
     a.push_back("--");
     a.insert(a.end(), step.argv.begin(), step.argv.end());
