@@ -183,13 +183,35 @@ void writePNG(const std::string& path, const Image& img, float exposure) {
 }
 
 // OpenEXR through tinyexr (Debian libtinyexr-dev): RGB, 32-bit float per channel (the pixels
-// exactly, like PFM), ZIP-compressed; opens in tev and the other HDR viewers.
+// exactly, like PFM), ZIP-compressed; opens in tev and the other HDR viewers. Written with
+// SaveEXRImageToFile and header arrays we own (the simpler SaveEXR of tinyexr 1.0.1 leaks its
+// channel list on every call). Channels in the order viewers expect: B, G, R.
 void writeEXR(const std::string& path, const Image& img) {
-    std::vector<float> rgb(size_t(img.width) * img.height * 3);
-    for (size_t i = 0; i < img.pixels.size(); ++i)
-        for (int k = 0; k < 3; ++k) rgb[3 * i + k] = img.pixels[i][k];
+    const size_t n = size_t(img.width) * img.height;
+    std::vector<float> planes[3] = {std::vector<float>(n), std::vector<float>(n), std::vector<float>(n)};
+    for (size_t i = 0; i < n; ++i)
+        for (int k = 0; k < 3; ++k) planes[2 - k][i] = img.pixels[i][k];  // B, G, R
+    float* channelData[3] = {planes[0].data(), planes[1].data(), planes[2].data()};
+    EXRImage image;
+    InitEXRImage(&image);
+    image.num_channels = 3;
+    image.width = img.width;
+    image.height = img.height;
+    image.images = reinterpret_cast<unsigned char**>(channelData);
+    EXRHeader header;
+    InitEXRHeader(&header);
+    EXRChannelInfo channels[3] = {};
+    const char* names[3] = {"B", "G", "R"};
+    for (int k = 0; k < 3; ++k) std::snprintf(channels[k].name, sizeof channels[k].name, "%s", names[k]);
+    int pixelTypes[3] = {TINYEXR_PIXELTYPE_FLOAT, TINYEXR_PIXELTYPE_FLOAT, TINYEXR_PIXELTYPE_FLOAT};
+    int requested[3] = {TINYEXR_PIXELTYPE_FLOAT, TINYEXR_PIXELTYPE_FLOAT, TINYEXR_PIXELTYPE_FLOAT};
+    header.num_channels = 3;
+    header.channels = channels;
+    header.pixel_types = pixelTypes;
+    header.requested_pixel_types = requested;
+    header.compression_type = TINYEXR_COMPRESSIONTYPE_ZIP;
     const char* err = nullptr;
-    if (SaveEXR(rgb.data(), img.width, img.height, 3, 0, path.c_str(), &err) != TINYEXR_SUCCESS) {
+    if (SaveEXRImageToFile(&image, &header, path.c_str(), &err) != TINYEXR_SUCCESS) {
         const std::string why = err ? err : "unknown error";
         if (err) FreeEXRErrorMessage(err);
         throw InputError(path, 0, "cannot write EXR file (" + why + ")");
