@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # How long the autograder takes (README, "The autograder"): preparing the tree once, then grading
-# all eight lessons of the reference (solutions/ as a submission: full marks) and of the untouched
+# all lessons of the reference (solutions/ as a submission: full marks) and of the untouched
 # skeleton (assignments/: zero). Prints the figures; asserts nothing about time.
 #   bash scripts/grade-bench.sh [BUILD_DIR] [--jobs N] [--no-sandbox]
 # BUILD_DIR (default build) is a reference build: its grader/ tree is the one timed here
