@@ -10,7 +10,6 @@
 #include <cstdio>
 #include <exception>
 #include <fstream>
-#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -30,8 +29,14 @@ ps::Scene loadAt(const std::string& dir, const std::string& name, int res) {
     if (!in) throw std::runtime_error("cannot open " + path);
     std::ostringstream s;
     s << in.rdbuf();
-    const std::string text = std::regex_replace(s.str(), std::regex(R"(resolution\s+\d+\s+\d+)"),
-                                                "resolution " + std::to_string(res) + " " + std::to_string(res));
+    // The camera's "resolution W H" set to res x res.
+    std::string text = s.str();
+    const size_t at = text.find("resolution");
+    if (at == std::string::npos) throw std::runtime_error(path + ": no resolution");
+    std::istringstream rest(text.substr(at + 10));
+    int w = 0, h = 0;
+    if (!(rest >> w >> h)) throw std::runtime_error(path + ": bad resolution");
+    text.replace(at, 10 + static_cast<size_t>(rest.tellg()), "resolution " + std::to_string(res) + " " + std::to_string(res));
     return ps::parseScene(text, path);
 }
 

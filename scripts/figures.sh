@@ -43,8 +43,12 @@ dest() { local d="${out:+$out/$1}"; d="${d:-$src/lessons/$1}"; mkdir -p "$d"; ec
 wanted() { [ ${#only[@]} -eq 0 ] && return 0; local n; for n in "${only[@]}"; do [ "$n" = "$1" ] && return 0; done; return 1; }
 # scene NAME RES: scenes/NAME.scene at RES x RES pixels, as the READMEs' `sed` lines make it.
 scene() { sed "s/resolution 256 256/resolution $2 $2/" "scenes/$1.scene" > "$work/$1-$2.scene"; echo "$work/$1-$2.scene"; }
-# reference ALGO SECONDS SCENE: a reference image of SCENE (seed 99), its path.
-reference() { local r="$work/ref-$RANDOM.pfm"; "$ps" render "$3" --algo "$1" --time "$2" --seed 99 --out "$r" --no-progress >&2; echo "$r"; }
+# reference ALGO SECONDS SCENE: a reference image of SCENE (seed 99), its path. Half a second in
+# quick mode, whatever SECONDS says (CTest's course_figures_quick runs every figure this way).
+reference() {
+  local r="$work/ref-$RANDOM.pfm" secs="$2"; [ "$quick" = 1 ] && secs=0.5
+  "$ps" render "$3" --algo "$1" --time "$secs" --seed 99 --out "$r" --no-progress >&2; echo "$r"
+}
 # converge SCENE REF OUTDIR ARGS...: pathspace converge quietly into OUTDIR.
 converge() { local s="$1" r="$2" o="$3"; shift 3; "$ps" converge "$s" --reference "$r" --out "$o" --no-progress "$@" > "$o.log"; }
 n=0

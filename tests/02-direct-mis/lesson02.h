@@ -4,7 +4,6 @@
 #pragma once
 #include <doctest/doctest.h>
 #include <fstream>
-#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>

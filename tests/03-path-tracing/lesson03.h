@@ -5,7 +5,6 @@
 #include <doctest/doctest.h>
 #include <cmath>
 #include <fstream>
-#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -75,9 +74,9 @@ enum class Enclosure { Cube, Sphere };
 inline ps::Scene furnace(Enclosure shape, float albedo, float Le) {
     const std::string path = sourcePath(shape == Enclosure::Cube ? "scenes/furnace.scene"
                                                                  : "tests/03-path-tracing/data/furnace-sphere.scene");
-    std::string s = std::regex_replace(readText(path), std::regex("albedo 0\\.5 0\\.5 0\\.5"),
+    std::string s = ps::scenetext::replaceAll(readText(path), "albedo 0.5 0.5 0.5",
                                        "albedo " + num(albedo) + " " + num(albedo) + " " + num(albedo));
-    s = std::regex_replace(s, std::regex("emission 1 1 1"), "emission " + num(Le) + " " + num(Le) + " " + num(Le));
+    s = ps::scenetext::replaceAll(s, "emission 1 1 1", "emission " + num(Le) + " " + num(Le) + " " + num(Le));
     return ps::parseScene(s, path);
 }
 

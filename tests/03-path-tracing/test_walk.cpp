@@ -168,7 +168,7 @@ TEST_CASE(
     std::vector<ReplayCase> cases;
     {
         std::string s = readText(sourcePath("scenes/furnace.scene"));
-        s = std::regex_replace(s, std::regex("albedo 0\\.5 0\\.5 0\\.5"), "albedo 0.9 0.6 0.3");
+        s = ps::scenetext::replaceAll(s, "albedo 0.5 0.5 0.5", "albedo 0.9 0.6 0.3");
         cases.push_back(
             {"closed cube furnace, albedo (0.9, 0.6, 0.3)", ps::parseScene(s, "furnace (test_walk.cpp)"), 60});
     }

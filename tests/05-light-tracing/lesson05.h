@@ -4,7 +4,6 @@
 #include <doctest/doctest.h>
 #include <cmath>
 #include <fstream>
-#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>

@@ -2,7 +2,6 @@
 // lesson 3's Russian roulette, Eq. 3.5), seen through a visitor that records every vertex it is
 // shown. Exact checks: the walk is replayed here step by step with a copy of its random number
 // generator (lesson 5's startLightPath and sampleAdjointBSDF, lesson 3's survivalProbability).
-#include <regex>
 #include <vector>
 #include "lesson05.h"
 #include "seed.h"
@@ -159,7 +158,7 @@ TEST_CASE("light walk: y0 first, then one vertex per bounce up to maxdepth, and 
     // since the light stays 1, so Russian roulette never ends a walk (q = 1): every walk shows
     // y0 on a wall and then exactly the hits with 1 .. D bounces.
     std::string text = readText(sourcePath("scenes/furnace.scene"));
-    text = std::regex_replace(text, std::regex("albedo 0\\.5 0\\.5 0\\.5"), "albedo 1 1 1");
+    text = ps::scenetext::replaceAll(text, "albedo 0.5 0.5 0.5", "albedo 1 1 1");
     const ps::Scene scene = ps::parseScene(text, "furnace, albedo 1 (test_walk.cpp)");
     for (int D : {0, 1, 2, 5}) {
         for (int i = 0; i < 20; ++i) {
@@ -222,8 +221,8 @@ TEST_CASE(
     std::vector<Case> cases;
     {
         std::string s = readText(sourcePath("scenes/furnace.scene"));
-        s = std::regex_replace(s, std::regex("albedo 0\\.5 0\\.5 0\\.5"), "albedo 0.9 0.6 0.3");
-        s = std::regex_replace(s, std::regex("emission 1 1 1"), "emission 50 50 50");
+        s = ps::scenetext::replaceAll(s, "albedo 0.5 0.5 0.5", "albedo 0.9 0.6 0.3");
+        s = ps::scenetext::replaceAll(s, "emission 1 1 1", "emission 50 50 50");
         cases.push_back({"closed cube furnace, albedo (0.9, 0.6, 0.3), emission 50",
                          ps::parseScene(s, "furnace (test_walk.cpp)"), 60});
     }

@@ -5,7 +5,6 @@
 #include <doctest/doctest.h>
 #include <cmath>
 #include <fstream>
-#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>

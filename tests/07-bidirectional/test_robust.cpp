@@ -89,7 +89,7 @@ TEST_CASE(
     // MIS weights from the same pdfs (Eq. 7.3) the techniques that sample such paths well take
     // them over; equal weights (1 / number of techniques) give pixels 14 x too bright here.
     std::string text = readText(sourcePath("scenes/cornell-box.scene"));
-    text = std::regex_replace(text, std::regex(R"(camera[^\n]*)"),
+    text = ps::scenetext::replaceLines(text, "camera",
                               "camera eye 60 60 480  target 0 0 559.2  up 0 1 0  fov 40  resolution 16 16");
     const ps::Scene scene = ps::parseScene(text, sourcePath("scenes/cornell-box.scene"));
     const Render b = render(scene, "bpt", 64, 7401);

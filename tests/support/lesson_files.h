@@ -3,7 +3,6 @@
 // test_paths.cpp; each lesson's lessonNN.h brings these names into its namespace.
 #pragma once
 #include <cstdlib>
-#include <regex>
 #include <string>
 #include "scene_loader.h"
 #include "scene_text.h"
@@ -28,8 +27,7 @@ inline std::string readText(const std::string& path) { return scenetext::readTex
 // the tests and the documented reference commands (`sed` on the same file) see the same scene.
 inline Scene loadSceneAt(const std::string& rel, int width, int height) {
     const std::string path = sourcePath(rel);
-    const std::string text = std::regex_replace(readText(path), std::regex(R"(resolution\s+\d+\s+\d+)"),
-                                                "resolution " + std::to_string(width) + " " + std::to_string(height));
+    const std::string text = scenetext::withResolution(readText(path), width, height);
     return parseScene(text, path);
 }
 
