@@ -36,7 +36,8 @@ ps::Scene loadAt(const std::string& dir, const std::string& name, int res) {
     std::istringstream rest(text.substr(at + 10));
     int w = 0, h = 0;
     if (!(rest >> w >> h)) throw std::runtime_error(path + ": bad resolution");
-    text.replace(at, 10 + static_cast<size_t>(rest.tellg()), "resolution " + std::to_string(res) + " " + std::to_string(res));
+    text.replace(at, 10 + static_cast<size_t>(rest.tellg()),
+                 "resolution " + std::to_string(res) + " " + std::to_string(res));
     return ps::parseScene(text, path);
 }
 

@@ -75,7 +75,7 @@ inline ps::Scene furnace(Enclosure shape, float albedo, float Le) {
     const std::string path = sourcePath(shape == Enclosure::Cube ? "scenes/furnace.scene"
                                                                  : "tests/03-path-tracing/data/furnace-sphere.scene");
     std::string s = ps::scenetext::replaceAll(readText(path), "albedo 0.5 0.5 0.5",
-                                       "albedo " + num(albedo) + " " + num(albedo) + " " + num(albedo));
+                                              "albedo " + num(albedo) + " " + num(albedo) + " " + num(albedo));
     s = ps::scenetext::replaceAll(s, "emission 1 1 1", "emission " + num(Le) + " " + num(Le) + " " + num(Le));
     return ps::parseScene(s, path);
 }

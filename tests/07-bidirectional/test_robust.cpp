@@ -90,7 +90,7 @@ TEST_CASE(
     // them over; equal weights (1 / number of techniques) give pixels 14 x too bright here.
     std::string text = readText(sourcePath("scenes/cornell-box.scene"));
     text = ps::scenetext::replaceLines(text, "camera",
-                              "camera eye 60 60 480  target 0 0 559.2  up 0 1 0  fov 40  resolution 16 16");
+                                       "camera eye 60 60 480  target 0 0 559.2  up 0 1 0  fov 40  resolution 16 16");
     const ps::Scene scene = ps::parseScene(text, sourcePath("scenes/cornell-box.scene"));
     const Render b = render(scene, "bpt", 64, 7401);
     const Render p = render(scene, "pt", 1024, 7402);
