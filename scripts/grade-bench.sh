@@ -28,7 +28,7 @@ seconds() {
 
 mkdir -p "$out"
 t_prepare=$(seconds "$out/prepare.txt" cmake --build "$build" -j"$jobs" --target grader_tree grade)
-score() { sed -n 's/^  "score": \([0-9]*\),$/\1/p;s/^  "max_score": \([0-9]*\),$/\1/p' "$1" | paste -sd/; }
+score() { sed -n 's/^  "score": \([0-9]*\),$/\1/p;s/^  "extra_data": {"max_score": \([0-9]*\)},$/\1/p' "$1" | paste -sd/; }
 t_ref=$(seconds "$out/reference.txt" "$build/grade" --tree "$build/grader" --submission "$src/solutions" \
   --jobs "$jobs" --out "$out/reference" "${sandbox[@]}")
 t_skel=$(seconds "$out/skeleton.txt" "$build/grade" --tree "$build/grader" --submission "$src/assignments" \

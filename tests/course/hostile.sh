@@ -32,7 +32,7 @@ run() {
     --timeout 10 --build-timeout 120 --jobs 2 "$@" >"$work/$name.txt" 2>&1
 }
 score() { sed -n 's/^  "score": \([0-9]*\),$/\1/p' "$work/out-$1/results.json"; }
-max() { sed -n 's/^  "max_score": \([0-9]*\),$/\1/p' "$work/out-$1/results.json"; }
+max() { sed -n 's/^  "extra_data": {"max_score": \([0-9]*\)},$/\1/p' "$work/out-$1/results.json"; }
 expect_score() {
   local got
   got="$(score "$1")"

@@ -106,7 +106,56 @@ void judge(TestResult& r, const Outcome& o, const std::string& output, double ti
                                            : output.substr(error, output.find('\n', error) - error);
 }
 
+// What a grader-side path is called in the feedback (results.json, junit.xml; OUT/logs keep the
+// real ones): the student's files by their lesson's name, the tree as "grader", the work folder
+// as "work", the reference build's sources relative to the repository. Longest path first, so a
+// path inside another is named by the inner one.
+std::vector<std::pair<std::string, std::string>> neutralNames(const Grading& g, const std::string& lesson,
+                                                               size_t tests) {
+    const fs::path dir = g.work / lesson.substr(0, 2);
+    std::vector<std::pair<fs::path, std::string>> named = {
+        {dir / "src", lesson}, {dir / "build", "build"}, {dir, "work"},     {g.work, "work"},
+        {g.tree, "grader"},    {g.submission, "submission"}};
+    for (size_t i = 0; i < tests; ++i) named.push_back({dir / ("run-" + std::to_string(i)), "."});
+    std::ifstream where(g.tree / "reference-paths.txt");  // cmake/grader_tree.cmake: source, build
+    std::string source, build;
+    if (std::getline(where, source) && !source.empty()) named.push_back({source, "."});
+    if (std::getline(where, build) && !build.empty()) named.push_back({build, "build"});
+    std::vector<std::pair<std::string, std::string>> out;
+    for (const auto& [path, name] : named) {
+        std::error_code ec;
+        const fs::path real = fs::weakly_canonical(path, ec);
+        for (const fs::path& p : {path, real})
+            if (!p.empty() && p.string().size() > 1) {
+                out.push_back({p.string() + "/", name == "." ? "" : name + "/"});
+                out.push_back({p.string(), name});
+            }
+    }
+    std::stable_sort(out.begin(), out.end(), [](const auto& a, const auto& b) { return a.first.size() > b.first.size(); });
+    return out;
+}
+
+std::string neutral(std::string text, const std::vector<std::pair<std::string, std::string>>& names) {
+    for (const auto& [from, to] : names)
+        for (size_t p = 0; (p = text.find(from, p)) != std::string::npos; p += to.size()) text.replace(p, from.size(), to);
+    return text;
+}
+
+std::vector<TestResult> gradeLessonWithPaths(const Grading& g, const std::string& lesson, std::string& note);
+
 }  // namespace
+
+std::vector<TestResult> gradeLesson(const Grading& g, const std::string& lesson, std::string& note) {
+    std::string raw;
+    std::vector<TestResult> results = gradeLessonWithPaths(g, lesson, raw);
+    const auto names = neutralNames(g, lesson, results.size());
+    for (TestResult& r : results) {
+        r.message = neutral(r.message, names);
+        r.output = neutral(r.output, names);
+    }
+    note += neutral(raw, names);
+    return results;
+}
 
 View treeView(const Grading& g, const std::string& lesson) {
     const std::string nn = lesson.substr(0, 2);
@@ -122,7 +171,10 @@ View treeView(const Grading& g, const std::string& lesson) {
     return v;
 }
 
-std::vector<TestResult> gradeLesson(const Grading& g, const std::string& lesson, std::string& note) {
+namespace {
+
+// gradeLesson, with the grader's real paths in what it says.
+std::vector<TestResult> gradeLessonWithPaths(const Grading& g, const std::string& lesson, std::string& note) {
     const std::string nn = lesson.substr(0, 2);
     std::vector<TestResult> results;
     for (const std::string& name : lines(g.tree / "tests" / (lesson + ".txt"))) {
@@ -215,5 +267,7 @@ std::vector<TestResult> gradeLesson(const Grading& g, const std::string& lesson,
         judge(results[i], outcomes[i], readText(steps[i].log), g.testTimeout, g.sandbox.on());
     return results;
 }
+
+}  // namespace
 
 }  // namespace grade

@@ -22,9 +22,30 @@ std::string xmlUnescape(std::string s) {
     return s;
 }
 
+// s with every byte that does not belong to a well-formed UTF-8 sequence replaced by '?':
+// a test's output is whatever the submission printed, and JSON and XML readers reject bad UTF-8.
+std::string validUtf8(const std::string& s) {
+    std::string out;
+    for (size_t i = 0; i < s.size();) {
+        const unsigned char c = s[i];
+        const size_t n = c < 0x80 ? 1 : (c >> 5) == 0x6 ? 2 : (c >> 4) == 0xe ? 3 : (c >> 3) == 0x1e ? 4 : 0;
+        bool ok = n > 0 && i + n <= s.size();
+        for (size_t k = 1; ok && k < n; ++k) ok = (static_cast<unsigned char>(s[i + k]) >> 6) == 0x2;
+        if (ok && n > 1) {  // no overlong form, no surrogate, nothing above U+10FFFF
+            unsigned cp = c & (0xff >> (n + 1));
+            for (size_t k = 1; k < n; ++k) cp = (cp << 6) | (static_cast<unsigned char>(s[i + k]) & 0x3f);
+            const unsigned least[] = {0, 0, 0x80, 0x800, 0x10000};
+            ok = cp >= least[n] && (cp < 0xd800 || cp > 0xdfff) && cp <= 0x10ffff;
+        }
+        if (ok) out.append(s, i, n), i += n;
+        else out += '?', ++i;
+    }
+    return out;
+}
+
 std::string xmlEscape(const std::string& s) {
     std::string out;
-    for (char c : s) {
+    for (char c : validUtf8(s)) {
         switch (c) {
         case '&': out += "&amp;"; break;
         case '<': out += "&lt;"; break;
@@ -40,7 +61,7 @@ std::string xmlEscape(const std::string& s) {
 
 std::string jsonEscape(const std::string& s) {
     std::string out;
-    for (unsigned char c : s) {
+    for (unsigned char c : validUtf8(s)) {
         switch (c) {
         case '"': out += "\\\""; break;
         case '\\': out += "\\\\"; break;
@@ -70,6 +91,13 @@ std::string attribute(const std::string& tag, const std::string& name) {
 std::string feedback(const TestResult& r) {
     if (r.passed) return "";
     return r.message + (r.output.empty() ? "" : "\n" + r.output);
+}
+
+// Seconds as a number for JSON and XML: fixed, three decimals.
+std::string secondsText(double s) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%.3f", s);
+    return b;
 }
 
 }  // namespace
@@ -138,7 +166,7 @@ std::map<std::string, TestResult> readJUnit(const fs::path& file) {
 }
 
 void writeReport(const std::vector<TestResult>& results, const std::map<std::string, std::string>& notes,
-                 const fs::path& out, bool junit) {
+                 const fs::path& out, bool junit, double seconds) {
     int score = 0, maxScore = 0;
     std::map<std::string, std::pair<int, int>> perLesson;
     std::ostringstream tests;
@@ -157,8 +185,9 @@ void writeReport(const std::vector<TestResult>& results, const std::map<std::str
         if (!r.passed) std::printf("%16s     %s\n", "", r.message.c_str());
         tests << (i ? ",\n" : "") << "    {\"name\": \"" << jsonEscape(r.lesson + ": " + r.name)
               << "\", \"score\": " << got << ", \"max_score\": " << r.points << ", \"status\": \""
-              << (r.passed ? "passed" : "failed") << "\", \"execution_time\": " << r.seconds
-              << ", \"visibility\": \"visible\", \"output\": \"" << jsonEscape(feedback(r)) << "\"}";
+              << (r.passed ? "passed" : "failed") << "\", \"visibility\": \"visible\", \"output\": \""
+              << jsonEscape(feedback(r)) << "\", \"extra_data\": {\"execution_time\": " << secondsText(r.seconds)
+              << "}}";
     }
     std::printf("\n");
     std::string summary;
@@ -168,27 +197,36 @@ void writeReport(const std::vector<TestResult>& results, const std::map<std::str
         if (auto n = notes.find(lesson); n != notes.end() && !n->second.empty()) summary += n->second + "\n";
     }
     std::printf("%-16s %d / %d\n", "total", score, maxScore);
-    std::ofstream(out / "results.json") << "{\n  \"score\": " << score << ",\n  \"max_score\": " << maxScore
+    // stdout (the grader's log, with the host's paths) is for the lecturer only.
+    std::ofstream(out / "results.json") << "{\n  \"score\": " << score << ",\n  \"execution_time\": "
+                                        << static_cast<long long>(seconds + 0.5)
+                                        << ",\n  \"visibility\": \"visible\",\n  \"stdout_visibility\": \"hidden\""
                                         << ",\n  \"output\": \"" << jsonEscape(summary) << "\""
+                                        << ",\n  \"extra_data\": {\"max_score\": " << maxScore << "}"
                                         << ",\n  \"tests\": [\n"
-                                        << tests.str() << "\n  ]\n}\n";
+                                        << tests.str() << (results.empty() ? "" : "\n") << "  ]\n}\n";
     if (!junit) return;
-    // One suite per lesson; a test's failure type says why: failure, timeout, crash or build.
+    // One suite per lesson; a test's failure type says why: failure or timeout.
+    double allSeconds = 0;
+    int allFailures = 0;
+    for (const TestResult& r : results) allSeconds += r.seconds, allFailures += !r.passed;
     std::ostringstream x;
-    x << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites tests=\"" << results.size() << "\">\n";
+    x << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"grade\" tests=\"" << results.size()
+      << "\" failures=\"" << allFailures << "\" errors=\"0\" skipped=\"0\" time=\"" << secondsText(allSeconds)
+      << "\">\n";
     for (const auto& [lesson, s] : perLesson) {
         int count = 0, failures = 0;
-        double seconds = 0;
+        double suiteSeconds = 0;
         for (const TestResult& r : results)
-            if (r.lesson == lesson) ++count, failures += !r.passed, seconds += r.seconds;
+            if (r.lesson == lesson) ++count, failures += !r.passed, suiteSeconds += r.seconds;
         x << "  <testsuite name=\"" << xmlEscape(lesson) << "\" tests=\"" << count << "\" failures=\"" << failures
-          << "\" time=\"" << seconds << "\">\n";
+          << "\" errors=\"0\" skipped=\"0\" time=\"" << secondsText(suiteSeconds) << "\">\n";
         if (auto n = notes.find(lesson); n != notes.end() && !n->second.empty())
             x << "    <system-out>" << xmlEscape(n->second) << "</system-out>\n";
         for (const TestResult& r : results) {
             if (r.lesson != lesson) continue;
             x << "    <testcase classname=\"" << xmlEscape(lesson) << "\" name=\"" << xmlEscape(r.name) << "\" time=\""
-              << r.seconds << "\"";
+              << secondsText(r.seconds) << "\"";
             if (r.passed) {
                 x << "/>\n";
                 continue;

@@ -29,9 +29,14 @@ std::vector<std::string> declaredTests(const std::filesystem::path& dir);
 std::map<std::string, TestResult> readJUnit(const std::filesystem::path& file);
 
 // Prints the table, writes OUT/results.json (and OUT/junit.xml when `junit`); `notes`: what the
-// grader has to say about each lesson (left-out files, a build that failed: once per lesson).
+// grader has to say about each lesson (left-out files, a build that failed: once per lesson);
+// `seconds`: how long the grading took (results.json's execution_time).
+// results.json follows Gradescope's published format (top level: score, execution_time, output,
+// visibility, stdout_visibility, extra_data, tests; each test: name, score, max_score, status,
+// visibility, output, extra_data), with the maximum score and each test's time in extra_data;
+// junit.xml the JUnit XML that CI systems read (one testsuite per lesson, each count stated).
 void writeReport(const std::vector<TestResult>& results, const std::map<std::string, std::string>& notes,
-                 const std::filesystem::path& out, bool junit);
+                 const std::filesystem::path& out, bool junit, double seconds);
 
 std::string readText(const std::filesystem::path& p);
 
