@@ -111,11 +111,11 @@ void judge(TestResult& r, const Outcome& o, const std::string& output, double ti
 // as "work", the reference build's sources relative to the repository. Longest path first, so a
 // path inside another is named by the inner one.
 std::vector<std::pair<std::string, std::string>> neutralNames(const Grading& g, const std::string& lesson,
-                                                               size_t tests) {
+                                                              size_t tests) {
     const fs::path dir = g.work / lesson.substr(0, 2);
-    std::vector<std::pair<fs::path, std::string>> named = {
-        {dir / "src", lesson}, {dir / "build", "build"}, {dir, "work"},     {g.work, "work"},
-        {g.tree, "grader"},    {g.submission, "submission"}};
+    std::vector<std::pair<fs::path, std::string>> named = {{dir / "src", lesson}, {dir / "build", "build"},
+                                                           {dir, "work"},         {g.work, "work"},
+                                                           {g.tree, "grader"},    {g.submission, "submission"}};
     for (size_t i = 0; i < tests; ++i) named.push_back({dir / ("run-" + std::to_string(i)), "."});
     std::ifstream where(g.tree / "reference-paths.txt");  // cmake/grader_tree.cmake: source, build
     std::string source, build;
@@ -131,13 +131,15 @@ std::vector<std::pair<std::string, std::string>> neutralNames(const Grading& g, 
                 out.push_back({p.string(), name});
             }
     }
-    std::stable_sort(out.begin(), out.end(), [](const auto& a, const auto& b) { return a.first.size() > b.first.size(); });
+    std::stable_sort(out.begin(), out.end(),
+                     [](const auto& a, const auto& b) { return a.first.size() > b.first.size(); });
     return out;
 }
 
 std::string neutral(std::string text, const std::vector<std::pair<std::string, std::string>>& names) {
     for (const auto& [from, to] : names)
-        for (size_t p = 0; (p = text.find(from, p)) != std::string::npos; p += to.size()) text.replace(p, from.size(), to);
+        for (size_t p = 0; (p = text.find(from, p)) != std::string::npos; p += to.size())
+            text.replace(p, from.size(), to);
     return text;
 }
 

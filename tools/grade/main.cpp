@@ -4,7 +4,7 @@
 //
 //   grade --prepare DIR [--source SRC] [--jobs N]
 //   grade [--tree DIR] [--submission DIR] [--lessons 0,1|all] [--out OUT] [--timeout S]
-//         [--build-timeout S] [--jobs N] [--no-sandbox] [--keep-work] [--expect zero|full]
+//         [--build-timeout S] [--jobs N] [--no-sandbox] [--keep-work] [--expect zero|full] [--note TEXT]
 //   grade --junit FILE [--source SRC] [--lessons ...] [--out OUT] [--expect zero|full]
 //
 // --prepare builds the reference once (in DIR/build) and assembles the prepared tree in DIR
@@ -66,6 +66,7 @@ const char* kHelp =
     "usage: grade --prepare DIR [--source SRC] [--jobs N]\n"
     "       grade [--tree DIR] [--submission DIR] [--lessons 0,1|all] [--out OUT] [--timeout S]\n"
     "             [--build-timeout S] [--jobs N] [--no-sandbox] [--keep-work] [--expect zero|full]\n"
+    "             [--note TEXT]\n"
     "       grade --junit FILE [--source SRC] [--lessons 0,1|all] [--out OUT] [--expect zero|full]\n"
     "--prepare DIR builds the reference once and puts in DIR what grading needs (no solution source).\n"
     "Grading scores each lesson in isolation: that lesson from the submission (DIR holds lesson\n"
@@ -77,7 +78,8 @@ const char* kHelp =
     "(default 300): a test stopped scores 0 ('timed out after S s'), a build stopped scores 0 for\n"
     "the lesson. --jobs N compiles and runs N at a time (default 2). Writes OUT/results.json\n"
     "(Gradescope), OUT/junit.xml and OUT/logs/ (default OUT: ./grade). --keep-work keeps the\n"
-    "work folders (their path is printed).\n"
+    "work folders (their path is printed). --note TEXT goes first in results.json's output (what a\n"
+    "wrapper such as the Gradescope package has to say about the upload).\n"
     "--junit FILE scores the graded tests from an existing CTest JUnit report instead of building.\n"
     "--expect zero|full: exit 1 unless every graded test failed / passed.\n"
     "Exit status 3: no working sandbox (install bubblewrap, or --no-sandbox).\n";
@@ -105,7 +107,7 @@ int main(int argc, char** argv) {
     const auto started = std::chrono::steady_clock::now();
     fs::path source = PATHSPACE_SOURCE_DIR, tree = PATHSPACE_GRADER_TREE;
     fs::path submission = source / "assignments", out = "grade", junitIn, prepareDir;
-    std::string lessonsArg = "all", expect;
+    std::string lessonsArg = "all", expect, note;
     int timeout = 120, buildTimeout = 300, jobs = 2;
     bool noSandbox = false, keepWork = false;
     for (int i = 1; i < argc; ++i) {
@@ -126,6 +128,7 @@ int main(int argc, char** argv) {
         else if (a == "--junit") junitIn = fs::absolute(value());
         else if (a == "--no-sandbox") noSandbox = true;
         else if (a == "--keep-work") keepWork = true;
+        else if (a == "--note") note = value();
         else if (a == "--expect") {
             expect = value();
             if (expect != "zero" && expect != "full") usageError("--expect takes zero or full, got '" + expect + "'");
@@ -176,6 +179,7 @@ int main(int argc, char** argv) {
     out = fs::absolute(out);
     std::vector<TestResult> results;
     std::map<std::string, std::string> notes;
+    notes[""] = note;
     if (fromReport) {  // score the report, nothing to build
         const std::map<std::string, TestResult> reported = readJUnit(junitIn);
         for (const std::string& lesson : lessons)

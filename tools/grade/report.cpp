@@ -190,7 +190,8 @@ void writeReport(const std::vector<TestResult>& results, const std::map<std::str
               << "}}";
     }
     std::printf("\n");
-    std::string summary;
+    std::string summary;  // notes[""]: about the submission as a whole (grade --note), first
+    if (auto n = notes.find(""); n != notes.end() && !n->second.empty()) summary = n->second + "\n";
     for (const auto& [lesson, s] : perLesson) {
         std::printf("%-16s %d / %d\n", lesson.c_str(), s.first, s.second);
         summary += lesson + ": " + std::to_string(s.first) + " / " + std::to_string(s.second) + "\n";
@@ -198,8 +199,8 @@ void writeReport(const std::vector<TestResult>& results, const std::map<std::str
     }
     std::printf("%-16s %d / %d\n", "total", score, maxScore);
     // stdout (the grader's log, with the host's paths) is for the lecturer only.
-    std::ofstream(out / "results.json") << "{\n  \"score\": " << score << ",\n  \"execution_time\": "
-                                        << static_cast<long long>(seconds + 0.5)
+    std::ofstream(out / "results.json") << "{\n  \"score\": " << score
+                                        << ",\n  \"execution_time\": " << static_cast<long long>(seconds + 0.5)
                                         << ",\n  \"visibility\": \"visible\",\n  \"stdout_visibility\": \"hidden\""
                                         << ",\n  \"output\": \"" << jsonEscape(summary) << "\""
                                         << ",\n  \"extra_data\": {\"max_score\": " << maxScore << "}"

@@ -29,7 +29,8 @@ std::vector<std::string> declaredTests(const std::filesystem::path& dir);
 std::map<std::string, TestResult> readJUnit(const std::filesystem::path& file);
 
 // Prints the table, writes OUT/results.json (and OUT/junit.xml when `junit`); `notes`: what the
-// grader has to say about each lesson (left-out files, a build that failed: once per lesson);
+// grader has to say about each lesson (left-out files, a build that failed: once per lesson), and
+// under "" about the submission as a whole (first in results.json's output);
 // `seconds`: how long the grading took (results.json's execution_time).
 // results.json follows Gradescope's published format (top level: score, execution_time, output,
 // visibility, stdout_visibility, extra_data, tests; each test: name, score, max_score, status,

@@ -21,8 +21,8 @@ struct Json {
     enum Kind { Null, Bool, Number, String, Array, Object } kind = Null;
     bool boolean = false;
     double number = 0;
-    std::string text;                               // String
-    std::vector<Json> items;                        // Array
+    std::string text;                                   // String
+    std::vector<Json> items;                            // Array
     std::vector<std::pair<std::string, Json>> members;  // Object, in order
     const Json* find(const std::string& key) const {
         for (const auto& [k, v] : members)
@@ -147,7 +147,10 @@ private:
         unsigned u = 0;
         for (int i = 0; i < 4; ++i, ++p_) {
             const char c = s_[p_];
-            const int d = c >= '0' && c <= '9' ? c - '0' : c >= 'a' && c <= 'f' ? c - 'a' + 10 : c >= 'A' && c <= 'F' ? c - 'A' + 10 : -1;
+            const int d = c >= '0' && c <= '9'   ? c - '0'
+                          : c >= 'a' && c <= 'f' ? c - 'a' + 10
+                          : c >= 'A' && c <= 'F' ? c - 'A' + 10
+                                                 : -1;
             if (d < 0) fail("a \\u escape needs four hex digits");
             u = u * 16 + d;
         }

@@ -38,6 +38,13 @@ void problem(const std::string& file, const std::string& where, const std::strin
     problems.push_back(file + ": " + where + ": " + what);
 }
 
+// A number as the document would write it: 3, 0.5.
+std::string num(double v) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%g", v);
+    return b;
+}
+
 bool oneOf(const std::string& v, const std::set<std::string>& allowed) { return allowed.count(v) > 0; }
 std::string listed(const std::set<std::string>& s) {
     std::string out;
@@ -52,7 +59,8 @@ const std::set<std::string> kStatus = {"passed", "failed"};
 void strings(const Json& v, const std::string& where, std::vector<std::pair<std::string, std::string>>& out) {
     if (v.kind == Json::String) out.push_back({where, v.text});
     for (size_t i = 0; i < v.items.size(); ++i) strings(v.items[i], where + "[" + std::to_string(i) + "]", out);
-    for (const auto& [k, m] : v.members) out.push_back({where, k}), strings(m, where + "." + k, out);
+    for (const auto& [k, m] : v.members)
+        out.push_back({where, k}), strings(m, where.empty() ? k : where + "." + k, out);
 }
 
 struct Field {
@@ -61,7 +69,8 @@ struct Field {
 };
 
 // The object's keys against `fields` (the published ones): each known, of its type and value.
-void fields(const std::string& file, const std::string& where, const Json& v, const std::map<std::string, Field>& fields) {
+void fields(const std::string& file, const std::string& where, const Json& v,
+            const std::map<std::string, Field>& fields) {
     for (const auto& [key, m] : v.members) {
         auto f = fields.find(key);
         if (f == fields.end()) {
@@ -69,7 +78,8 @@ void fields(const std::string& file, const std::string& where, const Json& v, co
             continue;
         }
         if (m.kind != f->second.kind) {
-            problem(file, where + "." + key, std::string("is ") + kindName(m.kind) + ", must be " + kindName(f->second.kind));
+            problem(file, where + "." + key,
+                    std::string("is ") + kindName(m.kind) + ", must be " + kindName(f->second.kind));
             continue;
         }
         if (f->second.values && !oneOf(m.text, *f->second.values))
@@ -125,7 +135,8 @@ std::map<std::string, bool> checkResults(const std::string& file, const Json& do
                     {"extra_data", {Json::Object}}});
             if (const Json* tags = t.find("tags"))
                 for (const Json& tag : tags->items)
-                    if (tag.kind != Json::String) problem(file, where + ".tags", "holds something that is not a string");
+                    if (tag.kind != Json::String)
+                        problem(file, where + ".tags", "holds something that is not a string");
             // The grader's rules: every test has a name, a score out of max_score, a status.
             const Json *s = t.find("score"), *m = t.find("max_score"), *st = t.find("status"), *n = t.find("name");
             if (!s || s->kind != Json::Number) {
@@ -139,20 +150,22 @@ std::map<std::string, bool> checkResults(const std::string& file, const Json& do
                 continue;
             }
             if (s->number < 0 || s->number > m->number)
-                problem(file, where + ".score", std::to_string(s->number) + " is not within 0.." + std::to_string(m->number));
+                problem(file, where + ".score", num(s->number) + " is not within 0.." + num(m->number));
             if ((st->text == "passed") != (s->number == m->number))
-                problem(file, where + ".status", "\"" + st->text + "\" with " + std::to_string(s->number) + " of " +
-                                                     std::to_string(m->number) + " points");
+                problem(file, where + ".status",
+                        "\"" + st->text + "\" with " + num(s->number) + " of " + num(m->number) + " points");
             if (failed.count(n->text)) problem(file, where + ".name", "\"" + n->text + "\" twice");
             failed[n->text] = st->text != "passed";
         }
     if (!score && !everyScored) problem(file, "top level", "no score, and not every test has one");
     if (score && score->kind == Json::Number && haveTests && score->number != sum)
-        problem(file, "score", std::to_string(score->number) + " is not the sum of the tests' scores, " + std::to_string(sum));
+        problem(file, "score", num(score->number) + " is not the sum of the tests' scores, " + num(sum));
     return failed;
 }
 
-bool wholeNumber(const std::string& s) { return !s.empty() && s.size() < 10 && s.find_first_not_of("0123456789") == std::string::npos; }
+bool wholeNumber(const std::string& s) {
+    return !s.empty() && s.size() < 10 && s.find_first_not_of("0123456789") == std::string::npos;
+}
 // xs:decimal, not negative: digits with at most one point among them.
 bool seconds(const std::string& s) {
     size_t digits = 0, points = 0;
@@ -222,7 +235,8 @@ Counts checkSuite(const std::string& file, const Element& s, std::map<std::strin
         {"tests", c.tests}, {"failures", c.failures}, {"errors", c.errors}, {"skipped", c.skipped}};
     for (const auto& [key, n] : stated) {
         const int v = count(file, s, where, key, true);
-        if (v >= 0 && v != n) problem(file, where, std::string(key) + "=\"" + std::to_string(v) + "\" but it holds " + std::to_string(n));
+        if (v >= 0 && v != n)
+            problem(file, where, std::string(key) + "=\"" + std::to_string(v) + "\" but it holds " + std::to_string(n));
     }
     return c;
 }
@@ -251,7 +265,9 @@ std::map<std::string, bool> checkJUnit(const std::string& file, const Element& r
         {"tests", all.tests}, {"failures", all.failures}, {"errors", all.errors}, {"skipped", all.skipped}};
     for (const auto& [key, n] : stated) {
         const int v = count(file, root, "<testsuites>", key, false);
-        if (v >= 0 && v != n) problem(file, "<testsuites>", std::string(key) + "=\"" + std::to_string(v) + "\" but its suites hold " + std::to_string(n));
+        if (v >= 0 && v != n)
+            problem(file, "<testsuites>",
+                    std::string(key) + "=\"" + std::to_string(v) + "\" but its suites hold " + std::to_string(n));
     }
     time(file, root, "<testsuites>", false);
     return cases;
@@ -313,11 +329,9 @@ int main(int argc, char** argv) {
         jsonRead = true;
         fromJson = checkResults(files[0], doc);
         std::vector<std::pair<std::string, std::string>> all;
-        strings(doc, "top level", all);
+        strings(doc, "", all);
         forbid(files[0], all, forbidden);
-    } catch (const ParseError& e) {
-        problem(files[0], "not JSON", e.what());
-    }
+    } catch (const ParseError& e) { problem(files[0], "not JSON", e.what()); }
     if (files.size() == 2) {
         try {
             const std::string text = read(files[1]);
@@ -327,9 +341,7 @@ int main(int argc, char** argv) {
             std::vector<std::pair<std::string, std::string>> all;
             texts(root, all);
             forbid(files[1], all, forbidden);
-        } catch (const ParseError& e) {
-            problem(files[1], "not XML", e.what());
-        }
+        } catch (const ParseError& e) { problem(files[1], "not XML", e.what()); }
     }
     // The same tests in both, failed in both or in neither.
     if (jsonRead && xmlRead) {
@@ -337,8 +349,9 @@ int main(int argc, char** argv) {
             auto x = fromXml.find(name);
             if (x == fromXml.end()) problem(files[1], "the tests", "no testcase for \"" + name + "\" of " + files[0]);
             else if (x->second != failed)
-                problem(files[1], "the tests", "\"" + name + "\" " + (x->second ? "failed" : "passed") + " here, " +
-                                                   (failed ? "failed" : "passed") + " in " + files[0]);
+                problem(files[1], "the tests",
+                        "\"" + name + "\" " + (x->second ? "failed" : "passed") + " here, " +
+                            (failed ? "failed" : "passed") + " in " + files[0]);
         }
         for (const auto& [name, failed] : fromXml)
             if (!fromJson.count(name)) problem(files[1], "the tests", "\"" + name + "\" is not a test of " + files[0]);

@@ -82,7 +82,9 @@ private:
     std::string name() {
         const size_t start = p_;
         auto first = [](char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_' || c == ':'; };
-        auto rest = [&](char c) { return first(c) || std::isdigit(static_cast<unsigned char>(c)) || c == '-' || c == '.'; };
+        auto rest = [&](char c) {
+            return first(c) || std::isdigit(static_cast<unsigned char>(c)) || c == '-' || c == '.';
+        };
         if (p_ >= s_.size() || !first(s_[p_])) fail("expected a name");
         while (p_ < s_.size() && rest(s_[p_])) ++p_;
         return s_.substr(start, p_ - start);
@@ -107,6 +109,7 @@ private:
             const size_t semi = s_.find(';', p_);
             if (semi == std::string::npos || semi - p_ > 12) fail("a bare '&' (write &amp;)");
             const std::string ref = s_.substr(p_ + 1, semi - p_ - 1);
+            if (ref.empty() || ref.find_first_of(" \t\n\r&<\"'") != std::string::npos) fail("a bare '&' (write &amp;)");
             if (ref == "amp") out += '&';
             else if (ref == "lt") out += '<';
             else if (ref == "gt") out += '>';
@@ -115,8 +118,8 @@ private:
             else if (ref.size() > 1 && ref[0] == '#') {
                 const bool hex = ref[1] == 'x';
                 const std::string digits = ref.substr(hex ? 2 : 1);
-                if (digits.empty() || digits.find_first_not_of(hex ? "0123456789abcdefABCDEF" : "0123456789") !=
-                                          std::string::npos)
+                if (digits.empty() ||
+                    digits.find_first_not_of(hex ? "0123456789abcdefABCDEF" : "0123456789") != std::string::npos)
                     fail("a bad character reference &" + ref + ";");
                 const unsigned long cp = std::stoul(digits, nullptr, hex ? 16 : 10);
                 allowed(static_cast<unsigned>(cp > 0x110000 ? 0x110000 : cp));
