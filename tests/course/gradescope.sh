@@ -97,6 +97,8 @@ done <"$tree/tests/00-rays.txt"
 package all
 upload all folders
 expect_score full
+expect_in "00-rays: $max0 / $max0"
+expect_in "04-measurement: "
 upload all skeleton
 expect_score 0 "$max0"
 upload all top-level
@@ -113,8 +115,12 @@ expect_score 0 0
 expect_in "No lesson found in the upload"
 expect_in "README.txt"
 
-# A package for one lesson: an upload without it scores 0 of that lesson's points.
+# A package for one lesson grades that lesson alone, and an upload without it scores 0 of that
+# lesson's points.
 package lesson0 --lessons 0
+upload lesson0 folders
+expect_score "$max0" "$max0"
+expect_in "not graded: 04-measurement (this assignment grades lesson(s) 0)"
 upload lesson0 nothing
 expect_score 0 "$max0"
 expect_in "no folder 00-rays in the submission"
