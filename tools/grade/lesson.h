@@ -30,7 +30,10 @@ struct Grading {
 };
 
 // The graded tests of `lesson` (e.g. "02-direct-mis"), scored; `note` gets what the grader has
-// to say about the lesson as a whole (files left out, the build's failure).
+// to say about the lesson as a whole (files left out, the build's failure). In the messages, the
+// outputs and the note the grader's own paths are replaced by neutral names: the submission's
+// files by the lesson's name ("02-direct-mis/mis.cpp"), the tree by "grader", the work folder by
+// "work", the reference's sources relative to the repository (OUT/logs keep the real paths).
 std::vector<TestResult> gradeLesson(const Grading& g, const std::string& lesson, std::string& note);
 
 // What every sandboxed step may read of the tree while `lesson` is graded (Sandbox::probe).
