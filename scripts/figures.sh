@@ -127,14 +127,23 @@ if wanted 07; then
   done_fig "$d/caustics-equal-spp.png, caustics-regions.md, caustics-efficiency.md"
 fi
 
-# Lesson 9: Veach's door, pt and pssmlt at equal time (lessons/09 README, "What it buys").
+# Lesson 9: Veach's door, pt, bpt, pssmlt and mmlt at equal time (lessons/09 README, "What it buys");
+# pathspace converge on the door (where MLT should win) and on the Cornell box (where it should not).
 if wanted 09; then
   d="$(dest 09-metropolis)"; s="$(scene door 128)"
-  for a in pt pssmlt; do
+  for a in pt bpt pssmlt mmlt; do
     "$ps" render "$s" --algo "$a" --time "$(t 20 0.3)" --threads 1 --out "$work/door-$a.png" --no-progress > "$work/door-$a.log"
     cp "$work/door-$a.png" "$d/door-$a.png"
   done
-  done_fig "$d/door-pt.png, door-pssmlt.png"
+  done_fig "$d/door-pt.png, door-bpt.png, door-pssmlt.png, door-mmlt.png"
+  for c in "door door pt 600 10" "cornell-box cornell pt 120 5"; do
+    set -- $c
+    s="$(scene "$1" 64)"; r="$(reference "$3" "$(t "$4" 2)" "$s")"
+    converge "$s" "$r" "$work/09-$2" --algos pt,bpt,pssmlt,mmlt --time "$(t "$5" 0.2)" --seeds "$(t 2 1)"
+    cp "$work/09-$2/equal-time.png" "$d/$2-equal-time.png"; cp "$work/09-$2/convergence.svg" "$d/$2-converge.svg"
+    cp "$work/09-$2/efficiency.md" "$d/$2-efficiency.md"
+    done_fig "$d/$2-equal-time.png, $2-converge.svg, $2-efficiency.md"
+  done
 fi
 
 # Every image a slide deck shows from a lesson folder must be one this script makes (so one command

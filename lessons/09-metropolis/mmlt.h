@@ -118,14 +118,15 @@ float mmltStep(MultiplexedChain& chain, const MMLTMutations& m, Rng& rng, const 
 struct MMLTSettings {
     MMLTMutations mutations;
     int chains = 0;              // 0: one per 64 pixels; always at least one per lit path length
-    int bootstrapPerPixel = 16;  // seed samples per pixel, shared equally by the path lengths
+    int bootstrapPerPixel = 16;  // seed samples per pixel, shared equally by the path lengths (each
+                                 // seed's subpaths evaluated with all k + 1 techniques)
 };
 
 // What the bootstrap found for path length k (after iteration 0).
 struct PathLength {
     int k = 0;
-    double b = 0.0;          // b_k: the mean target luminance of its seed samples (Eq. 9.15)
-    double bStdError = 0.0;  // the standard error of that mean (from the seed samples)
+    double b = 0.0;          // b_k: the mean target luminance of its seed samples' pairs (u, s) (Eq. 9.15)
+    double bStdError = 0.0;  // the standard error of b_k (from the seed samples' means over s)
     int seeds = 0;           // its seed samples
     int chains = 0;          // its chains
 };

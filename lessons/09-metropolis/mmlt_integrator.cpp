@@ -5,11 +5,13 @@
 //
 //   iteration 0   the bootstrap, per path length k = 1 .. maxDepth + 1 (lesson 7's s + t - 2 <=
 //                 maxDepth): bootstrapPerPixel x pixels / (maxDepth + 1) seed samples each, a
-//                 seed sample being fresh camera and light streams and a technique s chosen with
-//                 p_k(s) (each from its own generator, one task item each); b_k and the starts of
-//                 length k's chains by lesson 9's bootstrapChains (Eq. 9.15). The chains are
-//                 shared out among the lengths: one for every length with b_k > 0, the rest in
-//                 proportion to b_k (largest remainders). Each chain replays its seed sample.
+//                 seed sample being fresh camera and light streams (each from its own generator,
+//                 one task item each) whose subpaths are evaluated with EVERY technique s = 0 .. k:
+//                 the k + 1 pairs (u, s) of a seed enter lesson 9's bootstrapChains together, which
+//                 gives b_k (their mean: the expectation over s ~ p_k taken exactly, Eq. 9.15) and
+//                 the pairs length k's chains start from. The chains are shared out among the
+//                 lengths: one for every length with b_k > 0, the rest in proportion to b_k (largest
+//                 remainders). Each chain replays its seed sample's streams and takes its s.
 //   every         as many steps as the image has pixels (one "sample per pixel"), the same number
 //   iteration     for every chain: chain c is item c of framework/tasks.h's loop, its steps draw
 //                 from taskRng(seed, iteration, c), its streams from generators of (iteration, c),
@@ -27,7 +29,6 @@ namespace {
 // Seeds of the bootstrap's streams and techniques and of the chains' streams, apart from the steps'.
 constexpr uint64_t kBootCameraTag = 0x6d6d6c742d625f63ull;  // "mmlt-b_c"
 constexpr uint64_t kBootLightTag = 0x6d6d6c742d625f6cull;   // "mmlt-b_l"
-constexpr uint64_t kBootTechTag = 0x6d6d6c742d625f74ull;    // "mmlt-b_t"
 constexpr uint64_t kPickTag = 0x6d6d6c742d706b21ull;        // "mmlt-pk!"
 constexpr uint64_t kCameraTag = 0x6d6d6c742d63616dull;      // "mmlt-cam"
 constexpr uint64_t kLightTag = 0x6d6d6c742d6c6974ull;       // "mmlt-lit"
@@ -82,20 +83,23 @@ double MMLT::b() const {
 void MMLT::start(const Scene& scene, uint64_t seed, int pixels, SampleStats& stats) {
     const int K = scene.settings.maxDepth + 1;  // path lengths 1 .. K
     const int perLength = std::max(1, (std::max(1, settings_.bootstrapPerPixel) * pixels + K - 1) / K);
-    const uint64_t cameraSeed = mix64(seed ^ kBootCameraTag), lightSeed = mix64(seed ^ kBootLightTag),
-                   techSeed = mix64(seed ^ kBootTechTag);
-    // Seed sample j: length k = j / perLength + 1, streams and technique from generators of j.
-    const auto seedTechnique = [&](int k, int j) { return selectTechnique(k, taskRng(techSeed, 0, uint32_t(j)).uniform()); };
-    std::vector<float> I(size_t(K) * size_t(perLength), 0.0f);
+    const uint64_t cameraSeed = mix64(seed ^ kBootCameraTag), lightSeed = mix64(seed ^ kBootLightTag);
+    // Seed sample j: length k = j / perLength + 1, its streams from generators of j; its pairs
+    // (u, s), s = 0 .. k, at I[first[k] + (j mod perLength) (k + 1) + s].
+    std::vector<size_t> first(size_t(K) + 2, 0);
+    for (int k = 1; k <= K; ++k) first[size_t(k + 1)] = first[size_t(k)] + size_t(perLength) * size_t(k + 1);
+    std::vector<float> I(first[size_t(K) + 1], 0.0f);
     runTasks(K * perLength, cameraSeed, 0, nullptr, 1.0f, stats, [&](int j, Rng& camera, Task& task) {
         thread_local SubpathPair paths;
         const int k = j / perLength + 1;
         Rng light = taskRng(lightSeed, 0, uint32_t(j));
         traceSubpaths(scene, k, camera, light, paths);
-        I[size_t(j)] = evaluateTarget(scene, paths, k, seedTechnique(k, j), task.stats).I;
+        float* pairs = &I[first[size_t(k)] + size_t(j % perLength) * size_t(k + 1)];
+        for (int s = 0; s <= k; ++s) pairs[s] = evaluateTarget(scene, paths, k, s, task.stats).I;
     });
 
-    // b_k's spread, and the chains of each length: one per lit length, the rest in proportion to b_k.
+    // b_k's spread (over the seed samples: a seed's k + 1 pairs are not independent), and the
+    // chains of each length: one per lit length, the rest in proportion to b_k.
     lengths_.assign(size_t(K), PathLength{});
     std::vector<double> mean(size_t(K), 0.0);
     double total = 0.0;
@@ -106,7 +110,9 @@ void MMLT::start(const Scene& scene, uint64_t seed, int pixels, SampleStats& sta
         l.seeds = perLength;
         double sum = 0.0, sq = 0.0;
         for (int i = 0; i < perLength; ++i) {
-            const double v = I[size_t((k - 1) * perLength + i)];
+            double v = 0.0;  // the seed's mean over its techniques
+            for (int s = 0; s <= k; ++s) v += I[first[size_t(k)] + size_t(i) * size_t(k + 1) + size_t(s)];
+            v /= double(k + 1);
             sum += v;
             sq += v * v;
         }
@@ -137,13 +143,12 @@ void MMLT::start(const Scene& scene, uint64_t seed, int pixels, SampleStats& sta
         remainder[k] = -1.0;
     }
 
-    // Each length's b_k and its chains' seed samples (Eq. 9.15).
-    std::vector<int> startOf;  // the seed sample each chain starts from
-    std::vector<int> lengthOf;
+    // Each length's b_k and the pairs its chains start from (Eq. 9.15).
+    std::vector<int> startOf, techniqueOf, lengthOf;  // per chain: its seed sample, s, k
     const uint64_t pickSeed = mix64(seed ^ kPickTag);
     for (PathLength& l : lengths_) {
         if (l.chains == 0) continue;
-        const std::vector<float> Ik(I.begin() + ptrdiff_t(l.k - 1) * perLength, I.begin() + ptrdiff_t(l.k) * perLength);
+        const std::vector<float> Ik(I.begin() + ptrdiff_t(first[size_t(l.k)]), I.begin() + ptrdiff_t(first[size_t(l.k + 1)]));
         Rng pick = taskRng(pickSeed, 0, uint32_t(l.k));
         const Bootstrap boot = bootstrapChains(Ik, l.chains, pick);
         l.b = boot.b;
@@ -151,8 +156,9 @@ void MMLT::start(const Scene& scene, uint64_t seed, int pixels, SampleStats& sta
             l.chains = 0;
             continue;
         }
-        for (uint32_t i : boot.starts) {
-            startOf.push_back((l.k - 1) * perLength + int(i));
+        for (uint32_t q : boot.starts) {
+            startOf.push_back((l.k - 1) * perLength + int(q) / (l.k + 1));
+            techniqueOf.push_back(int(q) % (l.k + 1));
             lengthOf.push_back(l.k);
         }
     }
@@ -169,7 +175,7 @@ void MMLT::start(const Scene& scene, uint64_t seed, int pixels, SampleStats& sta
         const PathLength& l = lengths_[size_t(k - 1)];
         scale_[size_t(c)] = l.b * double(pixels) / (double(l.chains) * double(stepsPerChain_));
         chain.k = k;
-        chain.s = seedTechnique(k, j);
+        chain.s = techniqueOf[size_t(c)];
         chain.camera = PrimarySamples(taskRng(cameraSeed, 0, uint32_t(j)));
         chain.light = PrimarySamples(taskRng(lightSeed, 0, uint32_t(j)));
         chain.camera.startProposal(true);
