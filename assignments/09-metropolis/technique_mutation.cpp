@@ -12,7 +12,7 @@ Proposal mutateTechnique(int s, int k, float u) {
     //          Proposal{s', T(s -> s'), T(s' -> s)} with T(a -> b) = 1 / (number of neighbours of a).
     //          Pitfall: next to an end the two are not equal (1/2 one way, 1 the other): a chain
     //          that takes them as equal visits the end techniques (s = 0: the camera path hits the
-    //          light; s = k: light tracing) half as often as it should.
+    //          light; s = k: light tracing) too rarely.
     (void)k; (void)u;
     return PS_TODO("lesson 09: mutateTechnique", (Proposal{double(s), 1.0, 1.0}));
 }

@@ -148,7 +148,8 @@ void MMLT::start(const Scene& scene, uint64_t seed, int pixels, SampleStats& sta
     const uint64_t pickSeed = mix64(seed ^ kPickTag);
     for (PathLength& l : lengths_) {
         if (l.chains == 0) continue;
-        const std::vector<float> Ik(I.begin() + ptrdiff_t(first[size_t(l.k)]), I.begin() + ptrdiff_t(first[size_t(l.k + 1)]));
+        const std::vector<float> Ik(I.begin() + ptrdiff_t(first[size_t(l.k)]),
+                                    I.begin() + ptrdiff_t(first[size_t(l.k + 1)]));
         Rng pick = taskRng(pickSeed, 0, uint32_t(l.k));
         const Bootstrap boot = bootstrapChains(Ik, l.chains, pick);
         l.b = boot.b;

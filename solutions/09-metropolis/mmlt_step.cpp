@@ -23,7 +23,7 @@ float mmltStep(MultiplexedChain& chain, const MMLTMutations& m, Rng& rng, const 
     //!          small step chain.paths takes chain.proposed (std::swap) and both streams accept();
     //!          else both streams reject() (large or small). Return a.
     //!          Pitfall: min(1, I(y) / I(x)) for the technique mutation too: next to the ends its
-    //!          T are not equal (Eq. 9.13), and the end techniques come out too dark.
+    //!          T are not equal (Eq. 9.13), and the chain visits the end techniques too rarely.
     //! STUB (void)chain; (void)m; (void)rng; (void)trace; (void)target; (void)splat;
     //! STUB return PS_TODO("lesson 09: mmltStep", 0.0f);
     //! BEGIN

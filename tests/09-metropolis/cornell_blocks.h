@@ -14,7 +14,8 @@ struct Rendered {
     ps::Image mean;
     ps::SampleStats stats;
 };
-inline Rendered renderWith(ps::Integrator& integrator, const ps::Scene& scene, int spp, uint64_t seed, int threads = 1) {
+inline Rendered renderWith(ps::Integrator& integrator, const ps::Scene& scene, int spp, uint64_t seed,
+                           int threads = 1) {
     ps::RenderOptions opt;
     opt.spp = spp;
     opt.seed = seed;

@@ -59,10 +59,9 @@ TEST_CASE("MMLT: each path length's b_k is the light of that length in the refer
     ps::MMLTSettings settings;
     settings.bootstrapPerPixel = 48;
     const MMLTRender r = renderMMLT(scene, settings, 1, ps::testseed::seed(1301));
-    REQUIRE_MESSAGE(r.lengths.size() == 3, "mmlt with maximum depth 2 should have path lengths 1 .. 3, got "
-                                               << r.lengths.size());
-    const Measured depth[3] = {referenceLuminance("cornell-box-16-depth0"),
-                               referenceLuminance("cornell-box-16-depth1"),
+    REQUIRE_MESSAGE(r.lengths.size() == 3,
+                    "mmlt with maximum depth 2 should have path lengths 1 .. 3, got " << r.lengths.size());
+    const Measured depth[3] = {referenceLuminance("cornell-box-16-depth0"), referenceLuminance("cornell-box-16-depth1"),
                                referenceLuminance("cornell-box-16-depth2")};
     const double a = ps::stats::sidak(alpha(), 3);
     const double zCrit = [a] {  // two-sided critical value of the standard normal at level a
@@ -84,25 +83,28 @@ TEST_CASE("MMLT: each path length's b_k is the light of that length in the refer
         std::string why;
         if (!(l.b > 0.0)) why = "no light found at this length";
         else if (std::abs(ratio * (k + 1) - 1.0) < 0.1)
-            why = "b_k is about p_k(s) = 1 / (k + 1) of it: the target is missing the division by the probability of "
-                  "choosing the technique (Eq. 9.12)";
+            why =
+                "b_k is about p_k(s) = 1 / (k + 1) of it: the target is missing the division by the probability of "
+                "choosing the technique (Eq. 9.12)";
         else if (ratio > 1.5)
-            why = "b_k is too large: every technique counting the whole path (the MIS weight left out of the target), "
-                  "or t = 1 without the factor 1 / (w h)?";
+            why =
+                "b_k is too large: every technique counting the whole path (the MIS weight left out of the target), "
+                "or t = 1 without the factor 1 / (w h)?";
         else why = "the target of Eq. 9.12, or the mean of Eq. 9.15";
         CHECK_MESSAGE(std::abs(z) <= zCrit,
                       "path length k = " << k << ": expected b_k = " << num(want) << " (the reference's mean luminance "
-                                         << "at length k), got " << num(l.b) << " +- " << num(l.bStdError)
-                                         << " (ratio " << num(ratio) << ", z = " << num(z) << ", |z| <= "
-                                         << num(zCrit) << " at alpha " << num(a) << " to pass): " << why);
+                                         << "at length k), got " << num(l.b) << " +- " << num(l.bStdError) << " (ratio "
+                                         << num(ratio) << ", z = " << num(z) << ", |z| <= " << num(zCrit)
+                                         << " at alpha " << num(a) << " to pass): " << why);
         CHECK_MESSAGE(l.bStdError <= 0.03 * want,
                       "path length k = " << k << ": b_k's standard error " << num(l.bStdError) << " exceeds 3 % of "
                                          << num(want) << " (" << l.seeds << " seed samples)");
     }
 }
 
-TEST_CASE("MMLT: multiplexed MLT equals the path-traced reference on the Cornell box (block t-tests of independent "
-          "chains) [2 pts]") {
+TEST_CASE(
+    "MMLT: multiplexed MLT equals the path-traced reference on the Cornell box (block t-tests of independent "
+    "chains) [2 pts]") {
     ps::MMLTSettings settings;
     settings.chains = 16;
     settings.bootstrapPerPixel = 32;

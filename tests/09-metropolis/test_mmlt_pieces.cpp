@@ -49,8 +49,9 @@ std::string diagnoseTarget(const ps::Color& got, const ps::Color& unweighted, fl
 
 }  // namespace
 
-TEST_CASE("MMLT: the target is a technique's MIS-weighted contribution over the probability of choosing it (Eq. "
-          "9.12) [2 pts]") {
+TEST_CASE(
+    "MMLT: the target is a technique's MIS-weighted contribution over the probability of choosing it (Eq. "
+    "9.12) [2 pts]") {
     // p_k and the choice of s, exactly.
     int wrong = 0;
     for (int k = 1; k <= 10; ++k) {
@@ -72,9 +73,8 @@ TEST_CASE("MMLT: the target is a technique's MIS-weighted contribution over the 
     // (four lights of different areas: the s = 1 weight must read the light vertex it sampled).
     int checked[3] = {0, 0, 0};  // t = 1, s = 0, others: valid techniques compared
     int bad = 0;
-    for (const char* name :
-         {"scenes/cornell-box.scene", "scenes/cornell-caustics.scene", "scenes/cornell-background.scene",
-          "scenes/veach-plates.scene"}) {
+    for (const char* name : {"scenes/cornell-box.scene", "scenes/cornell-caustics.scene",
+                             "scenes/cornell-background.scene", "scenes/veach-plates.scene"}) {
         const ps::Scene scene = loadSceneAt(name, 16, 16);
         const float pixels = 16.0f * 16.0f;
         ps::SubpathPair paths;
@@ -118,13 +118,13 @@ TEST_CASE("MMLT: the target is a technique's MIS-weighted contribution over the 
     }
     CHECK_MESSAGE(bad == 0, bad << " technique targets differ");
     CHECK_MESSAGE((checked[0] >= 20 && checked[1] >= 20 && checked[2] >= 20),
-                  "expected at least 20 lit paths of each kind (t = 1, s = 0, other), got " << checked[0] << ", "
-                                                                                            << checked[1] << ", "
-                                                                                            << checked[2]);
+                  "expected at least 20 lit paths of each kind (t = 1, s = 0, other), got "
+                      << checked[0] << ", " << checked[1] << ", " << checked[2]);
 }
 
-TEST_CASE("MMLT: the technique mutation proposes a neighbouring technique with both transition probabilities (Eq. "
-          "9.13) [1 pt]") {
+TEST_CASE(
+    "MMLT: the technique mutation proposes a neighbouring technique with both transition probabilities (Eq. "
+    "9.13) [1 pt]") {
     for (int k = 1; k <= 6; ++k)
         for (int s = 0; s <= k; ++s)
             for (const float u : {0.0f, 0.25f, 0.4999f, 0.5f, 0.75f, 0.99999994f}) {
@@ -137,19 +137,21 @@ TEST_CASE("MMLT: the technique mutation proposes a neighbouring technique with b
                 else if (p.Txy == tyx && p.Tyx == txy && txy != tyx)
                     why = "the two transition probabilities are swapped";
                 else if (p.Txy == p.Tyx && txy != tyx)
-                    why = "next to an end T(s -> s') and T(s' -> s) differ: each is 1 / (the neighbours of where the "
-                          "move starts)";
+                    why =
+                        "next to an end T(s -> s') and T(s' -> s) differ: each is 1 / (the neighbours of where the "
+                        "move starts)";
                 else if (p.Txy != txy || p.Tyx != tyx) why = "T(a -> b) = 1 / (number of neighbours of a in 0 .. k)";
-                CHECK_MESSAGE(why.empty(), "mutateTechnique(s " << s << ", k " << k << ", u " << u
-                                                                << "): expected s' = " << to << ", T(s -> s') = "
-                                                                << num(txy) << ", T(s' -> s) = " << num(tyx)
-                                                                << "; got s' = " << p.y << ", " << num(p.Txy) << ", "
-                                                                << num(p.Tyx) << ": " << why);
+                CHECK_MESSAGE(why.empty(), "mutateTechnique(s "
+                                               << s << ", k " << k << ", u " << u << "): expected s' = " << to
+                                               << ", T(s -> s') = " << num(txy) << ", T(s' -> s) = " << num(tyx)
+                                               << "; got s' = " << p.y << ", " << num(p.Txy) << ", " << num(p.Tyx)
+                                               << ": " << why);
             }
 }
 
-TEST_CASE("MMLT: one step: a technique mutation keeps the subpaths, large and small steps move both streams, "
-          "accepted with the transition probabilities, splatted with expected values (Eq. 9.13, 9.14) [2 pts]") {
+TEST_CASE(
+    "MMLT: one step: a technique mutation keeps the subpaths, large and small steps move both streams, "
+    "accepted with the transition probabilities, splatted with expected values (Eq. 9.13, 9.14) [2 pts]") {
     // A tracer and a target of the test's own on a 4 x 4 "image", path length k = 4. The tracer
     // reads three numbers of the camera stream (the raster position and a colour) and one of the
     // light stream; technique s carries a bump of its own around a different colour (so each
@@ -170,7 +172,8 @@ TEST_CASE("MMLT: one step: a technique mutation keeps the subpaths, large and sm
         const float u = p.uLight, v = p.uPos.x;
         const float bump = std::max(0.0f, 1.0f - std::abs(u * float(kLength + 1) - float(s) - 0.5f));
         y.raster = s == kLength ? ps::Vec2(4.0f * v, 4.0f * u) : p.raster;
-        y.L = ps::Color(0.2f + u, 1.0f - 0.9f * v, 0.5f) * ((0.05f + bump) * (std::fmod(23.0f * u, 1.0f) < 0.25f ? 0.0f : 1.0f));
+        y.L = ps::Color(0.2f + u, 1.0f - 0.9f * v, 0.5f) *
+              ((0.05f + bump) * (std::fmod(23.0f * u, 1.0f) < 0.25f ? 0.0f : 1.0f));
         y.I = ps::luminance(y.L);
         return y;
     };
@@ -244,8 +247,9 @@ TEST_CASE("MMLT: one step: a technique mutation keeps the subpaths, large and sm
         };
         std::vector<Splat> got;
         traced = 0;
-        const float ga = ps::mmltStep(chain, m, rng, trace, target,
-                                      [&](const ps::Vec2& p, const ps::Color& c) { got.push_back({p, c}); });
+        const float ga = ps::mmltStep(chain, m, rng, trace, target, [&](const ps::Vec2& p, const ps::Color& c) {
+            got.push_back({p, c});
+        });
         const int tracedNow = traced;
         double lum = 0.0;
         for (const Splat& sp : got) lum += ps::luminance(sp.c);
@@ -283,15 +287,16 @@ TEST_CASE("MMLT: one step: a technique mutation keeps the subpaths, large and sm
             else if (kind == 1 && chain.s == copy.s && s != copy.s && accept)
                 why << "a large step chooses a new technique with selectTechnique(k, rng.uniform())";
             else
-                why << "the chain after the step: " << (accept ? "accepted: s', y, the proposal's subpaths (a large or "
-                                                                 "small step) and both streams accept()"
-                                                               : "rejected: as before, both streams reject()");
-            FAIL_CHECK("step " << step << " (" << kinds[kind] << " from s = " << copy.s << " to s' = " << s
-                               << ", I(x) " << num(x.I) << ", I(y) " << num(y.I) << ", T(s -> s') " << txy
-                               << ", T(s' -> s) " << tyx << "): expected a = " << num(a) << ", the chain "
-                               << (accept ? "at y" : "still at x") << "; got a = " << num(ga) << ", " << got.size()
-                               << " splats of total luminance " << num(lum) << ", s = " << chain.s << ", "
-                               << tracedNow << " subpath pairs traced: " << why.str());
+                why << "the chain after the step: "
+                    << (accept ? "accepted: s', y, the proposal's subpaths (a large or "
+                                 "small step) and both streams accept()"
+                               : "rejected: as before, both streams reject()");
+            FAIL_CHECK("step " << step << " (" << kinds[kind] << " from s = " << copy.s << " to s' = " << s << ", I(x) "
+                               << num(x.I) << ", I(y) " << num(y.I) << ", T(s -> s') " << txy << ", T(s' -> s) " << tyx
+                               << "): expected a = " << num(a) << ", the chain " << (accept ? "at y" : "still at x")
+                               << "; got a = " << num(ga) << ", " << got.size() << " splats of total luminance "
+                               << num(lum) << ", s = " << chain.s << ", " << tracedNow
+                               << " subpath pairs traced: " << why.str());
         }
         counts[kind][accept ? 0 : 1]++;
     }
