@@ -10,7 +10,7 @@
 #                works and every figure is written; the images are noisy. CI runs it.
 #   --build DIR  the build to use (default: build; configured and built if missing)
 #
-# Full budgets take about 40 minutes on 2 cores (most of it rendering references).
+# Full budgets take about 50 minutes on 2 cores (most of it rendering references).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 src="$PWD"
@@ -127,14 +127,19 @@ if wanted 07; then
   done_fig "$d/caustics-equal-spp.png, caustics-regions.md, caustics-efficiency.md"
 fi
 
-# Lesson 9: Veach's door, pt and pssmlt at equal time (lessons/09 README, "What it buys").
+# Lesson 9: pt, bpt, pssmlt and mmlt at equal time, pathspace converge on Veach's door (where MLT
+# should win: 128 x 128, 10 s each) and on the Cornell box (where it should not: 64 x 64, 5 s each),
+# 2 seeds (lessons/09 README, "What MLT buys").
 if wanted 09; then
-  d="$(dest 09-metropolis)"; s="$(scene door 128)"
-  for a in pt pssmlt; do
-    "$ps" render "$s" --algo "$a" --time "$(t 20 0.3)" --threads 1 --out "$work/door-$a.png" --no-progress > "$work/door-$a.log"
-    cp "$work/door-$a.png" "$d/door-$a.png"
+  d="$(dest 09-metropolis)"
+  for c in "door door 128 480 10" "cornell-box cornell 64 120 5"; do
+    set -- $c
+    s="$(scene "$1" "$3")"; r="$(reference pt "$(t "$4" 2)" "$s")"
+    converge "$s" "$r" "$work/09-$2" --algos pt,bpt,pssmlt,mmlt --time "$(t "$5" 0.2)" --seeds "$(t 2 1)"
+    cp "$work/09-$2/equal-time.png" "$d/$2-equal-time.png"; cp "$work/09-$2/convergence.svg" "$d/$2-converge.svg"
+    cp "$work/09-$2/efficiency.md" "$d/$2-efficiency.md"
+    done_fig "$d/$2-equal-time.png, $2-converge.svg, $2-efficiency.md"
   done
-  done_fig "$d/door-pt.png, door-pssmlt.png"
 fi
 
 # Every image a slide deck shows from a lesson folder must be one this script makes (so one command

@@ -1,0 +1,71 @@
+// Lesson 9 — one step of a multiplexed MLT chain: a technique mutation, a large or a small step,
+// accepted with the transition probabilities and splatted with expected values. Interface:
+// lessons/09-metropolis/mmlt.h. Equation numbers refer to lessons/09-metropolis/README.md.
+#include <algorithm>
+#include <utility>
+#include "09-metropolis/mmlt.h"
+#include "todo.h"
+
+namespace ps {
+
+float mmltStep(MultiplexedChain& chain, const MMLTMutations& m, Rng& rng, const SubpathTracer& trace,
+               const TechniqueTarget& target, const SplatFunction& splat) {
+    //! TODO(09) Eq. 9.13, 9.14: uKind = rng.uniform(); x = chain.current.
+    //!          Technique mutation (uKind < m.pTechnique): p = mutateTechnique(chain.s, chain.k,
+    //!          rng.uniform()); y = target(chain.paths, s' = int(p.y)): the same subpaths, no stream
+    //!          touched; a = acceptance(I(x), I(y), p) (Eq. 9.2 with p's T).
+    //!          Else large (uKind < m.pTechnique + m.pLarge) or small: startProposal(large) on both
+    //!          streams; s' = selectTechnique(chain.k, rng.uniform()) if large, else chain.s; two
+    //!          Rngs replaying chain.camera and chain.light; trace(camera, light, chain.proposed);
+    //!          y = target(chain.proposed, s'); a = min(1, I(y) / I(x)) (symmetric: no T).
+    //!          Splat x.L (1 - a) / I(x) at x.raster and y.L a / I(y) at y.raster (weights > 0).
+    //!          rng.uniform() < a: accept: chain.s = s', chain.current = y, and for a large or
+    //!          small step chain.paths takes chain.proposed (std::swap) and both streams accept();
+    //!          else both streams reject() (large or small). Return a.
+    //!          Pitfall: min(1, I(y) / I(x)) for the technique mutation too: next to the ends its
+    //!          T are not equal (Eq. 9.13), and the chain visits the end techniques too rarely.
+    //! STUB (void)chain; (void)m; (void)rng; (void)trace; (void)target; (void)splat;
+    //! STUB return PS_TODO("lesson 09: mmltStep", 0.0f);
+    //! BEGIN
+    const float uKind = rng.uniform();
+    const PathSample x = chain.current;
+    const bool technique = uKind < m.pTechnique;
+    const bool large = !technique && uKind < m.pTechnique + m.pLarge;
+    int s = chain.s;
+    PathSample y;
+    float a = 0.0f;
+    if (technique) {
+        const Proposal p = mutateTechnique(chain.s, chain.k, rng.uniform());
+        s = int(p.y);
+        y = target(chain.paths, s);
+        a = float(acceptance(x.I, y.I, p));
+    } else {
+        chain.camera.startProposal(large);
+        chain.light.startProposal(large);
+        if (large) s = selectTechnique(chain.k, rng.uniform());
+        Rng camera, light;
+        camera.replayFrom(&chain.camera);
+        light.replayFrom(&chain.light);
+        trace(camera, light, chain.proposed);
+        y = target(chain.proposed, s);
+        a = std::min(1.0f, y.I / x.I);
+    }
+    if (a < 1.0f) splat(x.raster, x.L * ((1.0f - a) / x.I));
+    if (a > 0.0f) splat(y.raster, y.L * (a / y.I));
+    if (rng.uniform() < a) {
+        chain.s = s;
+        chain.current = y;
+        if (!technique) {
+            std::swap(chain.paths, chain.proposed);
+            chain.camera.accept();
+            chain.light.accept();
+        }
+    } else if (!technique) {
+        chain.camera.reject();
+        chain.light.reject();
+    }
+    return a;
+    //! END
+}
+
+}  // namespace ps
