@@ -45,6 +45,7 @@ const char* const kMotorbike = "/usr/share/doc/openfoam-examples/examples/resour
 struct Options {
     bool quick = false;
     int passes = 5;  // timed passes per tracer, ray set and thread count
+    std::string only;  // one scene by name (empty: all)
     std::string scenesDir = PATHSPACE_SOURCE_DIR "/scenes";
 };
 
@@ -306,13 +307,14 @@ std::string cpuModel() {
 
 void usage(std::FILE* out) {
     std::fprintf(out,
-                 "usage: bvh_bench [--quick] [--passes N] [--scenes DIR]\n"
+                 "usage: bvh_bench [--quick] [--passes N] [--scenes DIR] [--only NAME]\n"
                  "The framework BVH's build time and ray throughput (Mrays/s) on primary, incoherent and\n"
                  "shadow rays, 1 and 2 threads; with Embree (libembree-dev at configure time) its figures on\n"
                  "the same rays, interleaved, and the ratio ours / Embree. Every hit is checked.\n"
                  "  --quick       Cornell box and a small generated mesh, 2^14 rays, one pass (a smoke test)\n"
                  "  --passes N    timed passes per tracer, ray set and thread count (default 5)\n"
                  "  --scenes DIR  where cornell-box.scene is (default: %s)\n"
+                 "  --only NAME   only that scene (cornell-box, noisy-sphere, bunny, motorbike)\n"
                  "Real meshes, when installed: %s (apt-get install glmark2-data),\n"
                  "  %s (apt-get install openfoam-examples)\n",
                  PATHSPACE_SOURCE_DIR "/scenes", kBunny, kMotorbike);
@@ -331,6 +333,7 @@ int main(int argc, char** argv) {
         if (a == "--quick") opt.quick = true;
         else if (a == "--passes" && i + 1 < argc) opt.passes = std::max(1, std::atoi(argv[++i]));
         else if (a == "--scenes" && i + 1 < argc) opt.scenesDir = argv[++i];
+        else if (a == "--only" && i + 1 < argc) opt.only = argv[++i];
         else {
             std::fprintf(stderr, "bvh_bench: unknown or incomplete option '%s'\n", a.c_str());
             usage(stderr);
@@ -388,6 +391,7 @@ int main(int argc, char** argv) {
     bool ok = true;
     const auto tStart = Clock::now();
     for (Bench& b : benches) {
+        if (!opt.only.empty() && b.name != opt.only) continue;
         const Scene& s = b.scene;
         std::vector<AABB> boxes(s.triangles.size());
         for (size_t i = 0; i < boxes.size(); ++i) boxes[i] = s.triangles[i].bounds();

@@ -32,7 +32,7 @@
 namespace ps {
 
 struct alignas(64) WideNode {
-    static constexpr int kWidth = 4;
+    static constexpr int kWidth = 8;
     static constexpr uint32_t kInner = 0xffffffffu;  // count of an inner child
     float lo[3][kWidth], hi[3][kWidth];
     uint32_t child[kWidth];
@@ -66,7 +66,8 @@ struct BoxHits {
 class BVH {
 public:
     static constexpr int kBins = 16;
-    static constexpr int kMaxLeafSize = 4;
+    static constexpr int kMaxLeafSize = 8;
+    static constexpr float kTraversalCost = 2.0f;  // of a node, relative to one primitive test (SAH)
     static constexpr int kMaxDepth = 100;  // deeper subtrees become leaves; bounds the stack
 
     // Builds over the primitives' boxes; primitive i of the caller is reported as i.
@@ -130,7 +131,8 @@ bool BVH::traverse(Ray& ray, bool anyHit, HitItem&& hitItem) const {
         uint32_t child, count;  // as in WideNode
         float enter;            // where the ray enters its box
     };
-    Entry stack[3 * kMaxDepth + 4];  // each level leaves at most 3 siblings behind
+    // Each level leaves at most kWidth - 1 siblings behind, and the last push writes one more.
+    Entry stack[(WideNode::kWidth - 1) * kMaxDepth + 2];
     int top = 0;
     stack[top++] = {0, WideNode::kInner, 0.0f};
     bool hit = false;
@@ -148,8 +150,17 @@ bool BVH::traverse(Ray& ray, bool anyHit, HitItem&& hitItem) const {
         }
         const WideNode& n = nodes_[e.child];
         const BoxHits h = intersectBoxes(n, boxRay, ray.tMax);
-        // Push the children the ray enters, sorted so that the nearest is on top.
+        // Push the children the ray enters. Any hit: in any order, each child written and kept
+        // only if hit (no branch per child, which incoherent rays would mispredict). Closest
+        // hit: sorted by entry distance, the nearest on top, so that it is visited next.
         const int bottom = top;
+        if (anyHit) {
+            for (int c = 0; c < WideNode::kWidth; ++c) {
+                stack[top] = {n.child[c], n.count[c], h.enter[c]};
+                top += h.hit[c];
+            }
+            continue;
+        }
         for (int c = 0; c < WideNode::kWidth; ++c) {
             if (!h.hit[c]) continue;
             int j = top++;

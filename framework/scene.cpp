@@ -251,14 +251,22 @@ bool Scene::intersect(Ray& ray, SurfacePoint& sp) const {
         return true;
     });
     if (hitItem == kNoPrimitive) return false;
-    // Only now the surface point, once for the closest hit.
+    // Only now the surface point, once, for the closest hit.
     const Item& it = items_[hitItem];
-    if (it.sphere == kNoPrimitive) {
-        // Barycentric interpolation is more accurate than o + t d far from the origin.
-        sp = surfacePoint(it.prim, (1.0f - hb1 - hb2) * it.tri.p0 + hb1 * it.tri.p1 + hb2 * it.tri.p2);
-    } else {
+    if (it.sphere != kNoPrimitive) {
         sp = surfacePoint(it.prim, ray.at(ray.tMax));
+        return true;
     }
+    // surfacePoint(), from the item's copy of the triangle. Barycentric interpolation is more
+    // accurate than o + t d far from the origin.
+    const Primitive& pr = prims[it.prim];
+    sp = SurfacePoint();
+    sp.p = (1.0f - hb1 - hb2) * it.tri.p0 + hb1 * it.tri.p1 + hb2 * it.tri.p2;
+    sp.n = it.tri.normal();
+    sp.errScale = it.tri.errScale();
+    sp.prim = it.prim;
+    sp.material = pr.material;
+    sp.light = pr.light;
     return true;
 }
 
