@@ -44,7 +44,7 @@ const char* const kMotorbike = "/usr/share/doc/openfoam-examples/examples/resour
 
 struct Options {
     bool quick = false;
-    int passes = 5;  // timed passes per tracer, ray set and thread count
+    int passes = 5;    // timed passes per tracer, ray set and thread count
     std::string only;  // one scene by name (empty: all)
     std::string scenesDir = PATHSPACE_SOURCE_DIR "/scenes";
 };
@@ -268,8 +268,8 @@ bool agreesWithBruteForce(const Scene& s, const Ray& ray, bool anyHit, const Hit
     if (ours.prim == kNoPrimitive || ref.prim == kNoPrimitive) return ours.prim == ref.prim;
     if (ours.t != ref.t) return false;
     float t, b1, b2;
-    return ours.prim == ref.prim || (intersectTriangle(ray, WatertightRay(ray), s.triangles[ours.prim], t, b1, b2) &&
-                                     t == ref.t);
+    return ours.prim == ref.prim ||
+           (intersectTriangle(ray, WatertightRay(ray), s.triangles[ours.prim], t, b1, b2) && t == ref.t);
 }
 
 // Two tracers agree: both miss, or both hit the same triangle, or two at a distance equal to
@@ -353,8 +353,9 @@ int main(int argc, char** argv) {
     try {
         const Scene cornell = loadScene(opt.scenesDir + "/cornell-box.scene");
         benches.push_back({"cornell-box", meshScene("cornell-box", cornell.triangles, Vec3(0, 0, -1), res)});
-        benches.push_back({"noisy-sphere", meshScene("noisy-sphere", opt.quick ? noisySphere(40, 80) : noisySphere(200, 400),
-                                                     Vec3(0.0f, 0.3f, -1.0f), res)});
+        benches.push_back(
+            {"noisy-sphere", meshScene("noisy-sphere", opt.quick ? noisySphere(40, 80) : noisySphere(200, 400),
+                                       Vec3(0.0f, 0.3f, -1.0f), res)});
         if (!opt.quick) {
             for (const auto& [name, path, from] : {std::tuple{"bunny", kBunny, Vec3(0, 0, 1)},
                                                    std::tuple{"motorbike", kMotorbike, Vec3(-1, 0.3f, -0.6f)}}) {
@@ -456,12 +457,14 @@ int main(int argc, char** argv) {
                 std::fflush(stdout);
                 if (threads != 1) {
                     for (size_t i = 0; i < ours.size(); ++i)
-                        if (ours[i].prim != oneThread[si][i].prim || ours[i].t != oneThread[si][i].t) ++check.threadsDiffer;
+                        if (ours[i].prim != oneThread[si][i].prim || ours[i].t != oneThread[si][i].t)
+                            ++check.threadsDiffer;
                     continue;
                 }
                 oneThread[si] = ours;
                 // Checks, once per set: every ray against Embree, a sample against brute force.
-                const size_t sample = std::min(set.rays.size(), std::max<size_t>(64, (size_t(1) << 27) / s.triangles.size()));
+                const size_t sample =
+                    std::min(set.rays.size(), std::max<size_t>(64, (size_t(1) << 27) / s.triangles.size()));
                 for (size_t i = 0; i < set.rays.size(); ++i) {
                     bool brute = i % std::max<size_t>(1, set.rays.size() / sample) == 0;
 #ifdef PATHSPACE_HAVE_EMBREE
@@ -481,16 +484,18 @@ int main(int argc, char** argv) {
                 }
             }
         }
-        std::printf("%-13s checks: %llu rays against Embree (%llu differ), %llu against brute force (%llu wrong), "
-                    "%llu differ between 1 and 2 threads\n",
-                    "", (unsigned long long)check.vsEmbree, (unsigned long long)check.embreeDiffers,
-                    (unsigned long long)check.vsBrute, (unsigned long long)check.wrong,
-                    (unsigned long long)check.threadsDiffer);
+        std::printf(
+            "%-13s checks: %llu rays against Embree (%llu differ), %llu against brute force (%llu wrong), "
+            "%llu differ between 1 and 2 threads\n",
+            "", (unsigned long long)check.vsEmbree, (unsigned long long)check.embreeDiffers,
+            (unsigned long long)check.vsBrute, (unsigned long long)check.wrong,
+            (unsigned long long)check.threadsDiffer);
         ok = ok && check.wrong == 0 && check.threadsDiffer == 0;
     }
     std::printf("total time %.1f s; load average %s at the end\n", secondsSince(tStart), loadAverage().c_str());
     if (!ok) {
-        std::fprintf(stderr, "bvh_bench: the BVH returned hits that brute force does not, or that depend on the threads\n");
+        std::fprintf(stderr,
+                     "bvh_bench: the BVH returned hits that brute force does not, or that depend on the threads\n");
         return 1;
     }
     return 0;

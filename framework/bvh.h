@@ -1,23 +1,25 @@
 // The framework's bounding volume hierarchy, built in two stages:
 //   1. a binary tree by binned SAH (Wald 2007), the textbook build;
-//   2. that tree collapsed into 4-wide nodes, which keep the boxes of their (up to) four
-//      children side by side, so that one plain loop tests a ray against all four boxes: the
-//      compiler turns each line of it into one 4-wide SIMD instruction (SSE on x86-64, NEON on
-//      ARM64; no intrinsics, no special flags).
+//   2. that tree collapsed into 8-wide nodes, which keep the boxes of their (up to) eight
+//      children side by side, so that one plain loop tests a ray against all eight boxes: the
+//      compiler turns each line of it into SIMD instructions for several children at once (two
+//      4-wide SSE instructions on any x86-64, NEON on ARM64; no intrinsics, no special flags).
 //
-// One wide node (128 bytes, two cache lines), children c0..c3:
+// One wide node (256 bytes, four cache lines), children c0..c7:
 //
-//      lo[0] = x  | c0 | c1 | c2 | c3 |   the boxes, structure of arrays: lo[axis][child]
-//      lo[1] = y  | c0 | c1 | c2 | c3 |
-//      lo[2] = z  | c0 | c1 | c2 | c3 |
-//      hi[0..2]   |  the same for the upper corners  |
-//      child      | c0 | c1 | c2 | c3 |   an inner child: its node's index in nodes();
-//      count      | c0 | c1 | c2 | c3 |   a leaf: its first item, and count = its number of items
-//                                         (kInner for an inner child; an unused slot: a leaf of 0
-//                                         items whose box lo = hi = +inf no ray reaches)
+//      lo[0] = x  | c0 | c1 | c2 | c3 | c4 | c5 | c6 | c7 |   the boxes, structure of arrays:
+//      lo[1] = y  | c0 | c1 | c2 | c3 | c4 | c5 | c6 | c7 |   lo[axis][child]
+//      lo[2] = z  | c0 | c1 | c2 | c3 | c4 | c5 | c6 | c7 |
+//      hi[0..2]   |      the same for the upper corners      |
+//      child      | c0 | c1 | c2 | c3 | c4 | c5 | c6 | c7 |   inner child: its index in nodes();
+//      count      | c0 | c1 | c2 | c3 | c4 | c5 | c6 | c7 |   leaf: its first item, and count =
+//                                                             its number of items
+//      (count = kInner for an inner child; an unused slot is a leaf of 0 items whose box,
+//      lo = hi = +inf, no ray reaches)
 //
 // Items are the caller's primitives in leaf order (item i is primitive order()[i]); a leaf is a
-// run of consecutive items, so the caller can store what its primitive test reads in that order:
+// run of consecutive items, so the caller can store what its primitive test reads in that order
+// (Scene keeps a copy of each triangle there) and a leaf's test reads adjacent memory:
 //
 //      items   | leaf A: 3 | leaf B: 1 | leaf C: 4 | ...
 //
@@ -68,7 +70,7 @@ public:
     static constexpr int kBins = 16;
     static constexpr int kMaxLeafSize = 8;
     static constexpr float kTraversalCost = 2.0f;  // of a node, relative to one primitive test (SAH)
-    static constexpr int kMaxDepth = 100;  // deeper subtrees become leaves; bounds the stack
+    static constexpr int kMaxDepth = 100;          // deeper subtrees become leaves; bounds the stack
 
     // Builds over the primitives' boxes; primitive i of the caller is reported as i.
     void build(const std::vector<AABB>& primBoxes);
@@ -100,9 +102,10 @@ private:
     int depth_ = 0;
 };
 
-// The slab test of one ray against a node's four boxes at once: GCC and Clang turn the loop over
-// the children into 4-wide SIMD instructions (each line of its body one instruction for all four
-// boxes). The far distance is multiplied by 1 + 2 gamma(3) so that float rounding never misses a
+// The slab test of one ray against all of a node's boxes at once: GCC (-O3, the Release default;
+// `-fopt-info-vec` reports "loop vectorized" for this line) and Clang turn the loop over the
+// children into 4-wide SIMD instructions, each line of its body one instruction per four boxes.
+// No early exit, no branch: every child is tested, the unused ones too. The far distance is multiplied by 1 + 2 gamma(3) so that float rounding never misses a
 // box (Ize 2013). NaN-safe: a slab gives NaN only for a ray lying in one of its planes (0 * inf),
 // and NaN compares false, so tNear or tFar is then the other plane's (the ray is in the slab) or
 // NaN, which leaves t0 and t1 as they were. t0 only grows and t1 only shrinks: one test at the end.

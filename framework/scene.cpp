@@ -159,7 +159,8 @@ void Scene::findSurfacePointLights() {
                 if (!inside) continue;
                 if (node.count[k] == WideNode::kInner) stack.push_back(node.child[k]);
                 else
-                    for (uint32_t j = node.child[k]; j < node.child[k] + node.count[k]; ++j) near.push_back(bvh.order()[j]);
+                    for (uint32_t j = node.child[k]; j < node.child[k] + node.count[k]; ++j)
+                        near.push_back(bvh.order()[j]);
             }
         }
         std::sort(near.begin(), near.end());

@@ -262,19 +262,10 @@ TEST_CASE("bvh: axis-parallel rays, including rays in the planes of the boxes") 
             tris.push_back({Vec3(0, x, y), Vec3(0, x, y + 1), Vec3(1, x, y)});      // in y = i
         }
     const Scene s = makeScene(tris, {});
-    const Vec3 dirs[] = {Vec3(1, 0, 0),
-                         Vec3(-1, 0, 0),
-                         Vec3(0, 1, 0),
-                         Vec3(0, -1, 0),
-                         Vec3(0, 0, 1),
-                         Vec3(0, 0, -1),
-                         glm::normalize(Vec3(1, 1, 0)),
-                         glm::normalize(Vec3(0, -1, 1)),
-                         glm::normalize(Vec3(1, 0, -1)),
+    const Vec3 dirs[] = {Vec3(1, 0, 0), Vec3(-1, 0, 0), Vec3(0, 1, 0), Vec3(0, -1, 0), Vec3(0, 0, 1), Vec3(0, 0, -1),
+                         glm::normalize(Vec3(1, 1, 0)), glm::normalize(Vec3(0, -1, 1)), glm::normalize(Vec3(1, 0, -1)),
                          // -0 components: 1/d = -inf, and the ray lies in box planes.
-                         Vec3(1, -0.0f, -0.0f),
-                         Vec3(-0.0f, -1, -0.0f),
-                         Vec3(-0.0f, 0.0f, 1),
+                         Vec3(1, -0.0f, -0.0f), Vec3(-0.0f, -1, -0.0f), Vec3(-0.0f, 0.0f, 1),
                          glm::normalize(Vec3(-1, -1, -0.0f))};
     std::vector<Ray> rays;
     for (const Vec3& d : dirs)
@@ -367,10 +358,10 @@ TEST_CASE("bvh: intersect reports the hit point, normal and material of the clos
 TEST_CASE("bvh: degenerate triangles, axis-parallel rays and origins inside the boxes") {
     Rng rng(404);
     std::vector<Triangle> tris = randomSoup(3000, 0.7f, rng);
-    for (int i = 0; i < 3000; i += 5) tris[i].p2 = tris[i].p1;                                   // two equal corners
-    for (int i = 1; i < 3000; i += 7) tris[i].p2 = 0.5f * (tris[i].p0 + tris[i].p1);             // collinear
-    for (int i = 2; i < 3000; i += 11) tris[i].p1 = tris[i].p2 = tris[i].p0;                     // a point
-    for (int i = 3; i < 3000; i += 13) tris[i].p1.z = tris[i].p2.z = tris[i].p0.z;               // axis-aligned
+    for (int i = 0; i < 3000; i += 5) tris[i].p2 = tris[i].p1;                        // two equal corners
+    for (int i = 1; i < 3000; i += 7) tris[i].p2 = 0.5f * (tris[i].p0 + tris[i].p1);  // collinear
+    for (int i = 2; i < 3000; i += 11) tris[i].p1 = tris[i].p2 = tris[i].p0;          // a point
+    for (int i = 3; i < 3000; i += 13) tris[i].p1.z = tris[i].p2.z = tris[i].p0.z;    // axis-aligned
     const Scene s = makeScene(tris, {});
     checkStructure(s);
     std::vector<Ray> rays = makeRays(s, 2000, rng);
