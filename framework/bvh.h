@@ -68,8 +68,7 @@ struct BoxHits {
 class BVH {
 public:
     static constexpr int kBins = 16;
-    static constexpr int kMaxLeafSize = 8;
-    static constexpr float kTraversalCost = 2.0f;  // of a node, relative to one primitive test (SAH)
+    static constexpr int kMaxLeafSize = 4;
     static constexpr int kMaxDepth = 100;          // deeper subtrees become leaves; bounds the stack
 
     // Builds over the primitives' boxes; primitive i of the caller is reported as i.
