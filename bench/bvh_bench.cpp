@@ -463,8 +463,8 @@ int main(int argc, char** argv) {
                 }
                 oneThread[si] = ours;
                 // Checks, once per set: every ray against Embree, a sample against brute force.
-                const size_t sample =
-                    std::min(set.rays.size(), std::max<size_t>(64, (size_t(1) << (opt.quick ? 20 : 27)) / s.triangles.size()));
+                const size_t sample = std::min(
+                    set.rays.size(), std::max<size_t>(64, (size_t(1) << (opt.quick ? 20 : 27)) / s.triangles.size()));
                 for (size_t i = 0; i < set.rays.size(); ++i) {
                     bool brute = i % std::max<size_t>(1, set.rays.size() / sample) == 0;
 #ifdef PATHSPACE_HAVE_EMBREE

@@ -69,7 +69,7 @@ class BVH {
 public:
     static constexpr int kBins = 16;
     static constexpr int kMaxLeafSize = 4;
-    static constexpr int kMaxDepth = 100;          // deeper subtrees become leaves; bounds the stack
+    static constexpr int kMaxDepth = 100;  // deeper subtrees become leaves; bounds the stack
 
     // Builds over the primitives' boxes; primitive i of the caller is reported as i.
     void build(const std::vector<AABB>& primBoxes);
