@@ -1,23 +1,32 @@
-// bvh_bench: figures for the framework's BVH. For each scene: build time, node count and
-// depth; then the throughput (Mrays/s) of primary, incoherent and shadow rays with 1 and 2
-// threads. A benchmark, never a test: nothing is timed against a threshold. bench/README.md
-// explains the columns and lists the figures measured on the course machine.
-//
-// Every ray is generated from fixed seeds (ps::taskRng) before the clock starts, so the
-// timed loops only trace, and the hit counts (checksums) are the same for every run and
-// every thread count.
+// bvh_bench: figures for the framework's BVH (framework/bvh.h), through Scene::intersect and
+// Scene::occluded as the renderers call them, on the Cornell box, a generated mesh and, when
+// their Debian packages are installed, the Stanford bunny (glmark2-data) and the OpenFOAM
+// motorbike (openfoam-examples). Three ray sets per scene, generated from fixed seeds before any
+// clock starts: primary (a 1024 x 1024 pinhole camera), incoherent (origin uniform in the
+// scene's bounds, direction uniform), shadow (segments between two uniform points, any hit).
+// When Embree 3 was found at configure time (libembree-dev; a benchmark-only option, never a
+// dependency of the course), Embree traces the same rays, pass by pass interleaved with ours so
+// that machine load hits both alike, and the table shows the ratio of the two speeds.
+// Every hit is checked: against Embree's (a disagreement is settled by brute force with the
+// framework's own triangle test) and, for a sample of rays, against brute force.
+// A benchmark, never a test: nothing is timed against a threshold. bench/README.md explains it.
 #include <omp.h>
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <exception>
 #include <fstream>
+#include <stdexcept>
 #include <string>
+#include <tuple>
 #include <vector>
 #include "rng.h"
-#include "sampling.h"
 #include "scene.h"
 #include "scene_loader.h"
+#ifdef PATHSPACE_HAVE_EMBREE
+#include <embree3/rtcore.h>
+#endif
 
 #ifndef PATHSPACE_SOURCE_DIR
 #define PATHSPACE_SOURCE_DIR "."
@@ -30,262 +39,285 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double secondsSince(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
-// Fixed seeds, one per kind of ray.
-constexpr uint64_t kSeedPrimary = 0x5eed0001, kSeedIncoherent = 0x5eed0002, kSeedShadow = 0x5eed0003;
-constexpr int kThreadCounts[] = {1, 2};
+const char* const kBunny = "/usr/share/glmark2/models/bunny.obj";
+const char* const kMotorbike = "/usr/share/doc/openfoam-examples/examples/resources/geometry/motorBike.obj.gz";
 
 struct Options {
     bool quick = false;
+    int passes = 5;    // timed passes per tracer, ray set and thread count
+    std::string only;  // one scene by name (empty: all)
     std::string scenesDir = PATHSPACE_SOURCE_DIR "/scenes";
 };
 
-// How much work one scene gets. A figure is the best of `runs` runs; a run traces the primary
-// pool primaryRepeat times and the incoherent and shadow pools once each.
-struct Workload {
-    int primaryPasses = 1;      // jittered passes over all pixels in the primary pool
-    size_t poolSize = 1 << 20;  // incoherent and shadow pools
-    int primaryRepeat = 1;      // passes over the primary pool per run (the others: one)
-    int runs = 3;
-    int buildRuns = 5;
-};
+// ---- scenes -----------------------------------------------------------------------------------
 
-struct Checksum {
-    uint64_t hits = 0;
-    uint64_t primSum = 0;  // sum of (hit primitive + 1): catches a different closest hit
-    bool operator==(const Checksum& o) const { return hits == o.hits && primSum == o.primSum; }
-    bool operator!=(const Checksum& o) const { return !(*this == o); }
-};
-
-struct Result {
-    double mrays = 0.0;  // best run
-    uint64_t raysPerRun = 0;
-    Checksum sum;  // of one run
-};
-
-// One pass over rays[0, n) with the threads omp_set_num_threads chose.
-template <bool AnyHit>
-Checksum traceOnce(const Scene& scene, const std::vector<Ray>& rays, size_t n) {
-    uint64_t hits = 0, primSum = 0;
-    const int64_t count = static_cast<int64_t>(n);
-#pragma omp parallel for schedule(dynamic, 1024) reduction(+ : hits, primSum)
-    for (int64_t i = 0; i < count; ++i) {
-        if constexpr (AnyHit) {
-            hits += scene.occluded(rays[i]) ? 1 : 0;
-        } else {
-            Ray r = rays[i];
-            SurfacePoint sp;
-            if (scene.intersect(r, sp)) {
-                ++hits;
-                primSum += sp.prim + 1u;
-            }
-        }
-    }
-    return {hits, primSum};
-}
-
-template <bool AnyHit>
-Result measure(const Scene& scene, const std::vector<Ray>& pool, int threads, int repeat, int runs, bool& consistent) {
-    omp_set_num_threads(threads);
-    traceOnce<AnyHit>(scene, pool, std::min<size_t>(pool.size(), 1 << 16));  // warm-up
-    Result res;
-    res.raysPerRun = static_cast<uint64_t>(pool.size()) * repeat;
-    double best = 1e300;
-    for (int run = 0; run < runs; ++run) {
-        Checksum sum;
-        const auto t0 = Clock::now();
-        for (int p = 0; p < repeat; ++p) {
-            const Checksum c = traceOnce<AnyHit>(scene, pool, pool.size());
-            sum.hits += c.hits;
-            sum.primSum += c.primSum;
-        }
-        best = std::min(best, secondsSince(t0));
-        if (run == 0) res.sum = sum;
-        else if (sum != res.sum) consistent = false;
-    }
-    res.mrays = static_cast<double>(res.raysPerRun) / best * 1e-6;
-    return res;
-}
-
-// Camera rays through every pixel, jittered within the pixel, `passes` times.
-std::vector<Ray> primaryRays(const Scene& scene, int passes) {
-    const int w = scene.camera.width(), h = scene.camera.height();
-    std::vector<Ray> rays;
-    rays.reserve(static_cast<size_t>(passes) * w * h);
-    for (int pass = 0; pass < passes; ++pass)
-        for (int y = 0; y < h; ++y)
-            for (int x = 0; x < w; ++x) {
-                Rng rng = taskRng(kSeedPrimary, static_cast<uint32_t>(pass), static_cast<uint32_t>(y * w + x));
-                const Vec2 u = rng.uniform2();
-                rays.push_back(scene.camera.generateRay(Vec2(x + u.x, y + u.y)));
-            }
-    return rays;
-}
-
-// A surface point seen through a pixel centre, with the normal turned towards the camera.
-struct HitPoint {
-    SurfacePoint sp;
-    Vec3 facing;
-};
-
-std::vector<HitPoint> visiblePoints(const Scene& scene) {
-    const int w = scene.camera.width(), h = scene.camera.height();
-    std::vector<HitPoint> pts;
-    for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x) {
-            Ray r = scene.camera.generateRay(Vec2(x + 0.5f, y + 0.5f));
-            HitPoint hp;
-            if (!scene.intersect(r, hp.sp)) continue;
-            hp.facing = glm::dot(hp.sp.n, r.d) < 0.0f ? hp.sp.n : -hp.sp.n;
-            pts.push_back(hp);
-        }
-    return pts;
-}
-
-uint32_t pick(Rng& rng, size_t n) { return static_cast<uint32_t>(rng.nextU32() % n); }
-
-// Diffuse bounces: a random visible point, a cosine-weighted direction on its camera side.
-std::vector<Ray> incoherentRays(const Scene& scene, const std::vector<HitPoint>& pts, size_t n) {
-    std::vector<Ray> rays(n);
-    for (size_t i = 0; i < n; ++i) {
-        Rng rng = taskRng(kSeedIncoherent, 0, static_cast<uint32_t>(i));
-        const HitPoint& hp = pts[pick(rng, pts.size())];
-        const Vec3 dir = Frame(hp.facing).toWorld(sampleCosineHemisphere(rng.uniform2()));
-        rays[i] = scene.spawnRay(hp.sp, dir);
-    }
-    return rays;
-}
-
-// Visibility between two different random visible points.
-std::vector<Ray> shadowRays(const Scene& scene, const std::vector<HitPoint>& pts, size_t n) {
-    std::vector<Ray> rays(n);
-    for (size_t i = 0; i < n; ++i) {
-        Rng rng = taskRng(kSeedShadow, 0, static_cast<uint32_t>(i));
-        for (;;) {
-            const uint32_t a = pick(rng, pts.size());
-            const uint32_t b = static_cast<uint32_t>((a + 1 + pick(rng, pts.size() - 1)) % pts.size());
-            if (glm::length(pts[b].sp.p - pts[a].sp.p) > 0.0f) {
-                rays[i] = scene.spawnRayTo(pts[a].sp, pts[b].sp);
-                break;
-            }
-        }
-    }
-    return rays;
-}
-
-// A bumpy sphere (a latitude-longitude grid displaced by a few sines) above a floor, seen by
-// a 512 x 512 camera. rings * segments * 2 triangles, minus the poles' degenerate ones.
-Scene makeNoisySphere(int rings, int segments) {
+// A scene of bare triangles (primitive i = triangle i), one grey material, a camera looking at
+// the bounds' centre from direction `from` with the bounding sphere filling its 1024 x 1024 view.
+Scene meshScene(const std::string& name, std::vector<Triangle> tris, Vec3 from, int res) {
     Scene s;
-    s.path = "(generated noisy sphere)";
+    s.path = name;
     Material grey;
-    grey.name = "grey";
     grey.kind = BSDFKind::Diffuse;
-    grey.albedo = Color(0.7f);
     s.materials.push_back(grey);
+    s.triangles = std::move(tris);
+    for (uint32_t t = 0; t < s.triangles.size(); ++t) s.prims.push_back({ShapeKind::Triangle, t, 0, -1});
+    AABB b;
+    for (const Triangle& t : s.triangles) b.expand(t.bounds());
+    const float r = 0.5f * glm::length(b.extent()), fov = 40.0f;
+    const Vec3 eye = b.center() + glm::normalize(from) * (r / std::sin(0.5f * fov * kPi / 180.0f));
+    s.camera = Camera(eye, b.center(), Vec3(0, 1, 0), fov, res, res);
+    s.finalize();
+    return s;
+}
 
-    const Vec3 c(0.0f, 1.1f, 0.0f);
+// The triangles of an OBJ file (v and f lines; faces fanned; `gzip -dc` reads a .gz).
+std::vector<Triangle> readObj(const std::string& path) {
+    const bool gz = path.size() > 3 && path.compare(path.size() - 3, 3, ".gz") == 0;
+    FILE* f = gz ? popen(("gzip -dc '" + path + "'").c_str(), "r") : std::fopen(path.c_str(), "r");
+    if (!f) throw std::runtime_error("cannot read " + path);
+    std::vector<Vec3> v;
+    std::vector<Triangle> tris;
+    char line[4096];
+    while (std::fgets(line, sizeof line, f)) {
+        if (line[0] == 'v' && line[1] == ' ') {
+            Vec3 p;
+            if (std::sscanf(line + 2, "%f %f %f", &p.x, &p.y, &p.z) == 3) v.push_back(p);
+        } else if (line[0] == 'f' && line[1] == ' ') {
+            std::vector<long> idx;
+            for (char* c = line + 2; *c;) {
+                char* end;
+                const long i = std::strtol(c, &end, 10);
+                if (end == c) break;
+                idx.push_back(i < 0 ? long(v.size()) + i : i - 1);
+                c = end;
+                while (*c && *c != ' ' && *c != '\t') ++c;  // skip /vt/vn
+            }
+            for (size_t k = 2; k < idx.size(); ++k) {
+                if (idx[0] < 0 || size_t(std::max({idx[0], idx[k - 1], idx[k]})) >= v.size()) continue;
+                tris.push_back({v[size_t(idx[0])], v[size_t(idx[k - 1])], v[size_t(idx[k])]});
+            }
+        }
+    }
+    if (gz) pclose(f);
+    else std::fclose(f);
+    if (tris.empty()) throw std::runtime_error(path + ": no triangles");
+    return tris;
+}
+
+// A bumpy sphere (a latitude-longitude grid displaced by a few sines) above a floor: a mesh that
+// needs no package. rings * segments * 2 triangles, minus the poles' degenerate ones.
+std::vector<Triangle> noisySphere(int rings, int segments) {
     auto radius = [](const Vec3& d) {
         return 1.0f + 0.10f * std::sin(6.0f * d.x + 0.3f) * std::sin(7.0f * d.y + 1.1f) * std::sin(5.0f * d.z + 2.0f) +
                0.03f * std::sin(23.0f * d.x + 17.0f * d.y + 0.7f) +
                0.015f * std::sin(41.0f * d.z - 37.0f * d.x + 29.0f * d.y);
     };
-    std::vector<Vec3> v(static_cast<size_t>(rings + 1) * segments);
+    const Vec3 c(0.0f, 1.1f, 0.0f);
+    std::vector<Vec3> v(size_t(rings + 1) * segments);
     for (int i = 0; i <= rings; ++i)
         for (int j = 0; j < segments; ++j) {
             const float theta = kPi * i / rings, phi = 2.0f * kPi * j / segments;
             const Vec3 d(std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi));
-            v[static_cast<size_t>(i) * segments + j] = c + radius(d) * d;
+            v[size_t(i) * segments + j] = c + radius(d) * d;
         }
-    auto addTriangle = [&](Vec3 p0, Vec3 p1, Vec3 p2) {
-        if (glm::dot(glm::cross(p1 - p0, p2 - p0), p0 + p1 + p2 - 3.0f * c) < 0.0f) std::swap(p1, p2);  // outward
-        s.triangles.push_back(Triangle{p0, p1, p2});
-    };
+    std::vector<Triangle> tris;
     for (int i = 0; i < rings; ++i)
         for (int j = 0; j < segments; ++j) {
             const int jn = (j + 1) % segments;
-            const Vec3& a = v[static_cast<size_t>(i) * segments + j];
-            const Vec3& b = v[static_cast<size_t>(i) * segments + jn];
-            const Vec3& cc = v[static_cast<size_t>(i + 1) * segments + j];
-            const Vec3& d = v[static_cast<size_t>(i + 1) * segments + jn];
-            if (i > 0) addTriangle(a, b, d);           // the top ring's first triangle is degenerate
-            if (i < rings - 1) addTriangle(a, d, cc);  // the bottom ring's second one is
+            const Vec3 &a = v[size_t(i) * segments + j], &b = v[size_t(i) * segments + jn];
+            const Vec3 &cc = v[size_t(i + 1) * segments + j], &d = v[size_t(i + 1) * segments + jn];
+            if (i > 0) tris.push_back({a, b, d});
+            if (i < rings - 1) tris.push_back({a, d, cc});
         }
-    const float f = 6.0f;  // the floor, facing up
-    s.triangles.push_back(Triangle{Vec3(-f, 0, -f), Vec3(-f, 0, f), Vec3(f, 0, f)});
-    s.triangles.push_back(Triangle{Vec3(-f, 0, -f), Vec3(f, 0, f), Vec3(f, 0, -f)});
-
-    for (uint32_t t = 0; t < s.triangles.size(); ++t) {
-        Primitive p;
-        p.shape = ShapeKind::Triangle;
-        p.index = t;
-        p.material = 0;
-        s.prims.push_back(p);
-    }
-    s.camera = Camera(Vec3(0.0f, 1.8f, -4.2f), Vec3(0.0f, 1.0f, 0.0f), Vec3(0.0f, 1.0f, 0.0f), 40.0f, 512, 512);
-    s.finalize();
-    return s;
+    const float f = 6.0f;
+    tris.push_back({Vec3(-f, 0, -f), Vec3(-f, 0, f), Vec3(f, 0, f)});
+    tris.push_back({Vec3(-f, 0, -f), Vec3(f, 0, f), Vec3(f, 0, -f)});
+    return tris;
 }
 
-// Best of `runs` builds over the scene's primitive boxes (the same boxes Scene::finalize uses).
-double buildMs(const Scene& scene, int runs) {
-    std::vector<AABB> boxes(scene.prims.size());
-    for (size_t i = 0; i < boxes.size(); ++i) {
-        const Primitive& pr = scene.prims[i];
-        boxes[i] =
-            pr.shape == ShapeKind::Triangle ? scene.triangles[pr.index].bounds() : scene.spheres[pr.index].bounds();
+// ---- rays -------------------------------------------------------------------------------------
+
+constexpr uint64_t kSeedPrimary = 0x5eed0001, kSeedIncoherent = 0x5eed0002, kSeedShadow = 0x5eed0003;
+
+struct RaySet {
+    const char* name;
+    bool anyHit;
+    std::vector<Ray> rays;
+};
+
+std::vector<RaySet> makeRays(const Scene& s, size_t n) {
+    std::vector<RaySet> sets = {{"primary", false, {}}, {"incoherent", false, {}}, {"shadow", true, {}}};
+    const int w = s.camera.width(), h = s.camera.height();
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            Rng rng = taskRng(kSeedPrimary, 0, uint32_t(y * w + x));
+            const Vec2 u = rng.uniform2();
+            sets[0].rays.push_back(s.camera.generateRay(Vec2(x + u.x, y + u.y)));
+        }
+    const Vec3 lo = s.bounds.lo, ext = s.bounds.extent();
+    auto point = [&](Rng& rng) { return lo + ext * Vec3(rng.uniform(), rng.uniform(), rng.uniform()); };
+    for (size_t i = 0; i < n; ++i) {
+        Rng rng = taskRng(kSeedIncoherent, 0, uint32_t(i));
+        const Vec3 o = point(rng);
+        const float z = 1.0f - 2.0f * rng.uniform(), r = std::sqrt(std::max(0.0f, 1.0f - z * z));
+        const float phi = 2.0f * kPi * rng.uniform();
+        sets[1].rays.emplace_back(o, Vec3(r * std::cos(phi), r * std::sin(phi), z));
     }
-    double best = 1e300;
-    for (int r = 0; r < runs; ++r) {
-        BVH bvh;
-        const auto t0 = Clock::now();
-        bvh.build(boxes);
-        best = std::min(best, secondsSince(t0));
+    for (size_t i = 0; i < n;) {
+        Rng rng = taskRng(kSeedShadow, 0, uint32_t(i));
+        const Vec3 a = point(rng), b = point(rng);
+        const float len = glm::length(b - a);
+        if (len > 0.0f) sets[2].rays.emplace_back(a, (b - a) / len, len), ++i;
     }
-    return best * 1e3;
+    return sets;
+}
+
+// ---- tracers ----------------------------------------------------------------------------------
+
+struct Hit {
+    uint32_t prim = kNoPrimitive;  // for any-hit rays: 0 = occluded
+    float t = kInf;
+};
+
+void traceOurs(const Scene& s, const RaySet& set, std::vector<Hit>& out) {
+    const int64_t n = int64_t(set.rays.size());
+#pragma omp parallel for schedule(dynamic, 1024)
+    for (int64_t i = 0; i < n; ++i) {
+        if (set.anyHit) {
+            out[i].prim = s.occluded(set.rays[i]) ? 0 : kNoPrimitive;
+        } else {
+            Ray r = set.rays[i];
+            SurfacePoint sp;
+            out[i] = s.intersect(r, sp) ? Hit{sp.prim, r.tMax} : Hit{};
+        }
+    }
+}
+
+#ifdef PATHSPACE_HAVE_EMBREE
+struct Embree {
+    RTCDevice device = nullptr;
+    RTCScene scene = nullptr;
+    explicit Embree(const char* config) : device(rtcNewDevice(config)) {}
+    ~Embree() {
+        if (scene) rtcReleaseScene(scene);
+        rtcReleaseDevice(device);
+    }
+    // Embree's default build (RTC_BUILD_QUALITY_MEDIUM) over one triangle geometry.
+    void build(const std::vector<Triangle>& tris) {
+        if (scene) rtcReleaseScene(scene);
+        scene = rtcNewScene(device);
+        RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+        float* v = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                                               3 * sizeof(float), 3 * tris.size() + 1));
+        unsigned* idx = static_cast<unsigned*>(
+            rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), tris.size()));
+        for (size_t i = 0; i < tris.size(); ++i) {
+            const Vec3* p[3] = {&tris[i].p0, &tris[i].p1, &tris[i].p2};
+            for (int k = 0; k < 3; ++k) {
+                for (int a = 0; a < 3; ++a) v[9 * i + 3 * k + a] = (*p[k])[a];
+                idx[3 * i + k] = unsigned(3 * i + k);
+            }
+        }
+        rtcCommitGeometry(g);
+        rtcAttachGeometry(scene, g);
+        rtcReleaseGeometry(g);
+        rtcCommitScene(scene);
+    }
+    void trace(const RaySet& set, std::vector<Hit>& out) const {
+        const int64_t n = int64_t(set.rays.size());
+#pragma omp parallel for schedule(dynamic, 1024)
+        for (int64_t i = 0; i < n; ++i) {
+            const Ray& r = set.rays[i];
+            RTCIntersectContext ctx;
+            rtcInitIntersectContext(&ctx);
+            RTCRayHit rh;
+            rh.ray.org_x = r.o.x, rh.ray.org_y = r.o.y, rh.ray.org_z = r.o.z;
+            rh.ray.dir_x = r.d.x, rh.ray.dir_y = r.d.y, rh.ray.dir_z = r.d.z;
+            rh.ray.tnear = 0.0f, rh.ray.tfar = r.tMax, rh.ray.time = 0.0f;
+            rh.ray.mask = ~0u, rh.ray.id = 0, rh.ray.flags = 0;
+            if (set.anyHit) {
+                rtcOccluded1(scene, &ctx, &rh.ray);
+                out[i].prim = rh.ray.tfar < 0.0f ? 0 : kNoPrimitive;
+            } else {
+                rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+                rtcIntersect1(scene, &ctx, &rh);
+                out[i] = rh.hit.geomID == RTC_INVALID_GEOMETRY_ID ? Hit{} : Hit{rh.hit.primID, rh.ray.tfar};
+            }
+        }
+    }
+};
+#endif
+
+// ---- checks -----------------------------------------------------------------------------------
+
+// Closest (or any) hit by testing every triangle with the framework's triangle test.
+Hit bruteForce(const Scene& s, const Ray& ray) {
+    const WatertightRay wr(ray);
+    Hit best;
+    for (uint32_t i = 0; i < s.triangles.size(); ++i) {
+        float t, b1, b2;
+        if (intersectTriangle(ray, wr, s.triangles[i], t, b1, b2) && t < best.t) best = {i, t};
+    }
+    return best;
+}
+
+// Ours equals brute force: the same t to the bit, and the same primitive or one at that same t.
+bool agreesWithBruteForce(const Scene& s, const Ray& ray, bool anyHit, const Hit& ours) {
+    const Hit ref = bruteForce(s, ray);
+    if (anyHit) return (ours.prim != kNoPrimitive) == (ref.prim != kNoPrimitive);
+    if (ours.prim == kNoPrimitive || ref.prim == kNoPrimitive) return ours.prim == ref.prim;
+    if (ours.t != ref.t) return false;
+    float t, b1, b2;
+    return ours.prim == ref.prim ||
+           (intersectTriangle(ray, WatertightRay(ray), s.triangles[ours.prim], t, b1, b2) && t == ref.t);
+}
+
+// Two tracers agree: both miss, or both hit the same triangle, or two at a distance equal to
+// float precision (coincident or adjacent triangles; the two triangle tests round differently).
+bool sameHit(const Hit& a, const Hit& b, bool anyHit) {
+    if ((a.prim == kNoPrimitive) != (b.prim == kNoPrimitive)) return false;
+    if (anyHit || a.prim == kNoPrimitive || a.prim == b.prim) return true;
+    return std::abs(a.t - b.t) <= 1e-5f * std::max(a.t, b.t);
+}
+
+struct CheckCount {
+    uint64_t vsEmbree = 0, embreeDiffers = 0, vsBrute = 0, wrong = 0, threadsDiffer = 0;
+};
+
+// ---- measuring --------------------------------------------------------------------------------
+
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
+}
+
+std::string loadAverage() {
+    std::ifstream in("/proc/loadavg");
+    std::string a, b, c;
+    in >> a >> b >> c;
+    return a.empty() ? "unknown" : a + " " + b + " " + c;
 }
 
 std::string cpuModel() {
     std::ifstream in("/proc/cpuinfo");
     for (std::string line; std::getline(in, line);)
-        if (line.rfind("model name", 0) == 0) {
-            size_t k = line.find(':');
-            if (k != std::string::npos) return line.substr(line.find_first_not_of(" \t", k + 1));
-        }
+        if (line.rfind("model name", 0) == 0) return line.substr(line.find_first_not_of(" \t", line.find(':') + 1));
     return "unknown CPU";
 }
 
-std::string compiler() {
-#if defined(__clang__)
-    return "clang " __clang_version__;
-#elif defined(__GNUC__)
-    return "g++ " __VERSION__;
-#else
-    return "unknown compiler";
-#endif
-}
-
-std::string millions(uint64_t n) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.2fM", static_cast<double>(n) * 1e-6);
-    return buf;
-}
-
-struct Bench {
-    std::string name;
-    Scene scene;
-    Workload work;
-};
-
 void usage(std::FILE* out) {
     std::fprintf(out,
-                 "usage: bvh_bench [--quick] [--scenes DIR]\n"
-                 "Prints the framework BVH's build time, size and ray throughput (Mrays/s) for\n"
-                 "primary, incoherent (diffuse bounce) and shadow rays, with 1 and 2 threads, on the\n"
-                 "Cornell box and a generated mesh of 159k triangles. Fixed seeds and ray counts.\n"
-                 "  --quick       few rays, one run each (a smoke test; the figures mean little)\n"
+                 "usage: bvh_bench [--quick] [--passes N] [--scenes DIR] [--only NAME]\n"
+                 "The framework BVH's build time and ray throughput (Mrays/s) on primary, incoherent and\n"
+                 "shadow rays, 1 and 2 threads; with Embree (libembree-dev at configure time) its figures on\n"
+                 "the same rays, interleaved, and the ratio ours / Embree. Every hit is checked.\n"
+                 "  --quick       Cornell box and a small generated mesh, 2^14 rays, one pass (a smoke test)\n"
+                 "  --passes N    timed passes per tracer, ray set and thread count (default 5)\n"
                  "  --scenes DIR  where cornell-box.scene is (default: %s)\n"
-                 "  --help        this text\n",
-                 PATHSPACE_SOURCE_DIR "/scenes");
+                 "  --only NAME   only that scene (cornell-box, noisy-sphere, bunny, motorbike)\n"
+                 "Real meshes, when installed: %s (apt-get install glmark2-data),\n"
+                 "  %s (apt-get install openfoam-examples)\n",
+                 PATHSPACE_SOURCE_DIR "/scenes", kBunny, kMotorbike);
 }
 
 }  // namespace
@@ -298,127 +330,172 @@ int main(int argc, char** argv) {
             usage(stdout);
             return 0;
         }
-        if (a == "--quick") {
-            opt.quick = true;
-            continue;
+        if (a == "--quick") opt.quick = true;
+        else if (a == "--passes" && i + 1 < argc) opt.passes = std::max(1, std::atoi(argv[++i]));
+        else if (a == "--scenes" && i + 1 < argc) opt.scenesDir = argv[++i];
+        else if (a == "--only" && i + 1 < argc) opt.only = argv[++i];
+        else {
+            std::fprintf(stderr, "bvh_bench: unknown or incomplete option '%s'\n", a.c_str());
+            usage(stderr);
+            return 2;
         }
-        if (a == "--scenes" && i + 1 < argc) {
-            opt.scenesDir = argv[++i];
-            continue;
-        }
-        if (a.rfind("--scenes=", 0) == 0) {
-            opt.scenesDir = a.substr(9);
-            continue;
-        }
-        std::fprintf(stderr, "bvh_bench: unknown or incomplete option '%s'\n", a.c_str());
-        usage(stderr);
-        return 2;
     }
+    if (opt.quick) opt.passes = 1;
+    const int res = opt.quick ? 128 : 1024;  // primary rays: res^2; the other sets as many
+    const size_t n = size_t(res) * res;
 
+    struct Bench {
+        std::string name;
+        Scene scene;
+    };
     std::vector<Bench> benches;
+    std::vector<std::string> missing;
     try {
-        // Rays per run: about 0.15-0.5 s with one thread on the course machine.
-        Bench cornell{"cornell-box", loadScene(opt.scenesDir + "/cornell-box.scene"), {}};
-        cornell.work.primaryPasses = 16;  // 256 x 256 pixels: a pool of 1M camera rays
-        cornell.work.primaryRepeat = 3;
-        cornell.work.poolSize = 1 << 20;
-        cornell.work.buildRuns = 200;
-        benches.push_back(std::move(cornell));
-
-        Bench mesh{"noisy-sphere", makeNoisySphere(200, 400), {}};
-        mesh.work.primaryPasses = 4;  // 512 x 512 pixels: a pool of 1M camera rays
-        mesh.work.primaryRepeat = 1;
-        mesh.work.poolSize = 1 << 19;
-        mesh.work.buildRuns = 5;
-        benches.push_back(std::move(mesh));
+        const Scene cornell = loadScene(opt.scenesDir + "/cornell-box.scene");
+        benches.push_back({"cornell-box", meshScene("cornell-box", cornell.triangles, Vec3(0, 0, -1), res)});
+        benches.push_back(
+            {"noisy-sphere", meshScene("noisy-sphere", opt.quick ? noisySphere(40, 80) : noisySphere(200, 400),
+                                       Vec3(0.0f, 0.3f, -1.0f), res)});
+        if (!opt.quick) {
+            for (const auto& [name, path, from] : {std::tuple{"bunny", kBunny, Vec3(0, 0, 1)},
+                                                   std::tuple{"motorbike", kMotorbike, Vec3(-1, 0.3f, -0.6f)}}) {
+                if (!std::ifstream(path)) {
+                    missing.push_back(path);
+                    continue;
+                }
+                benches.push_back({name, meshScene(name, readObj(path), from, res)});
+            }
+        }
     } catch (const std::exception& e) {
         std::fprintf(stderr, "bvh_bench: %s\n", e.what());
         return 1;
     }
-    if (opt.quick)
-        for (Bench& b : benches) {
-            b.work = Workload{};
-            b.work.primaryPasses = 1;
-            b.work.poolSize = 1 << 14;
-            b.work.runs = 1;
-            b.work.buildRuns = 1;
-        }
 
-    std::printf("bvh_bench%s: %d logical CPUs (nproc), %s; %s, OpenMP %d%s\n", opt.quick ? " --quick" : "",
-                omp_get_num_procs(), cpuModel().c_str(), compiler().c_str(), _OPENMP,
-#ifdef NDEBUG
-                ""
+    std::printf("bvh_bench%s: %d logical CPUs, %s; g++/clang %s; load average %s at the start\n",
+                opt.quick ? " --quick" : "", omp_get_num_procs(), cpuModel().c_str(), __VERSION__,
+                loadAverage().c_str());
+#ifdef PATHSPACE_HAVE_EMBREE
+    std::printf("Embree %d.%d.%d on the same rays, interleaved pass by pass; ratio = our speed / Embree's\n",
+                RTC_VERSION_MAJOR, RTC_VERSION_MINOR, RTC_VERSION_PATCH);
 #else
-                ", assertions ON (not a Release build: figures are not representative)"
+    std::printf("without Embree (configure with libembree-dev installed to compare)\n");
 #endif
-    );
-    std::printf("Mrays/s: best of %d runs with the same rays; rays are generated before timing (fixed seeds)\n\n",
-                opt.quick ? 1 : Workload{}.runs);
-    std::printf("%-14s %8s %9s %8s %6s %8s %16s %19s %15s\n", "scene", "tris", "build ms", "nodes", "depth", "threads",
-                "primary Mrays/s", "incoherent Mrays/s", "shadow Mrays/s");
+    for (const std::string& m : missing)
+        std::printf("not found: %s (apt-get install %s)\n", m.c_str(),
+                    m == kBunny ? "glmark2-data" : "openfoam-examples");
+    std::printf("%d ray(s) per set; Mrays/s: median of %d passes (ratio: median and range of the per-pass ratios)\n\n",
+                int(n), opt.passes);
+    std::printf("%-13s %8s %18s %3s %-10s %9s %9s %18s\n", "scene", "tris", "build ms ours/Emb", "thr", "rays", "ours",
+                "Embree", "ratio");
     std::fflush(stdout);
 
-    struct Summary {
-        std::string name;
-        uint64_t rays[3];
-        Checksum sums[3];
-        size_t visible;
-        int passes, width, height;
-    };
-    std::vector<Summary> summaries;
-    bool consistent = true;
+    bool ok = true;
     const auto tStart = Clock::now();
     for (Bench& b : benches) {
+        if (!opt.only.empty() && b.name != opt.only) continue;
         const Scene& s = b.scene;
-        const double ms = buildMs(s, b.work.buildRuns);
-
-        const std::vector<Ray> primary = primaryRays(s, b.work.primaryPasses);
-        const std::vector<HitPoint> pts = visiblePoints(s);
-        if (pts.size() < 2) {
-            std::fprintf(stderr, "bvh_bench: %s: the camera sees fewer than 2 surface points\n", b.name.c_str());
-            return 1;
+        std::vector<AABB> boxes(s.triangles.size());
+        for (size_t i = 0; i < boxes.size(); ++i) boxes[i] = s.triangles[i].bounds();
+        const int buildRuns = opt.quick ? 1 : 5;
+        double oursBuild = 1e300, embreeBuild = 0.0;
+        for (int r = 0; r < buildRuns; ++r) {
+            BVH bvh;
+            const auto t0 = Clock::now();
+            bvh.build(boxes);
+            oursBuild = std::min(oursBuild, secondsSince(t0));
         }
-        const std::vector<Ray> incoherent = incoherentRays(s, pts, b.work.poolSize);
-        const std::vector<Ray> shadow = shadowRays(s, pts, b.work.poolSize);
+#ifdef PATHSPACE_HAVE_EMBREE
+        Embree embree("threads=1");  // build on one thread, like ours; tracing runs on our threads
+        embreeBuild = 1e300;
+        for (int r = 0; r < buildRuns; ++r) {
+            const auto t0 = Clock::now();
+            embree.build(s.triangles);
+            embreeBuild = std::min(embreeBuild, secondsSince(t0));
+        }
+#endif
+        char build[32];
+        std::snprintf(build, sizeof build, embreeBuild > 0 ? "%.1f / %.1f" : "%.1f / -", oursBuild * 1e3,
+                      embreeBuild * 1e3);
 
-        Summary sum{b.name,           {}, {}, pts.size(), b.work.primaryPasses * b.work.primaryRepeat, s.camera.width(),
-                    s.camera.height()};
-        for (int threads : kThreadCounts) {
-            const Result p = measure<false>(s, primary, threads, b.work.primaryRepeat, b.work.runs, consistent);
-            const Result in = measure<false>(s, incoherent, threads, 1, b.work.runs, consistent);
-            const Result sh = measure<true>(s, shadow, threads, 1, b.work.runs, consistent);
-            std::printf("%-14s %8zu %9.3f %8zu %6d %8d %16.2f %19.2f %15.2f\n", b.name.c_str(), s.triangles.size(), ms,
-                        s.bvh.nodes().size(), s.bvh.depth(), threads, p.mrays, in.mrays, sh.mrays);
-            std::fflush(stdout);
-            const Result* rs[3] = {&p, &in, &sh};
-            for (int k = 0; k < 3; ++k) {
-                if (threads == kThreadCounts[0]) {
-                    sum.rays[k] = rs[k]->raysPerRun;
-                    sum.sums[k] = rs[k]->sum;
-                } else if (rs[k]->sum != sum.sums[k]) {
-                    consistent = false;
+        const std::vector<RaySet> sets = makeRays(s, n);
+        CheckCount check;
+        std::vector<std::vector<Hit>> oneThread(sets.size());
+        for (int threads : {1, 2}) {
+            omp_set_num_threads(threads);
+            for (size_t si = 0; si < sets.size(); ++si) {
+                const RaySet& set = sets[si];
+                std::vector<Hit> ours(set.rays.size()), theirs(set.rays.size());
+                std::vector<double> tOurs, tTheirs, ratio;
+                traceOurs(s, set, ours);  // warm-up
+#ifdef PATHSPACE_HAVE_EMBREE
+                embree.trace(set, theirs);
+#endif
+                for (int p = 0; p < opt.passes; ++p) {
+                    // Alternate which tracer goes first, so that neither always gets the warmer machine.
+                    for (int k = 0; k < 2; ++k) {
+                        const bool oursNow = (k == 0) == (p % 2 == 0);
+                        const auto t0 = Clock::now();
+                        if (oursNow) traceOurs(s, set, ours);
+#ifdef PATHSPACE_HAVE_EMBREE
+                        else embree.trace(set, theirs);
+#else
+                        else continue;
+#endif
+                        (oursNow ? tOurs : tTheirs).push_back(secondsSince(t0));
+                    }
+                    if (!tTheirs.empty()) ratio.push_back(tTheirs.back() / tOurs.back());
+                }
+                char theirsText[16] = "-", ratioText[32] = "-";
+                if (!ratio.empty()) {
+                    std::snprintf(theirsText, sizeof theirsText, "%.2f", set.rays.size() / median(tTheirs) * 1e-6);
+                    std::snprintf(ratioText, sizeof ratioText, "%.2f (%.2f-%.2f)", median(ratio),
+                                  *std::min_element(ratio.begin(), ratio.end()),
+                                  *std::max_element(ratio.begin(), ratio.end()));
+                }
+                std::printf("%-13s %8zu %18s %3d %-10s %9.2f %9s %18s\n", b.name.c_str(), s.triangles.size(), build,
+                            threads, set.name, set.rays.size() / median(tOurs) * 1e-6, theirsText, ratioText);
+                std::fflush(stdout);
+                if (threads != 1) {
+                    for (size_t i = 0; i < ours.size(); ++i)
+                        if (ours[i].prim != oneThread[si][i].prim || ours[i].t != oneThread[si][i].t)
+                            ++check.threadsDiffer;
+                    continue;
+                }
+                oneThread[si] = ours;
+                // Checks, once per set: every ray against Embree, a sample against brute force.
+                const size_t sample = std::min(
+                    set.rays.size(), std::max<size_t>(64, (size_t(1) << (opt.quick ? 20 : 27)) / s.triangles.size()));
+                for (size_t i = 0; i < set.rays.size(); ++i) {
+                    bool brute = i % std::max<size_t>(1, set.rays.size() / sample) == 0;
+#ifdef PATHSPACE_HAVE_EMBREE
+                    ++check.vsEmbree;
+                    if (!sameHit(ours[i], theirs[i], set.anyHit)) {
+                        ++check.embreeDiffers;
+                        brute = true;
+                    }
+#endif
+                    if (!brute) continue;
+                    ++check.vsBrute;
+                    if (!agreesWithBruteForce(s, set.rays[i], set.anyHit, ours[i])) {
+                        if (check.wrong++ < 5)
+                            std::fprintf(stderr, "bvh_bench: %s %s ray %zu: the BVH's hit differs from brute force\n",
+                                         b.name.c_str(), set.name, i);
+                    }
                 }
             }
         }
-        summaries.push_back(sum);
+        std::printf(
+            "%-13s checks: %llu rays against Embree (%llu differ), %llu against brute force (%llu wrong), "
+            "%llu differ between 1 and 2 threads\n",
+            "", (unsigned long long)check.vsEmbree, (unsigned long long)check.embreeDiffers,
+            (unsigned long long)check.vsBrute, (unsigned long long)check.wrong,
+            (unsigned long long)check.threadsDiffer);
+        ok = ok && check.wrong == 0 && check.threadsDiffer == 0;
     }
-
-    std::printf("\nrays per run and checksums (hits per run, the same for every run and thread count):\n");
-    for (const Summary& s : summaries) {
-        const char* kinds[3] = {"primary", "incoherent", "shadow"};
-        char what[3][96];
-        std::snprintf(what[0], sizeof what[0], "%d jittered pass%s over %d x %d pixels", s.passes,
-                      s.passes == 1 ? "" : "es", s.width, s.height);
-        std::snprintf(what[1], sizeof what[1], "cosine-weighted bounces from %zu visible points", s.visible);
-        std::snprintf(what[2], sizeof what[2], "between random pairs of those points");
-        for (int k = 0; k < 3; ++k)
-            std::printf("  %-14s %-10s %8s rays %10llu hits  (%s)\n", k == 0 ? s.name.c_str() : "", kinds[k],
-                        millions(s.rays[k]).c_str(), static_cast<unsigned long long>(s.sums[k].hits), what[k]);
-    }
-    std::printf("total time %.1f s\n", secondsSince(tStart));
-    if (!consistent) {
+    std::printf("total time %.1f s; load average %s at the end\n", secondsSince(tStart), loadAverage().c_str());
+    if (!ok) {
         std::fprintf(stderr,
-                     "bvh_bench: checksums differ between runs or thread counts: traversal is not deterministic\n");
+                     "bvh_bench: the BVH returned hits that brute force does not, or that depend on the threads\n");
         return 1;
     }
     return 0;

@@ -1,5 +1,6 @@
 #include "scene.h"
 #include "errors.h"
+#include <algorithm>
 #include <cstdio>
 #include <sstream>
 
@@ -45,6 +46,14 @@ void Scene::finalize() {
         bounds.expand(boxes[i]);
     }
     bvh.build(boxes);
+    items_.resize(prims.size());
+    for (size_t i = 0; i < prims.size(); ++i) {
+        const uint32_t p = bvh.order()[i];
+        const Primitive& pr = prims[p];
+        items_[i].prim = p;
+        if (pr.shape == ShapeKind::Triangle) items_[i].tri = triangles[pr.index];
+        else items_[i].sphere = pr.index;
+    }
 
     // Bounding sphere of geometry and camera (background emission, light power).
     AABB all = bounds;
@@ -125,7 +134,6 @@ void Scene::finalize() {
 void Scene::findSurfacePointLights() {
     surfacePointLights.clear();
     constexpr double kTol = 0x1p-17;
-    const std::vector<BVHNode>& nodes = bvh.nodes();
     for (size_t l = 0; l < lights.size(); ++l) {
         Light& light = lights[l];
         if (light.kind != LightKind::Point) continue;
@@ -135,52 +143,56 @@ void Scene::findSurfacePointLights() {
         const double pScale = maxAbsComponent(light.position);
         glm::dvec3 nSum(0.0), nFirst(0.0);
         double scale = 0.0;
-        // The BVH's nodes whose boxes, grown by the tolerance, hold the light.
-        std::vector<uint32_t> stack;
-        if (!nodes.empty()) stack.push_back(0);
+        // The primitives in the BVH's leaves whose boxes, grown by the tolerance, hold the light,
+        // taken in primitive order (so that nFirst and the sum do not depend on the tree).
+        std::vector<uint32_t> near, stack;
+        if (!bvh.nodes().empty()) stack.push_back(0);
         while (!stack.empty()) {
-            const BVHNode& node = nodes[stack.back()];
+            const WideNode& node = bvh.nodes()[stack.back()];
             stack.pop_back();
-            const AABB& b = node.box;
-            const double grow = kTol * std::max(pScale, double(std::max(maxAbsComponent(b.lo), maxAbsComponent(b.hi))));
-            bool inside = true;
-            for (int k = 0; k < 3; ++k) inside = inside && p[k] >= b.lo[k] - grow && p[k] <= b.hi[k] + grow;
-            if (!inside) continue;
-            if (node.count == 0) {
-                stack.push_back(node.first);
-                stack.push_back(node.first + 1);
-                continue;
+            for (int k = 0; k < WideNode::kWidth; ++k) {
+                const AABB b = node.box(k);
+                const double grow =
+                    kTol * std::max(pScale, double(std::max(maxAbsComponent(b.lo), maxAbsComponent(b.hi))));
+                bool inside = true;
+                for (int a = 0; a < 3; ++a) inside = inside && p[a] >= b.lo[a] - grow && p[a] <= b.hi[a] + grow;
+                if (!inside) continue;
+                if (node.count[k] == WideNode::kInner) stack.push_back(node.child[k]);
+                else
+                    for (uint32_t j = node.child[k]; j < node.child[k] + node.count[k]; ++j)
+                        near.push_back(bvh.order()[j]);
             }
-            for (uint32_t j = node.first; j < node.first + node.count; ++j) {
-                const Primitive& pr = prims[bvh.primIndex()[j]];
-                glm::dvec3 n;
-                double s;
-                if (pr.shape == ShapeKind::Triangle) {
-                    const Triangle& t = triangles[pr.index];
-                    const glm::dvec3 p0(t.p0), e1 = glm::dvec3(t.p1) - p0, e2 = glm::dvec3(t.p2) - p0;
-                    const glm::dvec3 c = glm::cross(e1, e2);
-                    const double c2 = glm::dot(c, c);
-                    if (!(c2 > 0.0)) continue;
-                    s = std::max(pScale, double(t.errScale()));
-                    const double dist = glm::dot(c, p - p0) / std::sqrt(c2);
-                    if (std::abs(dist) > kTol * s) continue;
-                    // Barycentrics of the light's projection onto the plane (edges included).
-                    const glm::dvec3 q = p - p0;
-                    const double b1 = glm::dot(glm::cross(q, e2), c) / c2, b2 = glm::dot(glm::cross(e1, q), c) / c2;
-                    if (b1 < -kTol || b2 < -kTol || 1.0 - b1 - b2 < -kTol) continue;
-                    n = c / std::sqrt(c2);
-                } else {
-                    const Sphere& sph = spheres[pr.index];
-                    const glm::dvec3 d = p - glm::dvec3(sph.center);
-                    const double len = glm::length(d);
-                    s = std::max(pScale, double(sph.errScale()));
-                    if (!(len > 0.0) || std::abs(len - double(sph.radius)) > kTol * s) continue;
-                    n = d / len;
-                }
-                if (scale == 0.0) nFirst = n;
-                nSum += n;
-                scale = std::max(scale, s);
+        }
+        std::sort(near.begin(), near.end());
+        for (uint32_t prim : near) {
+            const Primitive& pr = prims[prim];
+            glm::dvec3 n;
+            double s;
+            if (pr.shape == ShapeKind::Triangle) {
+                const Triangle& t = triangles[pr.index];
+                const glm::dvec3 p0(t.p0), e1 = glm::dvec3(t.p1) - p0, e2 = glm::dvec3(t.p2) - p0;
+                const glm::dvec3 c = glm::cross(e1, e2);
+                const double c2 = glm::dot(c, c);
+                if (!(c2 > 0.0)) continue;
+                s = std::max(pScale, double(t.errScale()));
+                const double dist = glm::dot(c, p - p0) / std::sqrt(c2);
+                if (std::abs(dist) > kTol * s) continue;
+                // Barycentrics of the light's projection onto the plane (edges included).
+                const glm::dvec3 q = p - p0;
+                const double b1 = glm::dot(glm::cross(q, e2), c) / c2, b2 = glm::dot(glm::cross(e1, q), c) / c2;
+                if (b1 < -kTol || b2 < -kTol || 1.0 - b1 - b2 < -kTol) continue;
+                n = c / std::sqrt(c2);
+            } else {
+                const Sphere& sph = spheres[pr.index];
+                const glm::dvec3 d = p - glm::dvec3(sph.center);
+                const double len = glm::length(d);
+                s = std::max(pScale, double(sph.errScale()));
+                if (!(len > 0.0) || std::abs(len - double(sph.radius)) > kTol * s) continue;
+                n = d / len;
             }
+            if (scale == 0.0) nFirst = n;
+            nSum += n;
+            scale = std::max(scale, s);
         }
         if (scale == 0.0) continue;
         // On an edge or corner of surfaces at an angle: their mean normal (off all of them for
@@ -222,32 +234,40 @@ SurfacePoint Scene::surfacePoint(uint32_t prim, const Vec3& p) const {
 bool Scene::intersect(Ray& ray, SurfacePoint& sp) const {
     ++tlsRays;
     const WatertightRay wr(ray);
-    uint32_t hitPrim = kNoPrimitive;
+    uint32_t hitItem = kNoPrimitive;
     float hb1 = 0.0f, hb2 = 0.0f;
     bvh.traverse(ray, false, [&](uint32_t i, Ray& r) {
-        if (i == r.ignorePrim) return false;
-        const Primitive& pr = prims[i];
+        const Item& it = items_[i];
         float t, b1 = 0.0f, b2 = 0.0f;
-        if (pr.shape == ShapeKind::Triangle) {
-            if (!intersectTriangle(r, wr, triangles[pr.index], t, b1, b2)) return false;
-        } else if (!intersectSphere(r, spheres[pr.index], t)) {
+        if (it.prim == r.ignorePrim) return false;
+        if (it.sphere == kNoPrimitive) {
+            if (!intersectTriangle(r, wr, it.tri, t, b1, b2)) return false;
+        } else if (!intersectSphere(r, spheres[it.sphere], t)) {
             return false;
         }
         r.tMax = t;
-        hitPrim = i;
+        hitItem = i;
         hb1 = b1;
         hb2 = b2;
         return true;
     });
-    if (hitPrim == kNoPrimitive) return false;
-    const Primitive& pr = prims[hitPrim];
-    if (pr.shape == ShapeKind::Triangle) {
-        // Barycentric interpolation is more accurate than o + t d far from the origin.
-        const Triangle& tri = triangles[pr.index];
-        sp = surfacePoint(hitPrim, (1.0f - hb1 - hb2) * tri.p0 + hb1 * tri.p1 + hb2 * tri.p2);
-    } else {
-        sp = surfacePoint(hitPrim, ray.at(ray.tMax));
+    if (hitItem == kNoPrimitive) return false;
+    // Only now the surface point, once, for the closest hit.
+    const Item& it = items_[hitItem];
+    if (it.sphere != kNoPrimitive) {
+        sp = surfacePoint(it.prim, ray.at(ray.tMax));
+        return true;
     }
+    // surfacePoint(), from the item's copy of the triangle. Barycentric interpolation is more
+    // accurate than o + t d far from the origin.
+    const Primitive& pr = prims[it.prim];
+    sp = SurfacePoint();
+    sp.p = (1.0f - hb1 - hb2) * it.tri.p0 + hb1 * it.tri.p1 + hb2 * it.tri.p2;
+    sp.n = it.tri.normal();
+    sp.errScale = it.tri.errScale();
+    sp.prim = it.prim;
+    sp.material = pr.material;
+    sp.light = pr.light;
     return true;
 }
 
@@ -255,12 +275,12 @@ bool Scene::occluded(const Ray& ray) const {
     ++tlsRays;
     const WatertightRay wr(ray);
     Ray r = ray;
-    return bvh.traverse(r, true, [&](uint32_t i, Ray& rr) {
-        if (i == rr.ignorePrim) return false;
-        const Primitive& pr = prims[i];
+    return bvh.traverse(r, true, [&](uint32_t i, Ray& rr) {  // stops at the first hit
+        const Item& it = items_[i];
         float t, b1, b2;
-        return pr.shape == ShapeKind::Triangle ? intersectTriangle(rr, wr, triangles[pr.index], t, b1, b2)
-                                               : intersectSphere(rr, spheres[pr.index], t);
+        if (it.prim == rr.ignorePrim) return false;
+        return it.sphere == kNoPrimitive ? intersectTriangle(rr, wr, it.tri, t, b1, b2)
+                                         : intersectSphere(rr, spheres[it.sphere], t);
     });
 }
 

@@ -102,6 +102,14 @@ public:
     SurfacePoint surfacePoint(uint32_t prim, const Vec3& p) const;
 
 private:
+    // What the primitive test reads, in the BVH's item order (a leaf's primitives are adjacent):
+    // the triangle itself, no lookup through prims and triangles.
+    struct Item {
+        Triangle tri;                    // the triangle (unused for a sphere)
+        uint32_t prim = kNoPrimitive;    // index into prims
+        uint32_t sphere = kNoPrimitive;  // index into spheres, kNoPrimitive for a triangle
+    };
+    std::vector<Item> items_;
     // sp itself, or for a point light lying on a surface the point rays leave it from.
     const SurfacePoint& rayEnd(const SurfacePoint& sp, SurfacePoint& storage) const;
     void findSurfacePointLights();

@@ -2,6 +2,7 @@
 // exactly what a brute-force loop over all primitives returns.
 #include <doctest/doctest.h>
 #include <cmath>
+#include <algorithm>
 #include <numeric>
 #include <string>
 #include <vector>
@@ -142,29 +143,46 @@ std::vector<Triangle> randomSoup(int n, float size, Rng& rng) {
     return tris;
 }
 
-// Every node's box holds its children's boxes (inner) or its primitives' boxes (leaf), and
-// primIndex is a permutation of 0..n-1.
+// Every wide node's child box holds that child's boxes (inner) or its primitives' boxes (leaf);
+// unused slots are empty leaves with a box no ray reaches; every node but the root is the child
+// of exactly one slot; every primitive is in exactly one leaf (order() is a permutation).
 void checkStructure(const Scene& s) {
     const BVH& bvh = s.bvh;
-    std::vector<uint32_t> seen(s.prims.size(), 0);
+    std::vector<uint32_t> seen(s.prims.size(), 0), parents(bvh.nodes().size(), 0);
     auto contains = [](const AABB& outer, const AABB& inner) {
         return glm::all(glm::lessThanEqual(outer.lo, inner.lo)) && glm::all(glm::greaterThanEqual(outer.hi, inner.hi));
     };
-    int badBoxes = 0;
-    for (const BVHNode& n : bvh.nodes()) {
-        if (n.count == 0) {
-            badBoxes += !contains(n.box, bvh.nodes()[n.first].box) + !contains(n.box, bvh.nodes()[n.first + 1].box);
-        } else {
-            for (uint32_t i = n.first; i < n.first + n.count; ++i) {
-                const uint32_t p = bvh.primIndex()[i];
-                ++seen[p];
-                const Primitive& pr = s.prims[p];
-                badBoxes += !contains(n.box, pr.shape == ShapeKind::Triangle ? s.triangles[pr.index].bounds()
-                                                                             : s.spheres[pr.index].bounds());
+    int badBoxes = 0, badSlots = 0;
+    for (const WideNode& n : bvh.nodes()) {
+        for (int k = 0; k < WideNode::kWidth; ++k) {
+            const AABB box = n.box(k);
+            if (n.count[k] == WideNode::kInner) {
+                if (n.child[k] == 0 || n.child[k] >= bvh.nodes().size()) {
+                    ++badSlots;
+                    continue;
+                }
+                ++parents[n.child[k]];
+                const WideNode& c = bvh.nodes()[n.child[k]];
+                for (int j = 0; j < WideNode::kWidth; ++j)
+                    if (!(c.count[j] == 0 && c.lo[0][j] == kInf)) badBoxes += !contains(box, c.box(j));
+            } else if (n.count[k] == 0) {
+                badSlots += !(box.lo == Vec3(kInf) && box.hi == Vec3(kInf));
+            } else {
+                for (uint32_t i = n.child[k]; i < n.child[k] + n.count[k]; ++i) {
+                    const uint32_t p = bvh.order()[i];
+                    ++seen[p];
+                    const Primitive& pr = s.prims[p];
+                    badBoxes += !contains(box, pr.shape == ShapeKind::Triangle ? s.triangles[pr.index].bounds()
+                                                                               : s.spheres[pr.index].bounds());
+                }
             }
         }
     }
-    CHECK_MESSAGE(badBoxes == 0, "expected every node box to hold its contents, got " << badBoxes << " that do not");
+    CHECK_MESSAGE(badBoxes == 0, "expected every child box to hold its contents, got " << badBoxes << " that do not");
+    CHECK_MESSAGE(badSlots == 0, "expected valid child links and unreachable unused slots, got " << badSlots << " bad");
+    int wrongParents = 0;
+    for (size_t i = 1; i < parents.size(); ++i) wrongParents += parents[i] != 1;
+    CHECK_MESSAGE(wrongParents == 0, "expected every node but the root to have one parent, got " << wrongParents);
     int wrongCount = 0;
     for (uint32_t c : seen) wrongCount += c != 1;
     CHECK_MESSAGE(wrongCount == 0,
@@ -244,15 +262,11 @@ TEST_CASE("bvh: axis-parallel rays, including rays in the planes of the boxes") 
             tris.push_back({Vec3(0, x, y), Vec3(0, x, y + 1), Vec3(1, x, y)});      // in y = i
         }
     const Scene s = makeScene(tris, {});
-    const Vec3 dirs[] = {Vec3(1, 0, 0),
-                         Vec3(-1, 0, 0),
-                         Vec3(0, 1, 0),
-                         Vec3(0, -1, 0),
-                         Vec3(0, 0, 1),
-                         Vec3(0, 0, -1),
-                         glm::normalize(Vec3(1, 1, 0)),
-                         glm::normalize(Vec3(0, -1, 1)),
-                         glm::normalize(Vec3(1, 0, -1))};
+    const Vec3 dirs[] = {Vec3(1, 0, 0), Vec3(-1, 0, 0), Vec3(0, 1, 0), Vec3(0, -1, 0), Vec3(0, 0, 1), Vec3(0, 0, -1),
+                         glm::normalize(Vec3(1, 1, 0)), glm::normalize(Vec3(0, -1, 1)), glm::normalize(Vec3(1, 0, -1)),
+                         // -0 components: 1/d = -inf, and the ray lies in box planes.
+                         Vec3(1, -0.0f, -0.0f), Vec3(-0.0f, -1, -0.0f), Vec3(-0.0f, 0.0f, 1),
+                         glm::normalize(Vec3(-1, -1, -0.0f))};
     std::vector<Ray> rays;
     for (const Vec3& d : dirs)
         for (int a = -1; a <= 14; ++a)
@@ -292,6 +306,7 @@ TEST_CASE("bvh: an empty scene has an empty BVH and nothing is hit") {
     const Scene s = makeScene({}, {});
     CHECK(s.bvh.nodes().empty());
     CHECK(s.bvh.bounds().empty());
+    CHECK(s.bvh.depth() == 0);
     Ray r(Vec3(0), Vec3(0, 0, 1));
     SurfacePoint sp;
     CHECK_FALSE(s.intersect(r, sp));
@@ -338,4 +353,94 @@ TEST_CASE("bvh: intersect reports the hit point, normal and material of the clos
     REQUIRE(s.intersect(r5, sp));
     CHECK_MESSAGE(r5.tMax == doctest::Approx(1.5f), "sphere: expected t = 1.5, got " << r5.tMax);
     CHECK(sp.n.z == doctest::Approx(-1.0f));
+}
+
+TEST_CASE("bvh: degenerate triangles, axis-parallel rays and origins inside the boxes") {
+    Rng rng(404);
+    std::vector<Triangle> tris = randomSoup(2000, 0.7f, rng);
+    for (int i = 0; i < 2000; i += 5) tris[i].p2 = tris[i].p1;                        // two equal corners
+    for (int i = 1; i < 2000; i += 7) tris[i].p2 = 0.5f * (tris[i].p0 + tris[i].p1);  // collinear
+    for (int i = 2; i < 2000; i += 11) tris[i].p1 = tris[i].p2 = tris[i].p0;          // a point
+    for (int i = 3; i < 2000; i += 13) tris[i].p1.z = tris[i].p2.z = tris[i].p0.z;    // axis-aligned
+    const Scene s = makeScene(tris, {});
+    checkStructure(s);
+    std::vector<Ray> rays = makeRays(s, 1000, rng);
+    const Vec3 axes[] = {Vec3(1, 0, 0), Vec3(-1, 0, 0), Vec3(0, 1, 0), Vec3(0, -1, 0), Vec3(0, 0, 1), Vec3(0, 0, -1)};
+    for (int k = 0; k < 2000; ++k) {
+        // From inside the scene's boxes: a corner of some triangle (so on a leaf box's planes)
+        // or a random point, along an axis (with +0 or -0 in the other components) or anywhere.
+        const Triangle& t = tris[rng.nextU32() % tris.size()];
+        const Vec3 o = k % 2 ? t.p0 : randomIn(rng, s.bounds.lo, s.bounds.hi);
+        Vec3 d = k % 3 ? axes[k % 6] : randomUnit(rng);
+        if (k % 4 == 0) d = Vec3(d.x == 0.0f ? -0.0f : d.x, d.y == 0.0f ? -0.0f : d.y, d.z == 0.0f ? -0.0f : d.z);
+        rays.emplace_back(o, d);
+    }
+    const int bad = compareAll(s, rays);
+    CHECK_MESSAGE(bad == 0, "expected 0 disagreements with brute force, got " << bad);
+}
+
+TEST_CASE("bvh: one triangle is a root with one leaf") {
+    const Scene s = makeScene({{Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)}}, {});
+    checkStructure(s);
+    REQUIRE(s.bvh.nodes().size() == 1);
+    CHECK(s.bvh.depth() == 1);
+    CHECK(s.bvh.nodes()[0].count[0] == 1);
+    for (int k = 1; k < WideNode::kWidth; ++k) CHECK(s.bvh.nodes()[0].count[k] == 0);
+    Rng rng(505);
+    std::vector<Ray> rays = makeRays(s, 2000, rng);
+    for (float x : {-0.5f, 0.0f, 0.25f, 0.5f, 1.0f}) {  // through corners and edges, both ways
+        rays.emplace_back(Vec3(x, 0.0f, -1.0f), Vec3(0, 0, 1));
+        rays.emplace_back(Vec3(0.0f, x, 1.0f), Vec3(0, 0, -1));
+        rays.emplace_back(Vec3(x, 1.0f - x, -1.0f), Vec3(0, 0, 1));
+    }
+    const int bad = compareAll(s, rays);
+    CHECK_MESSAGE(bad == 0, "expected 0 disagreements with brute force, got " << bad);
+}
+
+TEST_CASE("bvh: huge and tiny scales, and far from the origin") {
+    Rng rng(606);
+    const std::vector<Triangle> soup = randomSoup(1000, 0.6f, rng);
+    for (const auto& [scale, shift] : {std::pair{1e-12f, 0.0f}, std::pair{1e-4f, 0.0f}, std::pair{1e4f, 0.0f},
+                                       std::pair{1e12f, 0.0f}, std::pair{1.0f, 1e5f}}) {
+        std::vector<Triangle> tris = soup;
+        for (Triangle& t : tris)
+            for (Vec3* p : {&t.p0, &t.p1, &t.p2}) *p = *p * scale + Vec3(shift);
+        const Scene s = makeScene(tris, {});
+        INFO("scale " << scale << ", moved by " << shift);
+        checkStructure(s);
+        const int bad = compareAll(s, makeRays(s, 1000, rng));
+        CHECK_MESSAGE(bad == 0, "expected 0 disagreements with brute force, got " << bad);
+    }
+}
+
+TEST_CASE("bvh: traverse visits each leaf item at most once, nearest box first") {
+    // A row of 64 unit squares along +x, a ray along the row: the items come in order of
+    // distance, each once, and the first hit ends an any-hit traversal.
+    std::vector<AABB> boxes;
+    for (int i = 0; i < 64; ++i) {
+        AABB b;
+        b.expand(Vec3(float(i), -0.5f, -0.5f));
+        b.expand(Vec3(float(i) + 0.5f, 0.5f, 0.5f));
+        boxes.push_back(b);
+    }
+    std::reverse(boxes.begin(), boxes.end());  // primitive i sits at x = 63 - i
+    BVH bvh;
+    bvh.build(boxes);
+    Ray ray(Vec3(-1, 0.1f, 0.2f), Vec3(1, 0, 0));
+    std::vector<uint32_t> visited;
+    bvh.traverse(ray, false, [&](uint32_t item, Ray&) {
+        visited.push_back(bvh.order()[item]);
+        return false;
+    });
+    std::vector<uint32_t> sorted = visited;
+    std::sort(sorted.begin(), sorted.end());
+    CHECK_MESSAGE(std::unique(sorted.begin(), sorted.end()) == sorted.end(), "an item was visited twice");
+    CHECK(visited.size() == 64);
+    // Leaves hold up to 4 items in any order, but leaf by leaf the row is walked from x = 0 on.
+    int outOfOrder = 0;
+    for (size_t i = 4; i < visited.size(); ++i) outOfOrder += 63 - int(visited[i]) < 63 - int(visited[i - 4]);
+    CHECK_MESSAGE(outOfOrder == 0, "expected the nearest boxes first, got " << outOfOrder << " items out of order");
+    int calls = 0;
+    CHECK(bvh.traverse(ray, true, [&](uint32_t, Ray&) { return ++calls > 0; }));
+    CHECK(calls == 1);
 }
