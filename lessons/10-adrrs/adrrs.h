@@ -171,7 +171,7 @@ enum class Roulette {
 struct ADRRSSettings {
     Roulette roulette = Roulette::ADRRS;
     int prePassPerPixel = 8;        // pre-pass paths per pixel ...
-    int prePassMinimum = 1 << 16;   // ... but at least this many in all (small test images)
+    int prePassMinimum = 1 << 14;   // ... but at least this many in all (small test images)
     int resolution = kCacheResolution;
 };
 

@@ -26,6 +26,14 @@ TEST_CASE("adjoint cache: the cell and the side of hand-placed points (Eq. 10.8)
                                                                                              << " (" << c.what
                                                                                              << ": ix + 4 (iy + 4 iz)), got " << got);
     }
+    ps::AABB shifted;
+    shifted.lo = Vec3(-1.0f, -2.0f, -3.0f);
+    shifted.hi = Vec3(1.0f, 2.0f, 5.0f);
+    const int centre = ps::AdjointCache(shifted, 4).cell(Vec3(0.0f));
+    CHECK_MESSAGE(centre == 2 + 4 * (2 + 4 * 1), "AdjointCache over [(-1, -2, -3), (1, 2, 5)], 4^3 cells: cell(0, 0, 0) "
+                                                 "expected 26 (cell (2, 2, 1): measured from the box's lower corner), "
+                                                 "got "
+                                                     << centre);
     ps::AABB flat;
     flat.lo = Vec3(0.0f);
     flat.hi = Vec3(1.0f, 0.0f, 1.0f);
