@@ -93,9 +93,9 @@ void continuationSamples(const std::vector<PrePassVertex>& path, std::vector<Cac
 
 // ---------------------------------------------------------------------------------------------
 // The weight window (Eq. 10.5, 10.6).
-constexpr float kWindowRatio = 5.0f;                     // s = upper / lower (the paper's value)
+constexpr float kWindowRatio = 5.0f;                       // s = upper / lower (the paper's value)
 constexpr float kMinContinuations = kRouletteMinSurvival;  // q never below (0.05: unbiased for any cache)
-constexpr float kMaxContinuations = 8.0f;                // q never above (at most 8 continuations per vertex)
+constexpr float kMaxContinuations = 8.0f;                  // q never above (at most 8 continuations per vertex)
 
 struct WeightWindow {
     float centre = 0.0f;  // C_ww = I~ / Psi~ (Eq. 10.5)
@@ -170,8 +170,8 @@ enum class Roulette {
 };
 struct ADRRSSettings {
     Roulette roulette = Roulette::ADRRS;
-    int prePassPerPixel = 8;        // pre-pass paths per pixel ...
-    int prePassMinimum = 1 << 14;   // ... but at least this many in all (small test images)
+    int prePassPerPixel = 8;       // pre-pass paths per pixel ...
+    int prePassMinimum = 1 << 14;  // ... but at least this many in all (small test images)
     int resolution = kCacheResolution;
 };
 
@@ -190,7 +190,10 @@ class ADRRSPathTracer : public Integrator {
 public:
     explicit ADRRSPathTracer(const ADRRSSettings& settings = ADRRSSettings()) : settings_(settings) {}
     // Use this cache instead of the pre-pass's (tests: a deliberately bad one); call before rendering.
-    void useCache(const AdjointCache& cache) { cache_ = cache; haveCache_ = true; }
+    void useCache(const AdjointCache& cache) {
+        cache_ = cache;
+        haveCache_ = true;
+    }
     void renderIteration(const Scene& scene, uint32_t iteration, uint64_t seed, Image& out,
                          SampleStats& stats) override;
     std::vector<std::string> report() const override;

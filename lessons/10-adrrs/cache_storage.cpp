@@ -9,9 +9,12 @@
 namespace ps {
 
 AdjointCache::AdjointCache(const AABB& bounds, int resolution)
-    : bounds_(bounds), res_(resolution),
-      sum_(size_t(resolution) * resolution * resolution * kCacheSides, DColor(0.0)), sumSq_(sum_.size(), 0.0),
-      count_(sum_.size(), 0), exact_(sum_.size(), 0) {}
+    : bounds_(bounds),
+      res_(resolution),
+      sum_(size_t(resolution) * resolution * resolution * kCacheSides, DColor(0.0)),
+      sumSq_(sum_.size(), 0.0),
+      count_(sum_.size(), 0),
+      exact_(sum_.size(), 0) {}
 
 void AdjointCache::add(int entry, const Color& value) {
     sum_[size_t(entry)] += DColor(value);

@@ -38,8 +38,7 @@ float adrrsContinuations(const AdjointCache& cache, const Scene& scene, const Wa
     //! STUB (void)cache; (void)scene; (void)v; (void)pixelEstimate;
     //! STUB return PS_TODO("lesson 10: adrrsContinuations", 1.0f);
     //! BEGIN
-    if (pixelEstimate < 0.0f || scene.materials[v.sp.material].isDelta())
-        return survivalProbability(v.beta, v.bounces);
+    if (pixelEstimate < 0.0f || scene.materials[v.sp.material].isDelta()) return survivalProbability(v.beta, v.bounces);
     const int e = cache.entry(v.sp.p, v.sp.n, v.wo);
     if (!cache.reliable(e)) return survivalProbability(v.beta, v.bounces);
     const Color psi = cache.estimate(e);

@@ -14,34 +14,35 @@ TEST_CASE("adjoint cache: the cell and the side of hand-placed points (Eq. 10.8)
         int cell;
         const char* what;
     };
-    for (const CellCase& c : {CellCase{Vec3(0.1f, 1.1f, 7.9f), 0 + 4 * (1 + 4 * 3), "inside: cell (0, 1, 3)"},
-                              CellCase{Vec3(1.0f, 2.0f, 4.0f), 2 + 4 * (2 + 4 * 2), "the box's centre: (2, 2, 2)"},
-                              CellCase{Vec3(2.0f, 4.0f, 8.0f), 63, "the far corner: the last cell (3, 3, 3)"},
-                              CellCase{Vec3(-1e-6f, 0.0f, 8.00001f), 0 + 4 * (0 + 4 * 3),
-                                       "a rounding error outside: clamped to (0, 0, 3)"},
-                              CellCase{Vec3(1.9f, 0.5f, 0.1f), 3 + 4 * (0 + 4 * 0), "cell (3, 0, 0)"}}) {
+    for (const CellCase& c :
+         {CellCase{Vec3(0.1f, 1.1f, 7.9f), 0 + 4 * (1 + 4 * 3), "inside: cell (0, 1, 3)"},
+          CellCase{Vec3(1.0f, 2.0f, 4.0f), 2 + 4 * (2 + 4 * 2), "the box's centre: (2, 2, 2)"},
+          CellCase{Vec3(2.0f, 4.0f, 8.0f), 63, "the far corner: the last cell (3, 3, 3)"},
+          CellCase{Vec3(-1e-6f, 0.0f, 8.00001f), 0 + 4 * (0 + 4 * 3), "a rounding error outside: clamped to (0, 0, 3)"},
+          CellCase{Vec3(1.9f, 0.5f, 0.1f), 3 + 4 * (0 + 4 * 0), "cell (3, 0, 0)"}}) {
         const int got = cache.cell(c.p);
-        CHECK_MESSAGE(got == c.cell, "AdjointCache over [(0, 0, 0), (2, 4, 8)], 4^3 cells: cell" << str(c.p)
-                                                                                             << " expected " << c.cell
-                                                                                             << " (" << c.what
-                                                                                             << ": ix + 4 (iy + 4 iz)), got " << got);
+        CHECK_MESSAGE(got == c.cell, "AdjointCache over [(0, 0, 0), (2, 4, 8)], 4^3 cells: cell"
+                                         << str(c.p) << " expected " << c.cell << " (" << c.what
+                                         << ": ix + 4 (iy + 4 iz)), got " << got);
     }
     ps::AABB shifted;
     shifted.lo = Vec3(-1.0f, -2.0f, -3.0f);
     shifted.hi = Vec3(1.0f, 2.0f, 5.0f);
     const int centre = ps::AdjointCache(shifted, 4).cell(Vec3(0.0f));
-    CHECK_MESSAGE(centre == 2 + 4 * (2 + 4 * 1), "AdjointCache over [(-1, -2, -3), (1, 2, 5)], 4^3 cells: cell(0, 0, 0) "
-                                                 "expected 26 (cell (2, 2, 1): measured from the box's lower corner), "
-                                                 "got "
-                                                     << centre);
+    CHECK_MESSAGE(centre == 2 + 4 * (2 + 4 * 1),
+                  "AdjointCache over [(-1, -2, -3), (1, 2, 5)], 4^3 cells: cell(0, 0, 0) "
+                  "expected 26 (cell (2, 2, 1): measured from the box's lower corner), "
+                  "got "
+                      << centre);
     ps::AABB flat;
     flat.lo = Vec3(0.0f);
     flat.hi = Vec3(1.0f, 0.0f, 1.0f);
     const ps::AdjointCache flatCache(flat, 2);
     const int got = flatCache.cell(Vec3(0.7f, 0.0f, 0.2f));
-    CHECK_MESSAGE(got == 1, "AdjointCache over a flat box [(0, 0, 0), (1, 0, 1)], 2^3 cells: cell(0.7, 0, 0.2) "
-                            "expected 1 (iy = 0 along the flat axis), got "
-                                << got);
+    CHECK_MESSAGE(got == 1,
+                  "AdjointCache over a flat box [(0, 0, 0), (1, 0, 1)], 2^3 cells: cell(0.7, 0, 0.2) "
+                  "expected 1 (iy = 0 along the flat axis), got "
+                      << got);
 
     struct SideCase {
         Vec3 n, wo;
@@ -58,15 +59,16 @@ TEST_CASE("adjoint cache: the cell and the side of hand-placed points (Eq. 10.8)
           SideCase{Vec3(h, h, 0), Vec3(h, h, 0), 0, "x and y equal: the first, +x"}}) {
         const int got = ps::AdjointCache::side(c.n, c.wo);
         CHECK_MESSAGE(got == c.side, "AdjointCache::side(n " << str(c.n) << ", wo " << str(c.wo) << "): expected "
-                                                             << c.side << " (" << c.what << "; 2 axis + (1 if negative)), got "
-                                                             << got);
+                                                             << c.side << " (" << c.what
+                                                             << "; 2 axis + (1 if negative)), got " << got);
     }
     const int e = cache.entry(Vec3(0.1f, 1.1f, 7.9f), Vec3(0, 0, 1), Vec3(0, 0, -1));
-    CHECK_MESSAGE(e == 52 * ps::kCacheSides + 5, "entry = cell * 6 + side: expected " << 52 * ps::kCacheSides + 5
-                                                                                     << ", got " << e);
+    CHECK_MESSAGE(e == 52 * ps::kCacheSides + 5,
+                  "entry = cell * 6 + side: expected " << 52 * ps::kCacheSides + 5 << ", got " << e);
 }
 
-TEST_CASE("adjoint cache: the pre-pass samples what a path collects from each vertex on, over its throughput (Eq. 10.8) [1 pt]") {
+TEST_CASE(
+    "adjoint cache: the pre-pass samples what a path collects from each vertex on, over its throughput (Eq. 10.8) [1 pt]") {
     // x0 .. x4: a path of four hits (x2 a mirror: no entry) and the escape.
     std::vector<ps::PrePassVertex> path(5);
     const int entries[5] = {10, 20, -1, 30, -1};
@@ -85,9 +87,10 @@ TEST_CASE("adjoint cache: the pre-pass samples what a path collects from each ve
                          {10, Color(1.8f, 1.9f, 2.0f), "x0: (added_0 + ... + added_4) / beta_0"},
                          {20, Color(2.6f, 5.6f, 0.0f), "x1: (added_1 + ... + added_4) / beta_1, 0 where beta_1 is 0"},
                          {30, Color(9.6f), "x3: (added_3 + added_4) / beta_3"}};
-    REQUIRE_MESSAGE(out.size() == 4, "continuationSamples of a path with 3 vertices that have an entry (x0, x1, x3): "
-                                     "expected 3 samples appended to a list of 1, got a list of "
-                                         << out.size());
+    REQUIRE_MESSAGE(out.size() == 4,
+                    "continuationSamples of a path with 3 vertices that have an entry (x0, x1, x3): "
+                    "expected 3 samples appended to a list of 1, got a list of "
+                        << out.size());
     for (int i = 0; i < 4; ++i) {
         const ps::CacheSample& s = out[size_t(i)];
         const Want& w = want[i];

@@ -33,34 +33,40 @@ void checkQ(float q) {
         if (i == 0)
             CHECK_MESSAGE((c.beta.r == beta.r / q && c.beta.g == beta.g / q && c.beta.b == beta.b / q),
                           "continuations(beta " << str(beta) << ", q " << q
-                                                << "): every continuation must carry beta / q = "
-                                                << str(beta / q) << " (Eq. 10.3), got " << str(c.beta)
+                                                << "): every continuation must carry beta / q = " << str(beta / q)
+                                                << " (Eq. 10.3), got " << str(c.beta)
                                                 << (c.beta == beta ? " (beta itself: not divided by q)" : ""));
     }
     const double mean = sumN / N;
-    CHECK_MESSAGE(std::abs(mean - double(q)) <= 1.0 / N,
-                  "continuations(q " << q << "): over u on a regular grid of " << N
-                                     << " points the mean of n must be q (Eq. 10.4: n = floor(q) + 1 with probability "
-                                        "q - floor(q)), got "
-                                     << num(mean)
-                                     << (std::abs(mean - lo) <= 1.0 / N ? " = floor(q): the fraction is lost" : "")
-                                     << (q < 1.0f && mean == 1.0 ? " (q < 1 must be Russian roulette, not one path always)" : ""));
+    CHECK_MESSAGE(
+        std::abs(mean - double(q)) <= 1.0 / N,
+        "continuations(q " << q << "): over u on a regular grid of " << N
+                           << " points the mean of n must be q (Eq. 10.4: n = floor(q) + 1 with probability "
+                              "q - floor(q)), got "
+                           << num(mean) << (std::abs(mean - lo) <= 1.0 / N ? " = floor(q): the fraction is lost" : "")
+                           << (q < 1.0f && mean == 1.0 ? " (q < 1 must be Russian roulette, not one path always)"
+                                                       : ""));
     CHECK_MESSAGE(wrongN == 0, "continuations(q " << q << "): n must be floor(q) + 1 exactly when u < q - floor(q); "
-                                                 << wrongN << " of " << N << " draws wrong, the first: " << firstWrong);
-    CHECK_MESSAGE(wrongWeight == 0, "continuations(q " << q << "): " << wrongWeight << " of " << N
-                                                      << " draws did not carry beta / q");
+                                                  << wrongN << " of " << N
+                                                  << " draws wrong, the first: " << firstWrong);
+    CHECK_MESSAGE(wrongWeight == 0,
+                  "continuations(q " << q << "): " << wrongWeight << " of " << N << " draws did not carry beta / q");
     const bool whole = fraction == 0.0f;
-    CHECK_MESSAGE(drawn == (whole ? 0u : size_t(N)),
-                  "continuations(q " << q << "): expected " << (whole ? "no uniform number (q is a whole number)" : "one uniform number per call")
-                                     << ", got " << drawn << " numbers in " << N << " calls");
+    CHECK_MESSAGE(
+        drawn == (whole ? 0u : size_t(N)),
+        "continuations(q " << q << "): expected "
+                           << (whole ? "no uniform number (q is a whole number)" : "one uniform number per call")
+                           << ", got " << drawn << " numbers in " << N << " calls");
 }
 
 }  // namespace
 
-TEST_CASE("survival and splitting: E[n] = q and every continuation carries beta / q, for q < 1 (Eq. 10.3, 10.4) [1 pt]") {
+TEST_CASE(
+    "survival and splitting: E[n] = q and every continuation carries beta / q, for q < 1 (Eq. 10.3, 10.4) [1 pt]") {
     for (const float q : {0.05f, 0.3f, 0.7f}) checkQ(q);
 }
 
-TEST_CASE("survival and splitting: E[n] = q and every continuation carries beta / q, for q >= 1 (Eq. 10.3, 10.4) [1 pt]") {
+TEST_CASE(
+    "survival and splitting: E[n] = q and every continuation carries beta / q, for q >= 1 (Eq. 10.3, 10.4) [1 pt]") {
     for (const float q : {1.0f, 1.25f, 2.0f, 2.7f, 7.75f}) checkQ(q);
 }

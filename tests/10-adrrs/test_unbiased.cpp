@@ -26,22 +26,25 @@ void checkCornell(const char* what, ps::ADRRSPathTracer& adrrs, int spp, uint64_
     opt.threads = 1;
     const ps::RenderResult r = ps::render(scene, adrrs, opt);
     const ps::PathCounts& c = adrrs.counts();
-    CHECK_MESSAGE(r.stats.bad() == 0, "pt-adrrs " << what << " on the Cornell box: expected 0 NaN and 0 Inf samples, got "
+    CHECK_MESSAGE(r.stats.bad() == 0, "pt-adrrs " << what
+                                                  << " on the Cornell box: expected 0 NaN and 0 Inf samples, got "
                                                   << r.stats.nan << " NaN and " << r.stats.inf << " Inf");
     CHECK_MESSAGE((c.roulette > 0 && c.splits > 0),
-                  "pt-adrrs " << what << " on the Cornell box: expected the rule to ask for roulette (q < 1) and for "
-                                         "splitting (q > 1) somewhere, got "
+                  "pt-adrrs " << what
+                              << " on the Cornell box: expected the rule to ask for roulette (q < 1) and for "
+                                 "splitting (q > 1) somewhere, got "
                               << c.decisions << " decisions, " << c.roulette << " with q < 1, " << c.splits
                               << " with q > 1");
     const ps::stats::ZTestResult z =
         ps::stats::zTestImages(r.film.mean(), r.film.varianceOfMean(), ref, refVar, alpha());
-    CHECK_MESSAGE(z.passed, "pt-adrrs "
-                                << what << " on the Cornell box (32 x 32, maxdepth 8, " << spp << " spp, seed " << seed
-                                << "): expected lesson 3's pt reference within its noise (a = yours, b = the "
-                                   "reference), got\n  "
-                                << z.report << "\n  (" << c.decisions << " decisions: " << c.roulette
-                                << " roulette, " << c.splits << " splits; a survivor or a split path not weighted "
-                                                                "beta / q, or n not drawn with E[n] = q, biases the image)");
+    CHECK_MESSAGE(z.passed, "pt-adrrs " << what << " on the Cornell box (32 x 32, maxdepth 8, " << spp << " spp, seed "
+                                        << seed
+                                        << "): expected lesson 3's pt reference within its noise (a = yours, b = the "
+                                           "reference), got\n  "
+                                        << z.report << "\n  (" << c.decisions << " decisions: " << c.roulette
+                                        << " roulette, " << c.splits
+                                        << " splits; a survivor or a split path not weighted "
+                                           "beta / q, or n not drawn with E[n] = q, biases the image)");
 }
 
 }  // namespace

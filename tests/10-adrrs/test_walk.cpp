@@ -58,16 +58,17 @@ void checkTree(float q, float u, int n, const char* what) {
     std::string want;
     fullTree(0, kDepth, n, want);
     CHECK_MESSAGE(sequence(w.visits) == want, "splittingWalk, rule q = " << q << ", every uniform number " << u
-                                                                          << ", maxDepth 3 (" << what
-                                                                          << "): expected the vertices' bounces in "
-                                                                             "depth-first order\n  "
-                                                                          << want << "\n got\n  " << sequence(w.visits));
+                                                                         << ", maxDepth 3 (" << what
+                                                                         << "): expected the vertices' bounces in "
+                                                                            "depth-first order\n  "
+                                                                         << want << "\n got\n  " << sequence(w.visits));
     bool betaOk = true, hitOk = true;
     std::string firstBad;
     for (const Visit& v : w.visits) {
         const double want = std::pow(0.5 / double(q), v.bounces);
         const bool ok = std::abs(v.beta.r - want) <= 1e-5 * want && v.beta.r == v.beta.g && v.beta.g == v.beta.b;
-        if (!ok && betaOk) firstBad = "bounces " + std::to_string(v.bounces) + ": expected " + num(want) + ", got " + str(v.beta);
+        if (!ok && betaOk)
+            firstBad = "bounces " + std::to_string(v.bounces) + ": expected " + num(want) + ", got " + str(v.beta);
         betaOk = betaOk && ok;
         hitOk = hitOk && v.hit;
     }
@@ -84,11 +85,10 @@ void checkTree(float q, float u, int n, const char* what) {
         if (v.bounces > 0) ++samples;
     }
     const size_t numbers = (q == std::floor(q) ? 0 : decisions) + 3 * samples;
-    CHECK_MESSAGE(w.numbers == numbers, "splittingWalk, rule q = " << q << " (" << what << "): expected "
-                                                                   << numbers << " uniform numbers ("
-                                                                   << (q == std::floor(q) ? "none" : "one")
-                                                                   << " per decision, 3 per BSDF sample), got "
-                                                                   << w.numbers);
+    CHECK_MESSAGE(w.numbers == numbers,
+                  "splittingWalk, rule q = " << q << " (" << what << "): expected " << numbers << " uniform numbers ("
+                                             << (q == std::floor(q) ? "none" : "one")
+                                             << " per decision, 3 per BSDF sample), got " << w.numbers);
 }
 
 }  // namespace
@@ -108,7 +108,8 @@ TEST_CASE("splitting walk: the tree of paths, depth first, each continuation wit
                       << sequence(w.visits));
 }
 
-TEST_CASE("splitting walk: a camera ray starts at most kMaxPathsPerCameraRay paths, then q <= 1 (Algorithm 10.1) [1 pt]") {
+TEST_CASE(
+    "splitting walk: a camera ray starts at most kMaxPathsPerCameraRay paths, then q <= 1 (Algorithm 10.1) [1 pt]") {
     // q = 8 everywhere, maxDepth 2: the camera ray's vertex starts 8 paths; its first four
     // continuations split into 8 each while fewer than 32 paths have been started (8, 15, 22, 29:
     // after the fourth, 36); the last four go on once (q cut to 1).
@@ -119,11 +120,12 @@ TEST_CASE("splitting walk: a camera ray starts at most kMaxPathsPerCameraRay pat
         want += "1 ";
         for (int j = 0; j < (i < 4 ? 8 : 1); ++j) want += "2 ";
     }
-    CHECK_MESSAGE(sequence(w.visits) == want,
-                  "splittingWalk, rule q = 8, maxDepth 2: expected 8 continuations at bounces 0, 8 at each of the first four "
-                  "vertices with 1 bounce (paths started: 8, 15, 22, 29, then 36 >= kMaxPathsPerCameraRay = 32) and "
-                  "1 at the last four:\n  "
-                      << want << "\n got\n  " << sequence(w.visits));
+    CHECK_MESSAGE(
+        sequence(w.visits) == want,
+        "splittingWalk, rule q = 8, maxDepth 2: expected 8 continuations at bounces 0, 8 at each of the first four "
+        "vertices with 1 bounce (paths started: 8, 15, 22, 29, then 36 >= kMaxPathsPerCameraRay = 32) and "
+        "1 at the last four:\n  "
+            << want << "\n got\n  " << sequence(w.visits));
     // beta: 1, then 0.5 / 8 after the first bounce; after the second 0.5 / 8 * 0.5 / 8 below a split
     // and 0.5 / 8 * 0.5 / 1 below a vertex whose q was cut to 1 (its one continuation carries beta / 1).
     std::vector<double> betas = {1.0};
@@ -134,9 +136,10 @@ TEST_CASE("splitting walk: a camera ray starts at most kMaxPathsPerCameraRay pat
     bool betaOk = w.visits.size() == betas.size();
     for (size_t i = 0; betaOk && i < betas.size(); ++i)
         betaOk = std::abs(w.visits[i].beta.r - betas[i]) <= 1e-5 * betas[i];
-    CHECK_MESSAGE(betaOk, "splittingWalk, rule q = 8 with the cap: expected beta = 0.5 / 8 after one bounce, "
-                          "(0.5 / 8)^2 below the four splits and 0.5 / 8 * 0.5 below the four vertices whose q was "
-                          "cut to 1 (a continuation carries beta divided by the q actually used)");
+    CHECK_MESSAGE(betaOk,
+                  "splittingWalk, rule q = 8 with the cap: expected beta = 0.5 / 8 after one bounce, "
+                  "(0.5 / 8)^2 below the four splits and 0.5 / 8 * 0.5 below the four vertices whose q was "
+                  "cut to 1 (a continuation carries beta divided by the q actually used)");
 }
 
 TEST_CASE("pt-adrrs: the same image and counts for 1 and 2 threads [1 pt]") {
@@ -159,9 +162,10 @@ TEST_CASE("pt-adrrs: the same image and counts for 1 and 2 threads [1 pt]") {
     size_t differ = 0;
     for (size_t i = 0; i < one.first.pixels.size(); ++i)
         if (one.first.pixels[i] != two.first.pixels[i]) ++differ;
-    CHECK_MESSAGE(differ == 0, "pt-adrrs on the Cornell box (16 x 16, 4 spp): expected the same image for 1 and 2 "
-                               "threads (every number of a camera ray's tree from its pixel's generator), "
-                                   << differ << " pixels differ");
+    CHECK_MESSAGE(differ == 0,
+                  "pt-adrrs on the Cornell box (16 x 16, 4 spp): expected the same image for 1 and 2 "
+                  "threads (every number of a camera ray's tree from its pixel's generator), "
+                      << differ << " pixels differ");
     CHECK_MESSAGE((one.second.vertices == two.second.vertices && one.second.wasted == two.second.wasted),
                   "pt-adrrs: expected the same counts for 1 and 2 threads, got " << one.second.vertices << " and "
                                                                                  << two.second.vertices << " vertices");

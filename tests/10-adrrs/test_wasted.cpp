@@ -40,21 +40,21 @@ void checkScene(const std::string& name, uint64_t seed) {
     const auto useful = [](const ps::PathCounts& p) {
         return p.cameraRays ? double(p.vertices - p.wasted) / double(p.cameraRays) : 0.0;
     };
-    const std::string counts = "lesson 3's roulette: " + std::to_string(c.vertices) + " vertices, " +
-                               std::to_string(c.wasted) + " wasted (" + num(100.0 * share(c), 4) + " %); ADRRS: " +
-                               std::to_string(a.vertices) + " vertices, " + std::to_string(a.wasted) + " wasted (" +
-                               num(100.0 * share(a), 4) + " %), " + std::to_string(a.decisions) + " decisions, " +
-                               std::to_string(a.roulette) + " with q < 1, " + std::to_string(a.splits) + " with q > 1";
+    const std::string counts =
+        "lesson 3's roulette: " + std::to_string(c.vertices) + " vertices, " + std::to_string(c.wasted) + " wasted (" +
+        num(100.0 * share(c), 4) + " %); ADRRS: " + std::to_string(a.vertices) + " vertices, " +
+        std::to_string(a.wasted) + " wasted (" + num(100.0 * share(a), 4) + " %), " + std::to_string(a.decisions) +
+        " decisions, " + std::to_string(a.roulette) + " with q < 1, " + std::to_string(a.splits) + " with q > 1";
     REQUIRE_MESSAGE((a.vertices > 0 && adrrs.total > 0.0),
                     "pt-adrrs on scenes/" << name << ".scene (32 x 32, " << kSpp
                                           << " spp): expected a lit image from some path vertices, got the sum of all "
                                              "pixels "
                                           << adrrs.total << " from " << a.vertices << " vertices");
-    CHECK_MESSAGE(share(a) < share(c),
-                  "pt-adrrs on scenes/" << name << ".scene (32 x 32, " << kSpp << " spp, seed " << seed
-                                        << "): expected a smaller share of the path vertices on branches that add "
-                                           "nothing than with lesson 3's roulette, got "
-                                        << counts);
+    CHECK_MESSAGE(share(a) < share(c), "pt-adrrs on scenes/"
+                                           << name << ".scene (32 x 32, " << kSpp << " spp, seed " << seed
+                                           << "): expected a smaller share of the path vertices on branches that add "
+                                              "nothing than with lesson 3's roulette, got "
+                                           << counts);
     CHECK_MESSAGE(useful(a) > 1.2 * useful(c),
                   "pt-adrrs on scenes/" << name << ".scene (32 x 32, " << kSpp << " spp, seed " << seed
                                         << "): expected at least 1.2 times as many vertices that add something per "
@@ -65,7 +65,8 @@ void checkScene(const std::string& name, uint64_t seed) {
 
 }  // namespace
 
-TEST_CASE("pt-adrrs: a dim room lit through a small opening wastes a smaller share of its vertices than lesson 3's roulette [1 pt]") {
+TEST_CASE(
+    "pt-adrrs: a dim room lit through a small opening wastes a smaller share of its vertices than lesson 3's roulette [1 pt]") {
     checkScene("skylight", 1010);
 }
 

@@ -17,10 +17,10 @@ TEST_CASE("weight window: centre I~ / Psi~, bounds 2 C / (1 + s) and s times tha
                           Case{1.0f, 4.0f, 5.0f, 0.25, 0.5 / 6.0, 2.5 / 6.0}, Case{0.0f, 2.0f, 5.0f, 0.0, 0.0, 0.0}}) {
         const ps::WeightWindow w = ps::weightWindow(c.I, c.psi, c.s);
         const bool centreOk = c.centre == 0.0 ? w.centre == 0.0f : close(w.centre, c.centre);
-        CHECK_MESSAGE(centreOk, "weightWindow(I~ " << c.I << ", Psi~ " << c.psi << ", s " << c.s
-                                                   << "): expected the centre C_ww = I~ / Psi~ = " << c.centre
-                                                   << " (Eq. 10.5), got " << w.centre
-                                                   << (close(w.centre, c.psi) ? " (Psi~: the centre is I~ / Psi~)" : ""));
+        CHECK_MESSAGE(centreOk, "weightWindow(I~ "
+                                    << c.I << ", Psi~ " << c.psi << ", s " << c.s
+                                    << "): expected the centre C_ww = I~ / Psi~ = " << c.centre << " (Eq. 10.5), got "
+                                    << w.centre << (close(w.centre, c.psi) ? " (Psi~: the centre is I~ / Psi~)" : ""));
         const bool boundsOk = c.centre == 0.0 ? (w.lower == 0.0f && w.upper == 0.0f)
                                               : (close(w.lower, c.lower) && close(w.upper, c.upper));
         CHECK_MESSAGE(boundsOk, "weightWindow(I~ " << c.I << ", Psi~ " << c.psi << ", s " << c.s
@@ -58,8 +58,8 @@ TEST_CASE("weight window: roulette below it, splitting above it, nothing inside,
           Case{100.0f, ps::kMaxContinuations, "above: nu / delta+ = 15, clamped to kMaxContinuations"}}) {
         const float q = ps::expectedContinuations(c.nu, w);
         CHECK_MESSAGE(close(q, c.q), "expectedContinuations(nu " << c.nu << ", window [" << w.lower << ", " << w.upper
-                                                                  << "]): expected q = " << c.q << " (" << c.why
-                                                                  << ", Eq. 10.7), got " << q);
+                                                                 << "]): expected q = " << c.q << " (" << c.why
+                                                                 << ", Eq. 10.7), got " << q);
     }
     const float none = ps::expectedContinuations(1.0f, ps::weightWindow(1.0f, 0.0f));
     CHECK_MESSAGE(close(none, ps::kMinContinuations),
