@@ -53,13 +53,13 @@ public:
     // Adds one sample (the pre-pass, Eq. 10.8) to an entry.
     void add(int entry, const Color& value);
     // An entry's estimate: the mean of its samples (black without one).
-    Color estimate(int entry) const;
+    Color estimate(int entry) const { return mean_[size_t(entry)]; }
     uint32_t samples(int entry) const { return count_[size_t(entry)]; }
     // The relative standard error of an entry's estimate (of the mean of its channels): sqrt(s^2 /
     // n) / mean; +infinity with fewer than 2 samples or a mean of 0; 0 for an entry set().
     float relativeError(int entry) const;
     // Whether ADRRS may use the entry: relativeError(entry) <= kMaxRelativeError.
-    bool reliable(int entry) const { return relativeError(entry) <= kMaxRelativeError; }
+    bool reliable(int entry) const { return reliable_[size_t(entry)] != 0; }
     // Sets an entry's estimate outright, as exact (reliable unless black; tests: a deliberately
     // bad cache).
     void set(int entry, const Color& value);
@@ -72,7 +72,10 @@ private:
     std::vector<DColor> sum_;
     std::vector<double> sumSq_;  // of the mean of each sample's channels
     std::vector<uint32_t> count_;
-    std::vector<uint8_t> exact_;  // set() by hand: relative error 0
+    std::vector<uint8_t> exact_;     // set() by hand: relative error 0
+    std::vector<Color> mean_;        // estimate(), kept up to date by add() and set()
+    std::vector<uint8_t> reliable_;  // reliable(), likewise
+    void update(int entry);
 };
 
 // One vertex of a pre-pass path, as the walk's visitor saw it (the escape included).
