@@ -142,7 +142,7 @@ fi
 if wanted 10; then
   d="$(dest 10-adrrs)"; s="$(scene skylight 128)"
   r="$(reference pt "$(t 600 2)" "$s")"
-  converge "$s" "$r" "$work/10" --algos pt,pt-adrrs --time "$(t 10 0.3)" --seeds 2
+  converge "$s" "$r" "$work/10" --algos pt,pt-adrrs --time "$(t 20 0.3)" --seeds 2
   cp "$work/10/equal-time.png" "$d/skylight-equal-time.png"; cp "$work/10/convergence.svg" "$d/skylight-convergence.svg"
   cp "$work/10/convergence.csv" "$d/skylight-convergence.csv"; cp "$work/10/efficiency.md" "$d/skylight-efficiency.md"
   done_fig "$d/skylight-equal-time.png, skylight-convergence.svg, skylight-convergence.csv, skylight-efficiency.md"

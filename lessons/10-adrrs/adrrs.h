@@ -1,9 +1,10 @@
 // Lesson 10's adjoint-driven Russian roulette and splitting (ADRRS, Vorba and Křivánek 2016) inside
 // lesson 3's path tracer: a short path-traced pre-pass fills a cache with the radiance a path
-// still collects after each vertex (the adjoint of the path tracer's importance transport, Eq.
-// 10.3, 10.4); at every vertex the walk compares the path's expected contribution with the pixel's
-// (the weight window, Eq. 10.5-10.7) and goes on with an expected number q of continuations, each
-// weighted beta / q (Eq. 10.8, 10.9): q < 1 is Russian roulette, q > 1 splitting. Implemented in
+// collects from each vertex on (the adjoint of the path tracer's importance transport, Eq. 10.1,
+// 10.8); at every vertex the walk compares the path's expected contribution with the pixel's (the
+// weight window, Eq. 10.2, 10.5-10.7, 10.9) and goes on with an expected number q of
+// continuations, each weighted beta / q (Eq. 10.3, 10.4): q < 1 is Russian roulette, q > 1
+// splitting. Implemented in
 // solutions/10-adrrs/*.cpp (reference) or assignments/10-adrrs/*.cpp (yours);
 // lessons/10-adrrs/README.md derives every formula (Eq. 10.1-10.9, Algorithm 10.1).
 #pragma once
@@ -84,14 +85,15 @@ struct PrePassVertex {
     Color beta;      // the throughput beta_k of the path up to the vertex (Eq. 3.4)
     Color added;     // what the vertex added to the path's estimate (addMISContribution, Eq. 3.7)
 };
-// One sample for the cache: an entry and a value of the radiance still to come there.
+// One sample for the cache: an entry and a value of the radiance collected from there on.
 struct CacheSample {
     int entry = -1;
     Color value;
 };
-// The pre-pass samples of one path (Eq. 10.4): for every vertex k with an entry, the radiance the
-// path collected AFTER x_k, sum over j > k of added_j, divided by beta_k channel by channel (a
-// channel where beta_k is 0 gives 0), appended to `out` in the order of the vertices.
+// The pre-pass samples of one path (Eq. 10.8): for every vertex k with an entry, the radiance the
+// path collected from x_k on, the sum over j >= k of added_j (x_k's own light sample included),
+// divided by beta_k channel by channel (a channel where beta_k is 0 gives 0), appended to `out` in
+// the order of the vertices.
 void continuationSamples(const std::vector<PrePassVertex>& path, std::vector<CacheSample>& out);
 
 // ---------------------------------------------------------------------------------------------
@@ -105,7 +107,7 @@ struct WeightWindow {
     float lower = 0.0f;   // delta- = 2 C_ww / (1 + s) (Eq. 10.6)
     float upper = 0.0f;   // delta+ = s delta-
 };
-// The window of a path at a vertex where the cache predicts Psi~ > 0 still to come, in a pixel
+// The window of a path at a vertex where the cache predicts Psi~ > 0 from there on, in a pixel
 // whose estimate is I~ >= 0 (Eq. 10.5, 10.6); `ratio` is s. Psi~ <= 0 (the cache says the path
 // will collect nothing): every bound +infinity.
 WeightWindow weightWindow(float pixelEstimate, float adjoint, float ratio = kWindowRatio);
@@ -117,29 +119,29 @@ float expectedContinuations(float weight, const WeightWindow& window);
 // ---------------------------------------------------------------------------------------------
 // The ADRRS decision at a vertex (Eq. 10.2-10.7).
 
-// The pixel estimate I~ of a camera ray (Eq. 10.2): the mean over the colour channels of what the
-// cache predicts the camera path still collects after its first vertex x0 (the camera ray's own
+// The pixel estimate I~ of a camera ray (Eq. 10.9): the mean over the colour channels of what the
+// cache predicts the camera path collects from its first vertex x0 on (the camera ray's own
 // vertex, bounces 0); -1 where the cache has no reliable estimate for x0 (a miss, a delta
 // material, an entry that is not reliable): that camera ray plays lesson 3's roulette throughout.
 float pixelEstimate(const AdjointCache& cache, const Scene& scene, const WalkVertex& x0);
 
-// q at vertex v of a camera path whose pixel estimate is I~ (Eq. 10.3-10.7): with the cache's
-// Psi~ (a colour) for v, the path's weight nu = sum_c beta_c Psi~_c / sum_c Psi~_c (nu Psi~ is the
-// path's expected contribution, Eq. 10.3) and Psi~ as one number, the mean of its channels;
+// q at vertex v of a camera path whose pixel estimate is I~ (Eq. 10.2, 10.5-10.7): with the
+// cache's Psi~ (a colour) for v, the path's weight nu = sum_c beta_c Psi~_c / sum_c Psi~_c (nu Psi~
+// is the path's expected contribution, Eq. 10.2) and Psi~ as one number, the mean of its channels;
 // Psi~ black: nu = the mean of beta's channels. Where ADRRS cannot decide (I~ < 0, a delta
 // material, an entry that is not reliable) lesson 3's roulette decides: survivalProbability(v.beta,
 // v.bounces).
 float adrrsContinuations(const AdjointCache& cache, const Scene& scene, const WalkVertex& v, float pixelEstimate);
 
 // ---------------------------------------------------------------------------------------------
-// Survival and splitting (Eq. 10.8, 10.9) and the walk that branches (Algorithm 10.1).
+// Survival and splitting (Eq. 10.3, 10.4) and the walk that branches (Algorithm 10.1).
 
 // How a path goes on from a vertex: n continuations, each with throughput beta.
 struct Continuations {
     int n = 0;
     Color beta;
 };
-// Eq. 10.8, 10.9: n = floor(q) + 1 with probability q - floor(q), else floor(q), so E[n] = q; each
+// Eq. 10.3, 10.4: n = floor(q) + 1 with probability q - floor(q), else floor(q), so E[n] = q; each
 // continuation carries beta / q. Draws one rng.uniform() (n = floor(q) + 1 if it is below
 // q - floor(q)) only when q is not a whole number. q > 0.
 Continuations continuations(const Color& beta, float q, Rng& rng);

@@ -1,6 +1,6 @@
 // Lesson 10, graded: the pen-and-paper exercise (README, "Exercise (pen and paper)", Eq. 10.E1).
 // The student's closed form against the variance of n / q computed from n's distribution
-// (Eq. 10.4), summed over its two values.
+// (Eq. 10.4) summed over its two values.
 #include <doctest/doctest.h>
 #include <cmath>
 #include <initializer_list>
