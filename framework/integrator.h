@@ -25,6 +25,9 @@ public:
     // (scene, iteration, seed) only, never of the thread count.
     virtual void renderIteration(const Scene& scene, uint32_t iteration, uint64_t seed, Image& out,
                                  SampleStats& stats) = 0;
+    // What the integrator counted during the render, one line each (lesson 10: path vertices,
+    // splits, roulette), printed by the render command after its summary. Empty by default.
+    virtual std::vector<std::string> report() const { return {}; }
 };
 
 // An integrator that estimates the radiance along one camera ray per pixel per iteration.

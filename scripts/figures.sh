@@ -142,6 +142,17 @@ if wanted 09; then
   done
 fi
 
+# Lesson 10: the skylight, pt and pt-adrrs at equal time, the pre-pass included, and the converge
+# report (lessons/10 README, section 5).
+if wanted 10; then
+  d="$(dest 10-adrrs)"; s="$(scene skylight 128)"
+  r="$(reference pt "$(t 600 2)" "$s")"
+  converge "$s" "$r" "$work/10" --algos pt,pt-adrrs --time "$(t 20 0.3)" --seeds 2
+  cp "$work/10/equal-time.png" "$d/skylight-equal-time.png"; cp "$work/10/convergence.svg" "$d/skylight-convergence.svg"
+  cp "$work/10/convergence.csv" "$d/skylight-convergence.csv"; cp "$work/10/efficiency.md" "$d/skylight-efficiency.md"
+  done_fig "$d/skylight-equal-time.png, skylight-convergence.svg, skylight-convergence.csv, skylight-efficiency.md"
+fi
+
 # Every image a slide deck shows from a lesson folder must be one this script makes (so one command
 # remakes all of them); checked when every lesson was run.
 if [ ${#only[@]} -eq 0 ]; then

@@ -123,6 +123,7 @@ int runRender(const std::vector<std::string>& args) {
     }
     if (opt.csv) written += ", " + csvPath;
     std::cout << "pathspace: " << summaryLine(res) << "; wrote " << written << "\n";
+    for (const std::string& line : integrator->report()) std::cout << "pathspace: " << algo << ": " << line << "\n";
     if (res.stats.bad() > 0)
         std::cerr << "pathspace: warning: " << res.stats.bad()
                   << " samples were NaN or Inf; they were left out of the image (see the counts above)\n";

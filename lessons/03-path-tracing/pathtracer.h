@@ -62,5 +62,9 @@ Color LiNextEvent(const Scene& scene, const Ray& ray, Rng& rng, int maxDepth);
 // Next-event estimation and BSDF hits combined by MIS with kPathHeuristic (Eq. 3.7). Algorithm "pt".
 constexpr Heuristic kPathHeuristic = Heuristic::Power;
 Color LiMIS(const Scene& scene, const Ray& ray, Rng& rng, int maxDepth);
+// LiMIS's visitor: adds to L what vertex v contributes (Eq. 3.7), first the MIS-weighted emission
+// the walk found there, then the MIS-weighted light sample taken there (its numbers from rng).
+// LiMIS is cameraWalk with this visitor; lesson 10's walk with splitting uses it too.
+void addMISContribution(const Scene& scene, const WalkVertex& v, Rng& rng, int maxDepth, Color& L);
 
 }  // namespace ps

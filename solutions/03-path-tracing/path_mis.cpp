@@ -6,36 +6,40 @@
 
 namespace ps {
 
+void addMISContribution(const Scene& scene, const WalkVertex& v, Rng& rng, int maxDepth, Color& L) {
+    //! TODO(03) Add to L what vertex x_k adds with both techniques weighted by kPathHeuristic
+    //!          (Eq. 3.7): the emission the walk finds (the hit light sp.light, or
+    //!          scene.background where it left) with weight 1 after a specular bounce, else
+    //!          the BSDF sample's weight from v.pdfPrev against the density with which a
+    //!          light sample at the previous vertex would have chosen it (lesson 2's
+    //!          pdfLightDirection); then, where LiNextEvent takes one, the light sample with
+    //!          its weight from DirectSample's two densities (two additions to L, in that order).
+    //!          Pitfall: both densities of the hit belong to x_{k-1} (v.pPrev), not to x_k.
+    //! STUB (void)scene; (void)v; (void)rng; (void)maxDepth; (void)L;
+    //! STUB (void)PS_TODO("lesson 03: addMISContribution (LiMIS)", 0);
+    //! BEGIN
+    // Emission found by the walk: the background where it leaves, or the surface it hits.
+    const int light = v.hit ? v.sp.light : scene.background;
+    if (light >= 0) {
+        const Color Le = v.hit ? emittedRadiance(scene.lights[light], v.sp.n, v.wo) : scene.backgroundRadiance();
+        if (!isBlack(Le)) {
+            const float w = v.specular ? 1.0f
+                                       : misWeight(kPathHeuristic, 1.0f, v.pdfPrev, 1.0f,
+                                                   pdfLightDirection(scene, light, v.pPrev, v.sp.p, v.sp.n));
+            L += v.beta * Le * w;
+        }
+    }
+    if (!v.hit || v.bounces == maxDepth || scene.materials[v.sp.material].isDelta()) return;
+    const DirectSample d = sampleDirectLight(scene, v.sp, v.wo, rng.uniform(), rng.uniform2());
+    L += v.beta * d.value * misWeight(kPathHeuristic, 1.0f, d.pdfLight, 1.0f, d.pdfBSDF);
+    //! END
+}
+
 Color LiMIS(const Scene& scene, const Ray& cameraRay, Rng& rng, int maxDepth) {
     Color L(0.0f);
     cameraWalk(scene, cameraRay, rng, maxDepth, [&](const WalkVertex& v) {
-        //! TODO(03) What vertex x_k adds to L with both techniques weighted by kPathHeuristic
-        //!          (Eq. 3.7): the emission the walk finds (the hit light sp.light, or
-        //!          scene.background where it left) with weight 1 after a specular bounce, else
-        //!          the BSDF sample's weight from v.pdfPrev against the density with which a
-        //!          light sample at the previous vertex would have chosen it (lesson 2's
-        //!          pdfLightDirection); and, where LiNextEvent takes one, the light sample with
-        //!          its weight from DirectSample's two densities. Return true.
-        //!          Pitfall: both densities of the hit belong to x_{k-1} (v.pPrev), not to x_k.
-        //! STUB (void)v;
-        //! STUB return PS_TODO("lesson 03: LiMIS", false);
-        //! BEGIN
-        // Emission found by the walk: the background where it leaves, or the surface it hits.
-        const int light = v.hit ? v.sp.light : scene.background;
-        if (light >= 0) {
-            const Color Le = v.hit ? emittedRadiance(scene.lights[light], v.sp.n, v.wo) : scene.backgroundRadiance();
-            if (!isBlack(Le)) {
-                const float w = v.specular ? 1.0f
-                                           : misWeight(kPathHeuristic, 1.0f, v.pdfPrev, 1.0f,
-                                                       pdfLightDirection(scene, light, v.pPrev, v.sp.p, v.sp.n));
-                L += v.beta * Le * w;
-            }
-        }
-        if (!v.hit || v.bounces == maxDepth || scene.materials[v.sp.material].isDelta()) return true;
-        const DirectSample d = sampleDirectLight(scene, v.sp, v.wo, rng.uniform(), rng.uniform2());
-        L += v.beta * d.value * misWeight(kPathHeuristic, 1.0f, d.pdfLight, 1.0f, d.pdfBSDF);
+        addMISContribution(scene, v, rng, maxDepth, L);
         return true;
-        //! END
     });
     return L;
 }

@@ -1,0 +1,172 @@
+// Lesson 10, graded: the walk with survival and splitting (Algorithm 10.1) in a closed box (every
+// ray hits a wall of albedo 0.5, so every BSDF sample's weight is 0.5), with rules of the test's own
+// and the uniform numbers replayed: the tree's vertices in depth-first order, their throughputs,
+// the numbers drawn, the cap on the paths of one camera ray; and pt-adrrs's image for 1 and 2
+// threads.
+#include "lesson10.h"
+#include <functional>
+
+using namespace lesson10;
+
+namespace {
+
+struct Visit {
+    int bounces;
+    bool hit;
+    Color beta;
+};
+
+struct Walked {
+    std::vector<Visit> visits;
+    size_t numbers = 0;
+};
+
+Walked walk(const ps::Scene& scene, int maxDepth, float q, float u, const std::function<bool(int)>& goOn = nullptr) {
+    Replay replay;
+    replay.fill = u;
+    ps::Rng rng;
+    rng.replayFrom(&replay);
+    Walked w;
+    const ps::Ray ray(Vec3(0.5f), glm::normalize(Vec3(0.1f, -0.2f, 1.0f)));
+    ps::splittingWalk(
+        scene, ray, rng, maxDepth, [&](const ps::WalkVertex&) { return q; },
+        [&](const ps::WalkVertex& v) {
+            w.visits.push_back({v.bounces, v.hit, v.beta});
+            return goOn ? goOn(v.bounces) : true;
+        });
+    w.numbers = replay.read;
+    return w;
+}
+
+std::string sequence(const std::vector<Visit>& visits) {
+    std::string s;
+    for (const Visit& v : visits) s += std::to_string(v.bounces) + " ";
+    return s;
+}
+
+// The bounces of a complete tree with n continuations everywhere, depth first.
+void fullTree(int bounces, int maxDepth, int n, std::string& s) {
+    s += std::to_string(bounces) + " ";
+    if (bounces < maxDepth)
+        for (int i = 0; i < n; ++i) fullTree(bounces + 1, maxDepth, n, s);
+}
+
+void checkTree(float q, float u, int n, const char* what) {
+    const ps::Scene scene = closedBox(0.5f, 8, false);
+    constexpr int kDepth = 3;
+    const Walked w = walk(scene, kDepth, q, u);
+    std::string want;
+    fullTree(0, kDepth, n, want);
+    CHECK_MESSAGE(sequence(w.visits) == want, "splittingWalk, rule q = " << q << ", every uniform number " << u
+                                                                         << ", maxDepth 3 (" << what
+                                                                         << "): expected the vertices' bounces in "
+                                                                            "depth-first order\n  "
+                                                                         << want << "\n got\n  " << sequence(w.visits));
+    bool betaOk = true, hitOk = true;
+    std::string firstBad;
+    for (const Visit& v : w.visits) {
+        const double want = std::pow(0.5 / double(q), v.bounces);
+        const bool ok = std::abs(v.beta.r - want) <= 1e-5 * want && v.beta.r == v.beta.g && v.beta.g == v.beta.b;
+        if (!ok && betaOk)
+            firstBad = "bounces " + std::to_string(v.bounces) + ": expected " + num(want) + ", got " + str(v.beta);
+        betaOk = betaOk && ok;
+        hitOk = hitOk && v.hit;
+    }
+    CHECK_MESSAGE(betaOk, "splittingWalk, rule q = " << q << " (" << what
+                                                     << "): a vertex after k bounces must have beta = (albedo / q)^k = "
+                                                        "(0.5 / q)^k (each continuation carries beta / q); "
+                                                     << firstBad);
+    CHECK_MESSAGE(hitOk, "splittingWalk in a closed box: every vertex must be a hit");
+    // Numbers: one per decision where q is not whole (decisions at the vertices with bounces <
+    // maxDepth), three per BSDF sample (one per continuation).
+    size_t decisions = 0, samples = 0;
+    for (const Visit& v : w.visits) {
+        if (v.bounces < kDepth) ++decisions;
+        if (v.bounces > 0) ++samples;
+    }
+    const size_t numbers = (q == std::floor(q) ? 0 : decisions) + 3 * samples;
+    CHECK_MESSAGE(w.numbers == numbers,
+                  "splittingWalk, rule q = " << q << " (" << what << "): expected " << numbers << " uniform numbers ("
+                                             << (q == std::floor(q) ? "none" : "one")
+                                             << " per decision, 3 per BSDF sample), got " << w.numbers);
+}
+
+}  // namespace
+
+TEST_CASE("splitting walk: the tree of paths, depth first, each continuation with beta / q (Algorithm 10.1) [2 pts]") {
+    checkTree(1.5f, 0.25f, 2, "u below q - floor(q): two continuations everywhere");
+    checkTree(1.5f, 0.75f, 1, "u above q - floor(q): one continuation everywhere");
+    checkTree(0.5f, 0.25f, 1, "q < 1, u below q: the path survives");
+    checkTree(0.5f, 0.75f, 0, "q < 1, u above q: roulette ends the path at the camera ray's vertex");
+    checkTree(3.0f, 0.9f, 3, "a whole q: exactly 3 continuations, no number drawn");
+
+    // The visitor ends a branch.
+    const ps::Scene scene = closedBox(0.5f, 8, false);
+    const Walked w = walk(scene, 3, 2.0f, 0.5f, [](int bounces) { return bounces < 1; });
+    CHECK_MESSAGE(sequence(w.visits) == "0 1 1 ",
+                  "splittingWalk, rule q = 2, the visitor says stop at bounces 1: expected the vertices 0 1 1, got "
+                      << sequence(w.visits));
+}
+
+TEST_CASE(
+    "splitting walk: a camera ray starts at most kMaxPathsPerCameraRay paths, then q <= 1 (Algorithm 10.1) [1 pt]") {
+    // q = 8 everywhere, maxDepth 2: the camera ray's vertex starts 8 paths; its first four
+    // continuations split into 8 each while fewer than 32 paths have been started (8, 15, 22, 29:
+    // after the fourth, 36); the last four go on once (q cut to 1).
+    const ps::Scene scene = closedBox(0.5f, 8, false);
+    const Walked w = walk(scene, 2, 8.0f, 0.5f);
+    std::string want = "0 ";
+    for (int i = 0; i < 8; ++i) {
+        want += "1 ";
+        for (int j = 0; j < (i < 4 ? 8 : 1); ++j) want += "2 ";
+    }
+    CHECK_MESSAGE(
+        sequence(w.visits) == want,
+        "splittingWalk, rule q = 8, maxDepth 2: expected 8 continuations at bounces 0, 8 at each of the first four "
+        "vertices with 1 bounce (paths started: 8, 15, 22, 29, then 36 >= kMaxPathsPerCameraRay = 32) and "
+        "1 at the last four:\n  "
+            << want << "\n got\n  " << sequence(w.visits));
+    // beta: 1, then 0.5 / 8 after the first bounce; after the second 0.5 / 8 * 0.5 / 8 below a split
+    // and 0.5 / 8 * 0.5 / 1 below a vertex whose q was cut to 1 (its one continuation carries beta / 1).
+    std::vector<double> betas = {1.0};
+    for (int i = 0; i < 8; ++i) {
+        betas.push_back(0.5 / 8.0);
+        for (int j = 0; j < (i < 4 ? 8 : 1); ++j) betas.push_back(0.5 / 8.0 * (i < 4 ? 0.5 / 8.0 : 0.5));
+    }
+    bool betaOk = w.visits.size() == betas.size();
+    for (size_t i = 0; betaOk && i < betas.size(); ++i)
+        betaOk = std::abs(w.visits[i].beta.r - betas[i]) <= 1e-5 * betas[i];
+    CHECK_MESSAGE(betaOk,
+                  "splittingWalk, rule q = 8 with the cap: expected beta = 0.5 / 8 after one bounce, "
+                  "(0.5 / 8)^2 below the four splits and 0.5 / 8 * 0.5 below the four vertices whose q was "
+                  "cut to 1 (a continuation carries beta divided by the q actually used)");
+}
+
+TEST_CASE("pt-adrrs: the same image and counts for 1 and 2 threads [1 pt]") {
+    const ps::Scene scene = loadSceneAt("scenes/cornell-box.scene", 16, 16);
+    const auto run = [&](int threads) {
+        ps::ADRRSPathTracer adrrs;
+        ps::RenderOptions opt;
+        opt.spp = 4;
+        opt.seed = ps::testseed::seed(1001);
+        opt.threads = threads;
+        const ps::RenderResult r = ps::render(scene, adrrs, opt);
+        return std::make_pair(r.film.mean(), adrrs.counts());
+    };
+    const auto one = run(1), two = run(2);
+    double total = 0.0;
+    for (const Color& c : one.first.pixels) total += ps::testrender::sum(c);
+    CHECK_MESSAGE((total > 0.0 && one.second.vertices > 0),
+                  "pt-adrrs on the Cornell box (16 x 16, 4 spp): expected a lit image, got the sum of all pixels "
+                      << total << " from " << one.second.vertices << " path vertices");
+    size_t differ = 0;
+    for (size_t i = 0; i < one.first.pixels.size(); ++i)
+        if (one.first.pixels[i] != two.first.pixels[i]) ++differ;
+    CHECK_MESSAGE(differ == 0,
+                  "pt-adrrs on the Cornell box (16 x 16, 4 spp): expected the same image for 1 and 2 "
+                  "threads (every number of a camera ray's tree from its pixel's generator), "
+                      << differ << " pixels differ");
+    CHECK_MESSAGE((one.second.vertices == two.second.vertices && one.second.wasted == two.second.wasted),
+                  "pt-adrrs: expected the same counts for 1 and 2 threads, got " << one.second.vertices << " and "
+                                                                                 << two.second.vertices << " vertices");
+}
