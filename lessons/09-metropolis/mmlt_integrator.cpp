@@ -181,10 +181,10 @@ void MMLT::start(const Scene& scene, uint64_t seed, int pixels, SampleStats& sta
         chain.light = PrimarySamples(taskRng(lightSeed, 0, uint32_t(j)));
         chain.camera.startProposal(true);
         chain.light.startProposal(true);
-        Rng camera, light;
-        camera.replayFrom(&chain.camera);
-        light.replayFrom(&chain.light);
-        traceSubpaths(scene, k, camera, light, chain.paths);
+        Rng cameraReplay, lightReplay;  // the chain's first state, read as two random streams
+        cameraReplay.replayFrom(&chain.camera);
+        lightReplay.replayFrom(&chain.light);
+        traceSubpaths(scene, k, cameraReplay, lightReplay, chain.paths);
         chain.current = evaluateTarget(scene, chain.paths, k, chain.s, task.stats);
         chain.camera.accept();
         chain.light.accept();
