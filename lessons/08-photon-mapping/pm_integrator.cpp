@@ -20,7 +20,8 @@ namespace {
 // light tracer traces light paths), at least kMinPhotons.
 constexpr int kMinPhotons = 8192;
 int photonsPerMap(const Image& out) { return std::max(kMinPhotons, out.width * out.height); }
-constexpr uint64_t kGlobalSalt = 0x8A1F0C3D5B7E9246ull, kCausticSalt = 0x3C6EF372FE94F82Bull;
+constexpr uint64_t kGlobalSalt = 0x8A1F0C3D5B7E9246ull, kCausticSalt = 0x3C6EF372FE94F82Bull,
+                   kCacheSalt = 0xA54FF53A5F1D36F1ull;
 
 bool needsCausticMap(const Scene& scene) { return !scene.settings.prune || scene.caps.hasDeltaBSDF(); }
 
@@ -43,19 +44,51 @@ struct PhotonMapper : Integrator {
         return opt;
     }
 
-    void renderIteration(const Scene& scene, uint32_t iteration, uint64_t seed, Image& out,
-                         SampleStats& stats) override {
-        const PmOptions opt = options(scene);
+    static PhotonMaps traceMaps(const Scene& scene, uint32_t iteration, uint64_t seed, const Image& out,
+                                const PmOptions& opt, SampleStats& stats) {
         PhotonMaps maps;
         maps.global = tracePhotonMap(scene, MapKind::Global, photonsPerMap(out), opt.maxDepth, seed ^ kGlobalSalt,
                                      iteration, stats);
         if (needsCausticMap(scene))
             maps.caustic = tracePhotonMap(scene, MapKind::Caustic, photonsPerMap(out), opt.maxDepth,
                                           seed ^ kCausticSalt, iteration, stats);
+        return maps;
+    }
+
+    static void renderPixels(const Scene& scene, uint32_t iteration, uint64_t seed, Image& out, const PhotonMaps& maps,
+                             const PmOptions& opt, SampleStats& stats) {
         renderPixelTasks(seed, iteration, out, stats, false, [&](int pixel, Rng& rng, Task&) {
             const Ray ray = scene.camera.generateRay(jitteredRaster(pixel, out.width, rng));
             return LiPhotonMap(scene, ray, rng, maps, opt);
         });
+    }
+
+    void renderIteration(const Scene& scene, uint32_t iteration, uint64_t seed, Image& out,
+                         SampleStats& stats) override {
+        const PmOptions opt = options(scene);
+        const PhotonMaps maps = traceMaps(scene, iteration, seed, out, opt, stats);
+        renderPixels(scene, iteration, seed, out, maps, opt, stats);
+    }
+};
+
+// `pm-ic`: pm with Ward's irradiance cache as the final gather at Lambertian surfaces (Eq. 8.15-8.18).
+// Every iteration fills a new cache from its own global map before the pixels are rendered
+// (buildIrradianceCache: coarse to fine, in a fixed order); a point no record covers falls back to
+// pm's one-ray final gathering.
+struct PhotonMapperCached : PhotonMapper {
+    // Ward's error bound a, and the clamp of R_i, as fractions of the scene's bounding radius.
+    static constexpr float kErrorBound = 0.2f, kMinR = 0.03f, kMaxR = 0.5f;
+
+    void renderIteration(const Scene& scene, uint32_t iteration, uint64_t seed, Image& out,
+                         SampleStats& stats) override {
+        PmOptions opt = options(scene);
+        opt.minR = kMinR * scene.radius;
+        opt.maxR = kMaxR * scene.radius;
+        PhotonMaps maps = traceMaps(scene, iteration, seed, out, opt, stats);
+        const IrradianceCache cache = buildIrradianceCache(scene, maps.global, opt, kErrorBound, out.width, out.height,
+                                                           seed ^ kCacheSalt, iteration, stats);
+        opt.cache = &cache;
+        renderPixels(scene, iteration, seed, out, maps, opt, stats);
     }
 };
 
@@ -63,5 +96,7 @@ struct PhotonMapper : Integrator {
 
 PS_REGISTER_INTEGRATOR(PhotonMapper, "pm",
                        "photon mapping: direct light, caustic map, final gathering into the global map (lesson 8)");
+PS_REGISTER_INTEGRATOR(PhotonMapperCached, "pm-ic",
+                       "pm with Ward's irradiance cache as the final gather at diffuse surfaces (lesson 8)");
 
 }  // namespace ps
