@@ -92,6 +92,7 @@ TEST_CASE(
     std::vector<double> sum(size_t(w * h) * 3, 0.0);
     std::vector<int> checkpoints;
     std::vector<double> errors;
+    ps::stats::Welford lamp;  // each pass's mean over the pixels that see the lamp
     ps::SampleStats stats;
     for (int pass = 1; pass <= kPasses; ++pass) {
         const float r2 = float(ps::ppmRadius2(r1 * r1, pass));
@@ -102,8 +103,12 @@ TEST_CASE(
             const ps::Ray ray = scene.camera.generateRay(ps::jitteredRaster(pixel, w, rng));
             return ps::LiProgressive(scene, ray, rng, map, r2, maxDepth);
         });
-        for (size_t i = 0; i < img.pixels.size(); ++i)
+        double lampSum = 0.0;
+        for (size_t i = 0; i < img.pixels.size(); ++i) {
             for (int c = 0; c < 3; ++c) sum[i * 3 + size_t(c)] += img.pixels[i][c];
+            if (skip[i]) lampSum += ps::testrender::sum(img.pixels[i]);
+        }
+        lamp.add(lampSum);
         if ((pass & (pass - 1)) == 0) {
             checkpoints.push_back(pass);
             errors.push_back(relMSE(sum, pass, ref, skip));
@@ -111,6 +116,17 @@ TEST_CASE(
     }
     CHECK_MESSAGE(stats.bad() == 0, "ppm on the Cornell box: expected 0 NaN and 0 Inf samples, got "
                                         << stats.nan << " NaN and " << stats.inf << " Inf");
+    // The lamp seen directly: its pixels' sum within 5 % of the reference's, plus the noise.
+    double lampRef = 0.0;
+    for (size_t i = 0; i < ref.pixels.size(); ++i)
+        if (skip[i]) lampRef += ps::testrender::sum(ref.pixels[i]);
+    const double lampNoise = zCritical() * std::sqrt(lamp.variance() / kPasses);
+    MESSAGE("ppm, the pixels that see the lamp: " << num(lamp.mean) << " against the reference's " << num(lampRef)
+                                                  << " (noise " << num(lampNoise) << ")");
+    CHECK_MESSAGE(std::abs(lamp.mean - lampRef) <= 0.05 * lampRef + lampNoise,
+                  "ppm on the Cornell box, the pixels that see the lamp: expected their sum " << num(lampRef)
+                      << " (the reference's) within 5 % + noise " << num(lampNoise) << ", got " << num(lamp.mean)
+                      << (lamp.mean < 0.5 * lampRef ? " (the emission seen directly is missing)" : ""));
     std::string table;
     for (size_t i = 0; i < errors.size(); ++i) table += " " + std::to_string(checkpoints[i]) + ": " + num(errors[i]);
     MESSAGE("ppm, relMSE after n passes:" << table);
