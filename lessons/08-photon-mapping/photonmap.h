@@ -195,6 +195,9 @@ struct IrradianceCache {
 
 // A record is not used at x if x lies behind it by more than this fraction of R_i (Eq. 8.17).
 constexpr float kCacheBehindTolerance = 0.01f;
+// pm-ic's settings: Ward's error bound a, and the clamp of R_i as fractions of the scene's
+// bounding radius (pm_integrator.cpp).
+constexpr float kCacheErrorBound = 0.2f, kCacheMinR = 0.03f, kCacheMaxR = 0.5f;
 
 // Ward's weight of a record at point x with unit normal n (Eq. 8.16):
 // w_i = 1 / (|x - x_i| / R_i + sqrt(1 - n . n_i)), +infinity at the record's own point and normal.
@@ -216,8 +219,9 @@ IrradianceRecord irradianceRecord(const Scene& scene, const SurfacePoint& sp, co
 
 // Fills a cache for one image (irradiance_cache_fill.cpp; plumbing): the first non-specular
 // Lambertian surface point seen through each pixel's centre (through specular surfaces on
-// lesson 3's walk) is a candidate, coarse to fine (every 8th pixel in both directions, then every
-// 4th, 2nd, each pixel); a candidate that no record of the earlier levels covers
+// lesson 3's walk) is a candidate, coarse to fine (every s-th pixel in both directions, s about a
+// quarter of the image's side, then every s/2-th, ..., every pixel); a candidate that no record of
+// the earlier levels covers
 // (interpolateIrradiance) gets a new record (irradianceRecord). Candidates of one level run in
 // parallel tasks and their records are appended in pixel order, so the cache does not depend on
 // the number of threads.

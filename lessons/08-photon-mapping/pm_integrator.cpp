@@ -76,17 +76,14 @@ struct PhotonMapper : Integrator {
 // (buildIrradianceCache: coarse to fine, in a fixed order); a point no record covers falls back to
 // pm's one-ray final gathering.
 struct PhotonMapperCached : PhotonMapper {
-    // Ward's error bound a, and the clamp of R_i, as fractions of the scene's bounding radius.
-    static constexpr float kErrorBound = 0.2f, kMinR = 0.03f, kMaxR = 0.5f;
-
     void renderIteration(const Scene& scene, uint32_t iteration, uint64_t seed, Image& out,
                          SampleStats& stats) override {
         PmOptions opt = options(scene);
-        opt.minR = kMinR * scene.radius;
-        opt.maxR = kMaxR * scene.radius;
+        opt.minR = kCacheMinR * scene.radius;
+        opt.maxR = kCacheMaxR * scene.radius;
         PhotonMaps maps = traceMaps(scene, iteration, seed, out, opt, stats);
-        const IrradianceCache cache = buildIrradianceCache(scene, maps.global, opt, kErrorBound, out.width, out.height,
-                                                           seed ^ kCacheSalt, iteration, stats);
+        const IrradianceCache cache = buildIrradianceCache(scene, maps.global, opt, kCacheErrorBound, out.width,
+                                                           out.height, seed ^ kCacheSalt, iteration, stats);
         opt.cache = &cache;
         renderPixels(scene, iteration, seed, out, maps, opt, stats);
     }

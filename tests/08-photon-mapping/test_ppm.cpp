@@ -124,8 +124,9 @@ TEST_CASE(
     MESSAGE("ppm, the pixels that see the lamp: " << num(lamp.mean) << " against the reference's " << num(lampRef)
                                                   << " (noise " << num(lampNoise) << ")");
     CHECK_MESSAGE(std::abs(lamp.mean - lampRef) <= 0.05 * lampRef + lampNoise,
-                  "ppm on the Cornell box, the pixels that see the lamp: expected their sum " << num(lampRef)
-                      << " (the reference's) within 5 % + noise " << num(lampNoise) << ", got " << num(lamp.mean)
+                  "ppm on the Cornell box, the pixels that see the lamp: expected their sum "
+                      << num(lampRef) << " (the reference's) within 5 % + noise " << num(lampNoise) << ", got "
+                      << num(lamp.mean)
                       << (lamp.mean < 0.5 * lampRef ? " (the emission seen directly is missing)" : ""));
     std::string table;
     for (size_t i = 0; i < errors.size(); ++i) table += " " + std::to_string(checkpoints[i]) + ": " + num(errors[i]);
