@@ -127,6 +127,23 @@ if wanted 07; then
   done_fig "$d/caustics-equal-spp.png, caustics-regions.md, caustics-efficiency.md"
 fi
 
+# Lesson 8: what a photon mapper holds (the maps as dots, the filters, the caustic map alone, final
+# gathering off and on, the irradiance cache's records: tools/photon_figures.cpp), and pt, bpt, pm
+# and ppm on the glass caustic at equal time, per region (lessons/08 README, section 5).
+if wanted 08; then
+  d="$(dest 08-photon-mapping)"
+  cmake --build "$build" --target photon_figures >/dev/null
+  if [ "$quick" = 1 ]; then "$build/photon_figures" "$d" --quick; else "$build/photon_figures" "$d"; fi > "$work/08-figures.log"
+  done_fig "$d/pm-photons.png, pm-filters.png, pm-caustic-map.png, pm-final-gather.png, pm-ic-records.png"
+  s="$(scene glass-caustic 128)"
+  r="$(reference bpt "$(t 900 2)" "$s")"
+  converge "$s" "$r" "$work/08" --algos pt,bpt,pm,ppm --time "$(t 30 0.3)" --seeds 2 --regions white,mirror,glass
+  cp "$work/08/equal-time.png" "$d/caustic-equal-time.png"; cp "$work/08/convergence.svg" "$d/caustic-converge.svg"
+  cp "$work/08/convergence.csv" "$d/caustic-convergence.csv"; cp "$work/08/efficiency.md" "$d/caustic-efficiency.md"
+  cp "$work/08/regions.md" "$d/caustic-regions.md"
+  done_fig "$d/caustic-equal-time.png, caustic-converge.svg, caustic-convergence.csv, caustic-efficiency.md, caustic-regions.md"
+fi
+
 # Lesson 9: Veach's door, pt and pssmlt at equal time (lessons/09 README, "What it buys").
 if wanted 09; then
   d="$(dest 09-metropolis)"; s="$(scene door 128)"

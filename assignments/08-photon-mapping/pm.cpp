@@ -35,7 +35,7 @@ Color LiPhotonMap(const Scene& scene, const Ray& ray, Rng& rng, const PhotonMaps
     //                - irradiance cache (Eq. 8.17): if opt.cache and m is Lambertian
     //                  (BSDFKind::Diffuse) and interpolateIrradiance(*opt.cache, x, n, E) finds
     //                  records (n: the normal on wo's side), add albedo / pi * E (times v.beta);
-    //                - otherwise final gathering: sampleBSDF(m, n, wo, rng.uniform2(),
+    //                - otherwise final gathering: sampleBSDF(m, v.sp.n, wo, rng.uniform2(),
     //                  rng.uniform(), Transport::Radiance, s) and add gatherRadiance(scene, x,
     //                  s.wi, v.beta * s.weight, v.bounces, rng, maps.global, opt);
     //            and end the walk.

@@ -1,11 +1,12 @@
-// Lesson 8 — the photon mapper the render command knows as `pm` (plumbing: read it, nothing to
-// write here). Every iteration traces a new global map (photonsPerMap: as many photon paths as
-// pixels, at least kMinPhotons) and, when the scene has a specular surface, a new caustic map (as
-// many), with seeds of their own derived from the render's seed and the iteration
+// Lesson 8 — the photon mappers the render command knows as `pm` and `pm-ic` (plumbing: read it,
+// nothing to write here). Every iteration traces a new global map (photonsPerMap: as many photon
+// paths as pixels, at least kMinPhotons) and, when the scene has a specular surface, a new caustic
+// map (as many), with seeds of their own derived from the render's seed and the iteration
 // (tracePhotonMap: the framework's task loop, so the maps do not depend on the number of
 // threads), then one camera ray through a jittered point of every pixel, estimated by
-// LiPhotonMap (Eq. 8.11). The iterations are independent estimates
-// with the same bias: averaging them removes the noise, not the bias (README, "Bias").
+// LiPhotonMap (Eq. 8.11). The iterations are independent estimates with the same bias: averaging
+// them removes the noise, not the bias (README, "Bias"). `pm-ic` also fills an irradiance cache
+// from the iteration's global map before the pixels (Eq. 8.15-8.18).
 //
 // Left out where the scene shows it cannot contribute (exact): without a specular surface there
 // is no L S+ D path, so no caustic map is traced.

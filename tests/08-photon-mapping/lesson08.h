@@ -35,9 +35,12 @@ using ps::fmt::str;
 //   radiance estimates of a linear irradiance, box, cone and Gaussian (t-tests)         -> 3
 //   the box filter's bias on a quadratic irradiance (t-test)                           -> 1
 //   pm against the path-traced Cornell box (a bias bound plus the noise at this level)  -> 1
-// m = 8; each runs at the Sidak level alpha' = 1 - (1 - a_L)^(1/8) ~ 1.3e-04, where a_L is the lesson's
-// share of the whole course's 1 % (tests/support/alpha.h).
-constexpr int kStatisticalTests = 8;
+//   pm-ic against the path-traced Cornell box (the same)                                -> 1
+//   a new cache record's E and R at five points (Welch t-tests, Bonferroni inside)      -> 1
+//   ppm on the Cornell box: the lamp's pixels (a bound plus the noise at this level)    -> 1
+// m = 11; each runs at the Sidak level alpha' = 1 - (1 - a_L)^(1/11) ~ 9.1e-05, where a_L is the
+// lesson's share of the whole course's 1 % (tests/support/alpha.h).
+constexpr int kStatisticalTests = 11;
 inline double alpha() { return ps::testalpha::perTest(kStatisticalTests); }
 // The two-sided normal quantile of level a: |z| above it fails.
 inline double zCriticalAt(double a) {
