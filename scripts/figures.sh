@@ -10,7 +10,7 @@
 #                works and every figure is written; the images are noisy. CI runs it.
 #   --build DIR  the build to use (default: build; configured and built if missing)
 #
-# Full budgets take about 40 minutes on 2 cores (most of it rendering references).
+# Full budgets take about an hour on 2 cores (most of it rendering references).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 src="$PWD"
