@@ -150,7 +150,7 @@ struct PmOptions {
     // replaced by the cache's interpolated irradiance where a record covers the point. nullptr:
     // plain final gathering everywhere (`pm`).
     const IrradianceCache* cache = nullptr;
-    int gatherSide = 8;                // a new record gathers gatherSide^2 stratified rays (Eq. 8.18)
+    int gatherSide = 6;                // a new record gathers gatherSide^2 stratified rays (Eq. 8.18)
     float minR = 1.0f, maxR = 100.0f;  // a record's R is clamped to [minR, maxR] (Eq. 8.18)
 };
 
@@ -197,7 +197,7 @@ struct IrradianceCache {
 constexpr float kCacheBehindTolerance = 0.01f;
 // pm-ic's settings: Ward's error bound a, and the clamp of R_i as fractions of the scene's
 // bounding radius (pm_integrator.cpp).
-constexpr float kCacheErrorBound = 0.2f, kCacheMinR = 0.03f, kCacheMaxR = 0.5f;
+constexpr float kCacheErrorBound = 0.3f, kCacheMinR = 0.03f, kCacheMaxR = 0.5f;
 
 // Ward's weight of a record at point x with unit normal n (Eq. 8.16):
 // w_i = 1 / (|x - x_i| / R_i + sqrt(1 - n . n_i)), +infinity at the record's own point and normal.
