@@ -10,7 +10,7 @@
 #                works and every figure is written; the images are noisy. CI runs it.
 #   --build DIR  the build to use (default: build; configured and built if missing)
 #
-# Full budgets take about 50 minutes on 2 cores (most of it rendering references).
+# Full budgets take a little over an hour on 2 cores (most of it rendering references).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 src="$PWD"
@@ -125,6 +125,23 @@ if wanted 07; then
   cp "$work/07-caustics/equal-time.png" "$d/caustics-equal-spp.png"; cp "$work/07-caustics/regions.md" "$d/caustics-regions.md"
   cp "$work/07-caustics/efficiency.md" "$d/caustics-efficiency.md"
   done_fig "$d/caustics-equal-spp.png, caustics-regions.md, caustics-efficiency.md"
+fi
+
+# Lesson 8: what a photon mapper holds (the maps as dots, the filters, the caustic map alone, final
+# gathering off and on, the irradiance cache's records: tools/photon_figures.cpp), and pt, bpt, pm
+# and ppm on the glass caustic at equal time, per region (lessons/08 README, section 5).
+if wanted 08; then
+  d="$(dest 08-photon-mapping)"
+  cmake --build "$build" --target photon_figures >/dev/null
+  if [ "$quick" = 1 ]; then "$build/photon_figures" "$d" --quick; else "$build/photon_figures" "$d"; fi > "$work/08-figures.log"
+  done_fig "$d/pm-photons.png, pm-filters.png, pm-caustic-map.png, pm-final-gather.png, pm-ic-records.png"
+  s="$(scene glass-caustic 128)"
+  r="$(reference bpt "$(t 900 2)" "$s")"
+  converge "$s" "$r" "$work/08" --algos pt,bpt,pm,ppm --time "$(t 30 0.3)" --seeds 2 --regions white,mirror,glass
+  cp "$work/08/equal-time.png" "$d/caustic-equal-time.png"; cp "$work/08/convergence.svg" "$d/caustic-converge.svg"
+  cp "$work/08/convergence.csv" "$d/caustic-convergence.csv"; cp "$work/08/efficiency.md" "$d/caustic-efficiency.md"
+  cp "$work/08/regions.md" "$d/caustic-regions.md"
+  done_fig "$d/caustic-equal-time.png, caustic-converge.svg, caustic-convergence.csv, caustic-efficiency.md, caustic-regions.md"
 fi
 
 # Lesson 9: pt, bpt, pssmlt and mmlt at equal time, pathspace converge on Veach's door (where MLT

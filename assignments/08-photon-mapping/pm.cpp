@@ -1,10 +1,26 @@
 // Lesson 8 — the photon-mapping estimate of the radiance along a camera ray: direct light,
-// specular surfaces, caustics and final gathering. Interface: lessons/08-photon-mapping/photonmap.h.
-// Equation numbers refer to lessons/08-photon-mapping/README.md.
+// specular surfaces, caustics and final gathering (or the irradiance cache). Interface:
+// lessons/08-photon-mapping/photonmap.h. Equation numbers refer to lessons/08-photon-mapping/README.md.
+#include <limits>
 #include "08-photon-mapping/photonmap.h"
 #include "todo.h"
 
 namespace ps {
+
+Color gatherRadiance(const Scene& scene, const SurfacePoint& sp, const Vec3& wi, Color weight, int bounces, Rng& rng,
+                     const PhotonMap& global, const PmOptions& opt, float* hitDistance) {
+    // TODO(08) Eq. 8.11, the last term: the gather ray scene.spawnRay(sp, wi). For bounces + 1,
+    //          bounces + 2, ... up to opt.maxDepth, while weight is not black: intersect (a miss:
+    //          black); the first hit's distance goes to *hitDistance (if given; infinity when
+    //          nothing is hit). At a non-specular surface y: return weight * radianceEstimate(
+    //          global, y, its material, -ray direction, opt.globalEstimate). At a specular one:
+    //          sampleBSDF(material, y.n, -ray direction, rng.uniform2(), rng.uniform(),
+    //          Transport::Radiance, s) (in this order; a failed sample: black), weight *= s.weight,
+    //          and go on from y in direction s.wi. Emission met on the way is left out.
+    (void)scene; (void)sp; (void)wi; (void)weight; (void)bounces; (void)rng; (void)global; (void)opt;
+    if (hitDistance) *hitDistance = std::numeric_limits<float>::infinity();
+    return PS_TODO("lesson 08: gatherRadiance", Color(0.0f));
+}
 
 Color LiPhotonMap(const Scene& scene, const Ray& ray, Rng& rng, const PhotonMaps& maps, const PmOptions& opt) {
     // TODO(08) Eq. 8.11 on lesson 3's cameraWalk(scene, ray, rng, opt.maxDepth, visitor):
@@ -15,12 +31,13 @@ Color LiPhotonMap(const Scene& scene, const Ray& ray, Rng& rng, const PhotonMaps
     //            (a) direct light: sampleDirectLight(scene, sp, wo, rng.uniform(), rng.uniform2())
     //                .value, if v.bounces < opt.maxDepth;
     //            (b) caustics: radianceEstimate(maps.caustic, sp, m, wo, opt.causticEstimate);
-    //            (c) final gathering, if v.bounces < opt.maxDepth: sampleBSDF(m, n, wo,
-    //                rng.uniform2(), rng.uniform(), Transport::Radiance, s); follow s.wi through
-    //                specular surfaces (sampling each with sampleBSDF in the same way, multiplying
-    //                the weights; at most maxDepth bounces in all) to the first non-specular
-    //                surface y, and add weight * radianceEstimate(maps.global, y, its material,
-    //                -ray direction, opt.globalEstimate). Emission met on the way is left out.
+    //            (c) the indirect light, if v.bounces < opt.maxDepth:
+    //                - irradiance cache (Eq. 8.17): if opt.cache and m is Lambertian
+    //                  (BSDFKind::Diffuse) and interpolateIrradiance(*opt.cache, x, n, E) finds
+    //                  records (n: the normal on wo's side), add albedo / pi * E (times v.beta);
+    //                - otherwise final gathering: sampleBSDF(m, v.sp.n, wo, rng.uniform2(),
+    //                  rng.uniform(), Transport::Radiance, s) and add gatherRadiance(scene, x,
+    //                  s.wi, v.beta * s.weight, v.bounces, rng, maps.global, opt);
     //            and end the walk.
     (void)scene; (void)ray; (void)rng; (void)maps; (void)opt;
     return PS_TODO("lesson 08: LiPhotonMap", Color(0.0f));

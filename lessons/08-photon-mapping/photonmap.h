@@ -6,9 +6,11 @@
 // the radiance leaving a surface point is a density estimate over those photons with the box,
 // cone or Gaussian filter (Eq. 8.6-8.10); the `pm` integrator adds direct light (next-event
 // estimation), caustics from the caustic map and indirect light by final gathering into the
-// global map (Eq. 8.11). Implemented in solutions/08-photon-mapping/*.cpp (reference) or
-// assignments/08-photon-mapping/*.cpp (yours); lessons/08-photon-mapping/README.md derives every
-// formula (Eq. 8.1-8.12).
+// global map (Eq. 8.11), and Ward's irradiance cache as its fast final gather (Eq. 8.15-8.18);
+// the `ppm` integrator shrinks a fixed search radius from pass to pass (Knaus and Zwicker's
+// progressive photon mapping, Eq. 8.13-8.14), so its image converges. Implemented in
+// solutions/08-photon-mapping/*.cpp (reference) or assignments/08-photon-mapping/*.cpp (yours);
+// lessons/08-photon-mapping/README.md derives every formula (Eq. 8.1-8.18).
 #pragma once
 #include <cstdint>
 #include <vector>
@@ -138,11 +140,30 @@ struct PhotonMaps {
     PhotonMap caustic, global;
 };
 
+struct IrradianceCache;
+
 struct PmOptions {
     EstimateOptions causticEstimate;  // the caustic map's (sharp: few photons, small radius)
     EstimateOptions globalEstimate;   // the global map's, looked up at the final gather's hits
     int maxDepth = 8;
+    // Irradiance caching (`pm-ic`, Eq. 8.15-8.18): at a Lambertian surface, final gathering is
+    // replaced by the cache's interpolated irradiance where a record covers the point. nullptr:
+    // plain final gathering everywhere (`pm`).
+    const IrradianceCache* cache = nullptr;
+    int gatherSide = 6;                // a new record gathers gatherSide^2 stratified rays (Eq. 8.18)
+    float minR = 1.0f, maxR = 100.0f;  // a record's R is clamped to [minR, maxR] (Eq. 8.18)
 };
+
+// Final gathering's ray (the last term of Eq. 8.11): leaves sp in direction wi with throughput
+// `weight`; at a specular surface it samples the BSDF (sampleBSDF, Transport::Radiance; the
+// sample's weight multiplied into `weight`) and goes on; at the first non-specular surface y it
+// returns weight * radianceEstimate(global, y, y's material, -ray direction, opt.globalEstimate).
+// Black if the ray leaves the scene, a sample fails, the weight becomes black, or it would hit
+// more than opt.maxDepth - bounces surfaces (bounces: those the path made before sp). Emission met
+// on the way is left out. hitDistance (if not null): the distance from sp to the first surface
+// the ray hits, whatever it is (infinity if none).
+Color gatherRadiance(const Scene& scene, const SurfacePoint& sp, const Vec3& wi, Color weight, int bounces, Rng& rng,
+                     const PhotonMap& global, const PmOptions& opt, float* hitDistance = nullptr);
 
 // Radiance along a camera ray (Eq. 8.11): lesson 3's cameraWalk; emission where the walk sees it
 // directly or through specular bounces alone; specular surfaces are followed (the walk goes on);
@@ -150,8 +171,81 @@ struct PmOptions {
 // sampleDirectLight), caustics from the caustic map (radianceEstimate), and the indirect light by
 // final gathering: one BSDF sample from x, followed through specular surfaces to a non-specular
 // surface y, where the global map's radianceEstimate towards x is the radiance that arrives
-// (emission met on the way is left out: next-event estimation and the caustic map have it). The
-// walk ends at x.
+// (gatherRadiance; emission met on the way is left out: next-event estimation and the caustic map
+// have it). With opt.cache at a Lambertian x whose point some record covers (interpolateIrradiance
+// with the normal on wo's side), the final gather is albedo / pi * the interpolated irradiance
+// instead. The walk ends at x.
 Color LiPhotonMap(const Scene& scene, const Ray& ray, Rng& rng, const PhotonMaps& maps, const PmOptions& opt);
+
+// ---- irradiance caching (irradiance_cache.cpp, Eq. 8.15-8.18) ----
+
+// One of Ward's records: the irradiance final gathering finds at x_i, and how far it may be
+// reused.
+struct IrradianceRecord {
+    Vec3 p;          // x_i
+    Vec3 n;          // n_i: unit, on the side of the surface the record was made from
+    Color E;         // E_i: the irradiance arriving at x_i through final gathering (Eq. 8.18)
+    float R = 0.0f;  // R_i: the harmonic mean distance to the surfaces the gather rays hit (Eq. 8.18)
+};
+
+struct IrradianceCache {
+    std::vector<IrradianceRecord> records;
+    float a = 0.2f;  // Ward's error bound: a record is used where its weight is > 1 / a (Eq. 8.17)
+};
+
+// A record is not used at x if x lies behind it by more than this fraction of R_i (Eq. 8.17).
+constexpr float kCacheBehindTolerance = 0.01f;
+// pm-ic's settings: Ward's error bound a, and the clamp of R_i as fractions of the scene's
+// bounding radius (pm_integrator.cpp).
+constexpr float kCacheErrorBound = 0.3f, kCacheMinR = 0.03f, kCacheMaxR = 0.5f;
+
+// Ward's weight of a record at point x with unit normal n (Eq. 8.16):
+// w_i = 1 / (|x - x_i| / R_i + sqrt(1 - n . n_i)), +infinity at the record's own point and normal.
+float irradianceWeight(const IrradianceRecord& rec, const Vec3& x, const Vec3& n);
+
+// The irradiance at (x, n) from the cache (Eq. 8.17): the w_i-weighted mean of E_i over the
+// records with w_i > 1 / cache.a that x is not behind ((x - x_i) . (n + n_i) / 2 >=
+// -kCacheBehindTolerance R_i); a record of infinite weight gives its own E_i. Returns false (E
+// untouched) when no record qualifies.
+bool interpolateIrradiance(const IrradianceCache& cache, const Vec3& x, const Vec3& n, Color& E);
+
+// A new record at sp, made from the side wo points to, at a path vertex after `bounces` bounces
+// (Eq. 8.18): gatherSide^2 cosine-weighted directions, one in each cell of a gatherSide x
+// gatherSide grid over the unit square (sampleCosineHemisphere around the normal on wo's side),
+// each followed by gatherRadiance with weight 1; E = pi / M * sum of the radiances, R = M / sum of
+// 1 / hitDistance (a ray that hits nothing adds 0), clamped to [opt.minR, opt.maxR].
+IrradianceRecord irradianceRecord(const Scene& scene, const SurfacePoint& sp, const Vec3& wo, int bounces, Rng& rng,
+                                  const PhotonMap& global, const PmOptions& opt);
+
+// Fills a cache for one image (irradiance_cache_fill.cpp; plumbing): the first non-specular
+// Lambertian surface point seen through each pixel's centre (through specular surfaces on
+// lesson 3's walk) is a candidate, coarse to fine (every s-th pixel in both directions, s about a
+// quarter of the image's side, then every s/2-th, ..., every pixel); a candidate that no record of
+// the earlier levels covers
+// (interpolateIrradiance) gets a new record (irradianceRecord). Candidates of one level run in
+// parallel tasks and their records are appended in pixel order, so the cache does not depend on
+// the number of threads.
+IrradianceCache buildIrradianceCache(const Scene& scene, const PhotonMap& global, const PmOptions& opt, float a,
+                                     int width, int height, uint64_t seed, uint32_t iteration, SampleStats& stats);
+
+// ---- progressive photon mapping (progressive.cpp, Eq. 8.13-8.14) ----
+
+// Knaus and Zwicker's alpha: the fraction of the new photons a pass keeps (Eq. 8.13).
+constexpr double kPpmAlpha = 2.0 / 3.0;
+
+// The radius update of Eq. 8.13: the squared radius of pass i + 1 from that of pass i (i >= 1),
+// r_{i+1}^2 = r_i^2 (i + alpha) / (i + 1).
+double ppmNextRadius2(double r2, int pass, double alpha = kPpmAlpha);
+
+// The squared radius of pass i >= 1 from r_1^2: ppmNextRadius2 applied i - 1 times, in double
+// (ppm_integrator.cpp, plumbing).
+double ppmRadius2(double r1sq, int pass, double alpha = kPpmAlpha);
+
+// One pass's estimate of the radiance along a camera ray (Eq. 8.14): lesson 3's cameraWalk;
+// emission where the walk sees it directly or through specular bounces alone; specular surfaces
+// followed; at the first non-specular surface x, if v.bounces < maxDepth, the fixed-radius
+// density estimate of the map there (radianceEstimate with the box filter, k = 0, radius
+// sqrt(r2)) stands for all the light x reflects, direct light included; the walk ends at x.
+Color LiProgressive(const Scene& scene, const Ray& ray, Rng& rng, const PhotonMap& map, float r2, int maxDepth);
 
 }  // namespace ps

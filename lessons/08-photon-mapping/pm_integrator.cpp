@@ -1,11 +1,12 @@
-// Lesson 8 — the photon mapper the render command knows as `pm` (plumbing: read it, nothing to
-// write here). Every iteration traces a new global map (photonsPerMap: as many photon paths as
-// pixels, at least kMinPhotons) and, when the scene has a specular surface, a new caustic map (as
-// many), with seeds of their own derived from the render's seed and the iteration
+// Lesson 8 — the photon mappers the render command knows as `pm` and `pm-ic` (plumbing: read it,
+// nothing to write here). Every iteration traces a new global map (photonsPerMap: as many photon
+// paths as pixels, at least kMinPhotons) and, when the scene has a specular surface, a new caustic
+// map (as many), with seeds of their own derived from the render's seed and the iteration
 // (tracePhotonMap: the framework's task loop, so the maps do not depend on the number of
 // threads), then one camera ray through a jittered point of every pixel, estimated by
-// LiPhotonMap (Eq. 8.11). The iterations are independent estimates
-// with the same bias: averaging them removes the noise, not the bias (README, "Bias").
+// LiPhotonMap (Eq. 8.11). The iterations are independent estimates with the same bias: averaging
+// them removes the noise, not the bias (README, "Bias"). `pm-ic` also fills an irradiance cache
+// from the iteration's global map before the pixels (Eq. 8.15-8.18).
 //
 // Left out where the scene shows it cannot contribute (exact): without a specular surface there
 // is no L S+ D path, so no caustic map is traced.
@@ -20,7 +21,8 @@ namespace {
 // light tracer traces light paths), at least kMinPhotons.
 constexpr int kMinPhotons = 8192;
 int photonsPerMap(const Image& out) { return std::max(kMinPhotons, out.width * out.height); }
-constexpr uint64_t kGlobalSalt = 0x8A1F0C3D5B7E9246ull, kCausticSalt = 0x3C6EF372FE94F82Bull;
+constexpr uint64_t kGlobalSalt = 0x8A1F0C3D5B7E9246ull, kCausticSalt = 0x3C6EF372FE94F82Bull,
+                   kCacheSalt = 0xA54FF53A5F1D36F1ull;
 
 bool needsCausticMap(const Scene& scene) { return !scene.settings.prune || scene.caps.hasDeltaBSDF(); }
 
@@ -43,19 +45,48 @@ struct PhotonMapper : Integrator {
         return opt;
     }
 
-    void renderIteration(const Scene& scene, uint32_t iteration, uint64_t seed, Image& out,
-                         SampleStats& stats) override {
-        const PmOptions opt = options(scene);
+    static PhotonMaps traceMaps(const Scene& scene, uint32_t iteration, uint64_t seed, const Image& out,
+                                const PmOptions& opt, SampleStats& stats) {
         PhotonMaps maps;
         maps.global = tracePhotonMap(scene, MapKind::Global, photonsPerMap(out), opt.maxDepth, seed ^ kGlobalSalt,
                                      iteration, stats);
         if (needsCausticMap(scene))
             maps.caustic = tracePhotonMap(scene, MapKind::Caustic, photonsPerMap(out), opt.maxDepth,
                                           seed ^ kCausticSalt, iteration, stats);
+        return maps;
+    }
+
+    static void renderPixels(const Scene& scene, uint32_t iteration, uint64_t seed, Image& out, const PhotonMaps& maps,
+                             const PmOptions& opt, SampleStats& stats) {
         renderPixelTasks(seed, iteration, out, stats, false, [&](int pixel, Rng& rng, Task&) {
             const Ray ray = scene.camera.generateRay(jitteredRaster(pixel, out.width, rng));
             return LiPhotonMap(scene, ray, rng, maps, opt);
         });
+    }
+
+    void renderIteration(const Scene& scene, uint32_t iteration, uint64_t seed, Image& out,
+                         SampleStats& stats) override {
+        const PmOptions opt = options(scene);
+        const PhotonMaps maps = traceMaps(scene, iteration, seed, out, opt, stats);
+        renderPixels(scene, iteration, seed, out, maps, opt, stats);
+    }
+};
+
+// `pm-ic`: pm with Ward's irradiance cache as the final gather at Lambertian surfaces (Eq. 8.15-8.18).
+// Every iteration fills a new cache from its own global map before the pixels are rendered
+// (buildIrradianceCache: coarse to fine, in a fixed order); a point no record covers falls back to
+// pm's one-ray final gathering.
+struct PhotonMapperCached : PhotonMapper {
+    void renderIteration(const Scene& scene, uint32_t iteration, uint64_t seed, Image& out,
+                         SampleStats& stats) override {
+        PmOptions opt = options(scene);
+        opt.minR = kCacheMinR * scene.radius;
+        opt.maxR = kCacheMaxR * scene.radius;
+        PhotonMaps maps = traceMaps(scene, iteration, seed, out, opt, stats);
+        const IrradianceCache cache = buildIrradianceCache(scene, maps.global, opt, kCacheErrorBound, out.width,
+                                                           out.height, seed ^ kCacheSalt, iteration, stats);
+        opt.cache = &cache;
+        renderPixels(scene, iteration, seed, out, maps, opt, stats);
     }
 };
 
@@ -63,5 +94,7 @@ struct PhotonMapper : Integrator {
 
 PS_REGISTER_INTEGRATOR(PhotonMapper, "pm",
                        "photon mapping: direct light, caustic map, final gathering into the global map (lesson 8)");
+PS_REGISTER_INTEGRATOR(PhotonMapperCached, "pm-ic",
+                       "pm with Ward's irradiance cache as the final gather at diffuse surfaces (lesson 8)");
 
 }  // namespace ps

@@ -35,19 +35,24 @@ using ps::fmt::str;
 //   radiance estimates of a linear irradiance, box, cone and Gaussian (t-tests)         -> 3
 //   the box filter's bias on a quadratic irradiance (t-test)                           -> 1
 //   pm against the path-traced Cornell box (a bias bound plus the noise at this level)  -> 1
-// m = 8; each runs at the Sidak level alpha' = 1 - (1 - a_L)^(1/8) ~ 1.1e-04, where a_L is the lesson's
-// share of the whole course's 1 % (tests/support/alpha.h).
-constexpr int kStatisticalTests = 8;
+//   pm-ic against the path-traced Cornell box (the same)                                -> 1
+//   a new cache record's E and R at five points (Welch t-tests, Bonferroni inside)      -> 1
+//   ppm on the Cornell box: the lamp's pixels (a bound plus the noise at this level)    -> 1
+// m = 11; each runs at the Sidak level alpha' = 1 - (1 - a_L)^(1/11) ~ 9.1e-05, where a_L is the
+// lesson's share of the whole course's 1 % (tests/support/alpha.h).
+constexpr int kStatisticalTests = 11;
 inline double alpha() { return ps::testalpha::perTest(kStatisticalTests); }
-// The two-sided normal quantile of alpha(): |z| above it fails.
-inline double zCritical() {
+// The two-sided normal quantile of level a: |z| above it fails.
+inline double zCriticalAt(double a) {
     double lo = 0.0, hi = 20.0;
     for (int i = 0; i < 200; ++i) {
         const double mid = 0.5 * (lo + hi);
-        (ps::stats::normalTwoSided(mid) > alpha() ? lo : hi) = mid;
+        (ps::stats::normalTwoSided(mid) > a ? lo : hi) = mid;
     }
     return hi;
 }
+// The two-sided normal quantile of alpha().
+inline double zCritical() { return zCriticalAt(alpha()); }
 
 // A point uniform in the unit cube (numbers drawn x, y, z in this order).
 inline Vec3 uniform3(ps::Rng& rng) {
@@ -114,5 +119,23 @@ constexpr double kFloorHalf = 2.0, kMirrorHalf = 0.5, kLightToFloor = 1.0, kLigh
 constexpr double kFloorAlbedo = 0.5, kMirrorAlbedo = 0.8;
 // The solid angle of a square of half-side a seen from distance d on its axis.
 inline double squareSolidAngle(double a, double d) { return 4.0 * std::asin(a * a / (a * a + d * d)); }
+
+// The pixels that see a light (any ray of a 6 x 6 grid over the pixel hits an emitter first):
+// on its edge a pixel is 100 times brighter in some samples than in others, noise that a few
+// iterations cannot average and that says nothing about photon mapping. Row-major.
+inline std::vector<bool> pixelsSeeingLights(const ps::Scene& scene) {
+    const int w = scene.camera.width(), h = scene.camera.height();
+    std::vector<bool> sees(size_t(w) * h, false);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            for (int j = 0; j <= 5; ++j)
+                for (int i = 0; i <= 5; ++i) {
+                    ps::Ray ray = scene.camera.generateRay(
+                        Vec2(x + std::min(i / 5.0f, 0.99999f), y + std::min(j / 5.0f, 0.99999f)));
+                    ps::SurfacePoint sp;
+                    if (scene.intersect(ray, sp) && sp.light >= 0) sees[size_t(y) * w + x] = true;
+                }
+    return sees;
+}
 
 }  // namespace lesson08

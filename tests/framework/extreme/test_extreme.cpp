@@ -369,8 +369,9 @@ TEST_CASE(
     };
     // Photon mapping (lesson 8) is consistent, not unbiased: its expectation differs from pt's by
     // the density estimate's blur (lesson 8, Eq. 8.12), so it is not t-tested here, only checked
-    // for a finite, non-black image (lesson 8's graded test bounds its bias on the Cornell box).
-    const auto biased = [](const std::string& algo) { return algo == "pm"; };
+    // for a finite, non-black image (lesson 8's graded tests bound the bias of pm, pm-ic and ppm
+    // on the Cornell box).
+    const auto biased = [](const std::string& algo) { return algo == "pm" || algo == "pm-ic" || algo == "ppm"; };
     struct Estimate {
         stats::Welford w;
         uint64_t bad = 0;

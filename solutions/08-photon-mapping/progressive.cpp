@@ -1,0 +1,49 @@
+// Lesson 8 — progressive photon mapping: the radius of each pass (Knaus and Zwicker's update) and
+// one pass's estimate along a camera ray. Interface: lessons/08-photon-mapping/photonmap.h.
+// Equation numbers refer to lessons/08-photon-mapping/README.md.
+#include "08-photon-mapping/photonmap.h"
+#include "todo.h"
+
+namespace ps {
+
+double ppmNextRadius2(double r2, int pass, double alpha) {
+    //! TODO(08) Eq. 8.13: r_{i+1}^2 = r_i^2 (i + alpha) / (i + 1), i = pass >= 1.
+    //! STUB (void)pass; (void)alpha;
+    //! STUB return PS_TODO("lesson 08: ppmNextRadius2", r2);
+    //! BEGIN
+    return r2 * (double(pass) + alpha) / (double(pass) + 1.0);
+    //! END
+}
+
+Color LiProgressive(const Scene& scene, const Ray& ray, Rng& rng, const PhotonMap& map, float r2, int maxDepth) {
+    //! TODO(08) Eq. 8.14 on lesson 3's cameraWalk(scene, ray, rng, maxDepth, visitor):
+    //!          - a miss: the background (scene.backgroundRadiance()) if v.specular; end.
+    //!          - an emitter (v.sp.light >= 0) seen with v.specular: add its emittedRadiance.
+    //!          - a specular material: go on.
+    //!          - else, if v.bounces < maxDepth, add v.beta * radianceEstimate(map, sp, m, wo, opt)
+    //!            with opt: Filter::Box, k = 0 (fixed radius), maxRadius = sqrt(r2); end the walk.
+    //! STUB (void)scene; (void)ray; (void)rng; (void)map; (void)r2; (void)maxDepth;
+    //! STUB return PS_TODO("lesson 08: LiProgressive", Color(0.0f));
+    //! BEGIN
+    EstimateOptions opt;
+    opt.filter = Filter::Box;
+    opt.k = 0;
+    opt.maxRadius = std::sqrt(r2);
+    Color L(0.0f);
+    cameraWalk(scene, ray, rng, maxDepth, [&](const WalkVertex& v) {
+        if (!v.hit) {
+            if (v.specular) L += v.beta * scene.backgroundRadiance();
+            return false;
+        }
+        if (v.specular && v.sp.light >= 0)
+            L += v.beta * emittedRadiance(scene.lights[size_t(v.sp.light)], v.sp.n, v.wo);
+        const Material& m = scene.materials[size_t(v.sp.material)];
+        if (m.isDelta()) return true;
+        if (v.bounces < maxDepth) L += v.beta * radianceEstimate(map, v.sp, m, v.wo, opt);
+        return false;
+    });
+    return L;
+    //! END
+}
+
+}  // namespace ps
