@@ -38,7 +38,7 @@ using ps::fmt::str;
 //   pm-ic against the path-traced Cornell box (the same)                                -> 1
 //   a new cache record's E and R at five points (Welch t-tests, Bonferroni inside)      -> 1
 //   ppm on the Cornell box: the lamp's pixels (a bound plus the noise at this level)    -> 1
-// m = 11; each runs at the Sidak level alpha' = 1 - (1 - a_L)^(1/11) ~ 9.1e-05, where a_L is the
+// m = 11; each runs at the Sidak level alpha' = 1 - (1 - a_L)^(1/11) ~ 8.3e-05, where a_L is the
 // lesson's share of the whole course's 1 % (tests/support/alpha.h).
 constexpr int kStatisticalTests = 11;
 inline double alpha() { return ps::testalpha::perTest(kStatisticalTests); }
