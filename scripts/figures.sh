@@ -146,12 +146,12 @@ fi
 
 # Lesson 9: pt, bpt, pssmlt and mmlt at equal time, pathspace converge on Veach's door (where MLT
 # should win: 128 x 128, 10 s each) and on the Cornell box (where it should not: 96 x 96, 5 s each),
-# 2 seeds (lessons/09 README, "What MLT buys").
+# 2 seeds (lessons/09 README, "What MLT buys"); --quick: 32 x 32.
 if wanted 09; then
   d="$(dest 09-metropolis)"
   for c in "door door 128 480 10" "cornell-box cornell 96 180 5"; do
     set -- $c
-    s="$(scene "$1" "$3")"; r="$(reference pt "$(t "$4" 2)" "$s")"
+    s="$(scene "$1" "$(t "$3" 32)")"; r="$(reference pt "$(t "$4" 2)" "$s")"
     converge "$s" "$r" "$work/09-$2" --algos pt,bpt,pssmlt,mmlt --time "$(t "$5" 0.2)" --seeds "$(t 2 1)"
     cp "$work/09-$2/equal-time.png" "$d/$2-equal-time.png"; cp "$work/09-$2/convergence.svg" "$d/$2-converge.svg"
     cp "$work/09-$2/efficiency.md" "$d/$2-efficiency.md"
