@@ -22,7 +22,8 @@
 #include "rng.h"
 #include "scene_loader.h"
 
-#if __has_include(<nanoflann.hpp>)
+// -DPATHSPACE_NO_NANOFLANN builds the program as it is without nanoflann (to check that branch).
+#if __has_include(<nanoflann.hpp>) && !defined(PATHSPACE_NO_NANOFLANN)
 #include <nanoflann.hpp>
 #define PATHSPACE_HAVE_NANOFLANN 1
 #else

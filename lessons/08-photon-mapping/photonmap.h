@@ -188,16 +188,17 @@ struct IrradianceRecord {
     float R = 0.0f;  // R_i: the harmonic mean distance to the surfaces the gather rays hit (Eq. 8.18)
 };
 
+// pm-ic's settings: Ward's error bound a, and the clamp of R_i as fractions of the scene's
+// bounding radius (pm_integrator.cpp).
+constexpr float kCacheErrorBound = 0.3f, kCacheMinR = 0.03f, kCacheMaxR = 0.5f;
+
 struct IrradianceCache {
     std::vector<IrradianceRecord> records;
-    float a = 0.2f;  // Ward's error bound: a record is used where its weight is > 1 / a (Eq. 8.17)
+    float a = kCacheErrorBound;  // Ward's error bound: a record is used where its weight is > 1 / a (Eq. 8.17)
 };
 
 // A record is not used at x if x lies behind it by more than this fraction of R_i (Eq. 8.17).
 constexpr float kCacheBehindTolerance = 0.01f;
-// pm-ic's settings: Ward's error bound a, and the clamp of R_i as fractions of the scene's
-// bounding radius (pm_integrator.cpp).
-constexpr float kCacheErrorBound = 0.3f, kCacheMinR = 0.03f, kCacheMaxR = 0.5f;
 
 // Ward's weight of a record at point x with unit normal n (Eq. 8.16):
 // w_i = 1 / (|x - x_i| / R_i + sqrt(1 - n . n_i)), +infinity at the record's own point and normal.
@@ -221,16 +222,15 @@ IrradianceRecord irradianceRecord(const Scene& scene, const SurfacePoint& sp, co
 // Lambertian surface point seen through each pixel's centre (through specular surfaces on
 // lesson 3's walk) is a candidate, coarse to fine (every s-th pixel in both directions, s about a
 // quarter of the image's side, then every s/2-th, ..., every pixel); a candidate that no record of
-// the earlier levels covers
-// (interpolateIrradiance) gets a new record (irradianceRecord). Candidates of one level run in
-// parallel tasks and their records are appended in pixel order, so the cache does not depend on
-// the number of threads.
+// the earlier levels covers (interpolateIrradiance) gets a new record (irradianceRecord).
+// Candidates of one level run in parallel tasks and their records are appended in pixel order,
+// so the cache does not depend on the number of threads.
 IrradianceCache buildIrradianceCache(const Scene& scene, const PhotonMap& global, const PmOptions& opt, float a,
                                      int width, int height, uint64_t seed, uint32_t iteration, SampleStats& stats);
 
 // ---- progressive photon mapping (progressive.cpp, Eq. 8.13-8.14) ----
 
-// Knaus and Zwicker's alpha: the fraction of the new photons a pass keeps (Eq. 8.13).
+// Knaus and Zwicker's alpha (Eq. 8.13): 2/3 balances the squared bias and the variance.
 constexpr double kPpmAlpha = 2.0 / 3.0;
 
 // The radius update of Eq. 8.13: the squared radius of pass i + 1 from that of pass i (i >= 1),

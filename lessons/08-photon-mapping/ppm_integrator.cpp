@@ -24,7 +24,7 @@ namespace {
 // The first pass's radius, as a fraction of the scene's bounding radius, and the photon paths
 // traced per pass: four per pixel, at least kMinPhotons.
 constexpr float kInitialRadius = 0.03f;
-constexpr int kMinPhotons = 16384;
+constexpr int kMinPhotons = 8192;
 constexpr uint64_t kPpmSalt = 0x6A09E667F3BCC909ull;
 int photonsPerPass(const Image& out) { return std::max(kMinPhotons, 4 * out.width * out.height); }
 
