@@ -136,3 +136,73 @@ TEST_CASE("pm: the image and the photon maps do not depend on the number of thre
                                 << " map of 3000 photon paths: different (or empty) with 1 and 2 threads");
     }
 }
+
+TEST_CASE(
+    "pm: the caustic of the Cornell spheres' glass sphere is on the floor, as bright as in the path-traced reference "
+    "(Eq. 8.11) [2 pts]") {
+    // The glass sphere focuses the lamp's light on the floor (paths L S S D E): only the caustic
+    // map carries it (final gathering sees the glass and stops). The caustic's pixels are taken
+    // from the reference alone: pixels that see only the floor and are more than 1.5 times as
+    // bright as the floor's median. Their mean must be within 25 % of the reference's (the
+    // k-nearest estimate blurs a caustic a few pixels wide), plus the noise at level alpha().
+    const ps::Scene scene = loadSceneAt("scenes/cornell-spheres.scene", 32, 32);
+    const ps::Image ref = ps::readPFM(sourcePath("tests/05-light-tracing/data/cornell-spheres-32.pfm"));
+    const ps::Image refVar = ps::readPFM(sourcePath("tests/05-light-tracing/data/cornell-spheres-32-variance.pfm"));
+    const int w = ref.width, h = ref.height;
+    std::vector<bool> floor(size_t(w) * h, true);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            for (int j = 0; j <= 5; ++j)
+                for (int i = 0; i <= 5; ++i) {
+                    ps::Ray ray = scene.camera.generateRay(
+                        Vec2(x + std::min(i / 5.0f, 0.99999f), y + std::min(j / 5.0f, 0.99999f)));
+                    ps::SurfacePoint sp;
+                    if (!scene.intersect(ray, sp) || sp.p.y > 1.0f || sp.n.y < 0.99f) floor[size_t(y) * w + x] = false;
+                }
+    std::vector<double> floorValues;
+    for (size_t p = 0; p < floor.size(); ++p)
+        if (floor[p]) floorValues.push_back(ps::testrender::sum(ref.pixels[p]));
+    REQUIRE(floorValues.size() > 20);
+    std::nth_element(floorValues.begin(), floorValues.begin() + floorValues.size() / 2, floorValues.end());
+    const double median = floorValues[floorValues.size() / 2];
+    std::vector<size_t> caustic;
+    double r = 0.0, rv = 0.0;
+    for (size_t p = 0; p < floor.size(); ++p)
+        if (floor[p] && ps::testrender::sum(ref.pixels[p]) > 1.5 * median) {
+            caustic.push_back(p);
+            r += ps::testrender::sum(ref.pixels[p]);
+            rv += ps::testrender::sum(refVar.pixels[p]);
+        }
+    REQUIRE_MESSAGE(caustic.size() >= 3, "the test's caustic region has " << caustic.size() << " pixels");
+    const double n = double(caustic.size());
+    r /= n;
+    const double refSe = std::sqrt(3.0 * rv) / n;
+    std::unique_ptr<ps::Integrator> pm = ps::makeIntegrator("pm");
+    pm->prepare(scene);
+    ps::stats::Welford mean;
+    ps::SampleStats stats;
+    const int iterations = 256;
+    for (int it = 0; it < iterations; ++it) {
+        ps::Image img(w, h);
+        pm->renderIteration(scene, uint32_t(it), ps::testseed::seed(835), img, stats);
+        double s = 0.0;
+        for (size_t p : caustic) s += ps::testrender::sum(img.pixels[p]);
+        mean.add(s / n);
+    }
+    CHECK_MESSAGE(stats.bad() == 0, "pm on the Cornell spheres: expected 0 NaN and 0 Inf samples, got "
+                                        << stats.nan << " NaN and " << stats.inf << " Inf");
+    const double noise = zCritical() * std::sqrt(mean.variance() / iterations + refSe * refSe);
+    const double ratio = mean.mean / r;
+    MESSAGE("pm / reference in the caustic (" << caustic.size() << " pixels, floor median " << num(median)
+                                              << "): " << num(ratio) << " (noise " << num(noise / r)
+                                              << ", reference se " << num(refSe / r) << ")");
+    CHECK_MESSAGE(std::abs(mean.mean - r) <= 0.25 * r + noise,
+                  "the caustic under the glass sphere ("
+                      << caustic.size() << " floor pixels): expected the mean " << num(r)
+                      << " of the path-traced reference within 25 % + noise " << num(noise) << ", got "
+                      << num(mean.mean) << " (ratio " << num(ratio) << ")"
+                      << (ratio < 0.75 ? " (too dark: is the caustic map looked up "
+                                         "at the diffuse point after a specular "
+                                         "bounce?)"
+                                       : ""));
+}
