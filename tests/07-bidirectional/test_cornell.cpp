@@ -45,19 +45,9 @@ TEST_CASE(
 namespace {
 // Per pixel: does any ray of a 6 x 6 grid over the pixel first hit a specular surface?
 std::vector<bool> seesSpecular(const ps::Scene& scene) {
-    const int w = scene.camera.width(), h = scene.camera.height();
-    std::vector<bool> any(size_t(w) * h, false);
-    for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x)
-            for (int j = 0; j <= 5; ++j)
-                for (int i = 0; i <= 5; ++i) {
-                    ps::Ray ray = scene.camera.generateRay(
-                        Vec2(x + std::min(i / 5.0f, 0.99999f), y + std::min(j / 5.0f, 0.99999f)));
-                    ps::SurfacePoint sp;
-                    if (scene.intersect(ray, sp) && scene.materials[size_t(sp.material)].isDelta())
-                        any[size_t(y) * w + x] = true;
-                }
-    return any;
+    return ps::testrender::pixelsWhere(scene, false, [&](bool hit, const ps::SurfacePoint& sp) {
+        return hit && scene.materials[size_t(sp.material)].isDelta();
+    });
 }
 ps::Image select(const ps::Image& img, const std::vector<bool>& mask) {
     int n = 0;

@@ -11,17 +11,10 @@ namespace {
 // Pixels whose 3 x 3 neighbourhood sees no specular surface (see test_cornell.cpp).
 std::vector<bool> awayFromSpecular(const ps::Scene& scene) {
     const int w = scene.camera.width(), h = scene.camera.height();
-    std::vector<bool> spec(size_t(w) * h, false), clear(size_t(w) * h, true);
-    for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x)
-            for (int j = 0; j <= 5; ++j)
-                for (int i = 0; i <= 5; ++i) {
-                    ps::Ray ray = scene.camera.generateRay(
-                        Vec2(x + std::min(i / 5.0f, 0.99999f), y + std::min(j / 5.0f, 0.99999f)));
-                    ps::SurfacePoint sp;
-                    if (scene.intersect(ray, sp) && scene.materials[size_t(sp.material)].isDelta())
-                        spec[size_t(y) * w + x] = true;
-                }
+    const std::vector<bool> spec = ps::testrender::pixelsWhere(scene, false, [&](bool hit, const ps::SurfacePoint& sp) {
+        return hit && scene.materials[size_t(sp.material)].isDelta();
+    });
+    std::vector<bool> clear(size_t(w) * h, true);
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x)
             for (int dy = -1; dy <= 1; ++dy)

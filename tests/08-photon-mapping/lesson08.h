@@ -125,18 +125,8 @@ inline double squareSolidAngle(double a, double d) { return 4.0 * std::asin(a * 
 // on its edge a pixel is 100 times brighter in some samples than in others, noise that a few
 // iterations cannot average and that says nothing about photon mapping. Row-major.
 inline std::vector<bool> pixelsSeeingLights(const ps::Scene& scene) {
-    const int w = scene.camera.width(), h = scene.camera.height();
-    std::vector<bool> sees(size_t(w) * h, false);
-    for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x)
-            for (int j = 0; j <= 5; ++j)
-                for (int i = 0; i <= 5; ++i) {
-                    ps::Ray ray = scene.camera.generateRay(
-                        Vec2(x + std::min(i / 5.0f, 0.99999f), y + std::min(j / 5.0f, 0.99999f)));
-                    ps::SurfacePoint sp;
-                    if (scene.intersect(ray, sp) && sp.light >= 0) sees[size_t(y) * w + x] = true;
-                }
-    return sees;
+    return ps::testrender::pixelsWhere(scene, false,
+                                       [](bool hit, const ps::SurfacePoint& sp) { return hit && sp.light >= 0; });
 }
 
 }  // namespace lesson08

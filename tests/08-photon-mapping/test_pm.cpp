@@ -149,16 +149,8 @@ TEST_CASE(
     const ps::Image ref = ps::readPFM(sourcePath("tests/05-light-tracing/data/cornell-spheres-32.pfm"));
     const ps::Image refVar = ps::readPFM(sourcePath("tests/05-light-tracing/data/cornell-spheres-32-variance.pfm"));
     const int w = ref.width, h = ref.height;
-    std::vector<bool> floor(size_t(w) * h, true);
-    for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x)
-            for (int j = 0; j <= 5; ++j)
-                for (int i = 0; i <= 5; ++i) {
-                    ps::Ray ray = scene.camera.generateRay(
-                        Vec2(x + std::min(i / 5.0f, 0.99999f), y + std::min(j / 5.0f, 0.99999f)));
-                    ps::SurfacePoint sp;
-                    if (!scene.intersect(ray, sp) || sp.p.y > 1.0f || sp.n.y < 0.99f) floor[size_t(y) * w + x] = false;
-                }
+    const std::vector<bool> floor = ps::testrender::pixelsWhere(
+        scene, true, [](bool hit, const ps::SurfacePoint& sp) { return hit && sp.p.y <= 1.0f && sp.n.y >= 0.99f; });
     std::vector<double> floorValues;
     for (size_t p = 0; p < floor.size(); ++p)
         if (floor[p]) floorValues.push_back(ps::testrender::sum(ref.pixels[p]));

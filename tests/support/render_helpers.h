@@ -1,8 +1,10 @@
 // Rendering in the graded tests, once for every lesson: a fixed-seed render of a named
 // integrator through the framework's render loop, and the sums the tests compare.
 #pragma once
+#include <algorithm>
 #include <memory>
 #include <string>
+#include <vector>
 #include "film.h"
 #include "image.h"
 #include "integrator.h"
@@ -41,6 +43,27 @@ inline double total(const Image& img) {
     double t = 0.0;
     for (const Color& c : img.pixels) t += sum(c);
     return t;
+}
+
+// Per pixel of the scene's camera, row by row: rays through the 6 x 6 points of a grid over the
+// pixel (its edges included), each tested with pred(hit, sp), sp the first surface the ray meets
+// (hit false: none); true where `some` ray passes (all = false) or where every ray does (all =
+// true). Test fixtures find with it the pixels that see a lamp, a specular surface, only the floor.
+template <class Pred>
+std::vector<bool> pixelsWhere(const Scene& scene, bool all, Pred&& pred) {
+    const int w = scene.camera.width(), h = scene.camera.height();
+    std::vector<bool> out(size_t(w) * h, all);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            for (int j = 0; j <= 5; ++j)
+                for (int i = 0; i <= 5; ++i) {
+                    Ray ray = scene.camera.generateRay(
+                        Vec2(x + std::min(i / 5.0f, 0.99999f), y + std::min(j / 5.0f, 0.99999f)));
+                    SurfacePoint sp;
+                    const bool hit = scene.intersect(ray, sp);
+                    if (pred(hit, sp) != all) out[size_t(y) * w + x] = !all;
+                }
+    return out;
 }
 
 }  // namespace ps::testrender
