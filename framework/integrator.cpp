@@ -1,6 +1,7 @@
 #include "integrator.h"
 #include "errors.h"
 #include <algorithm>
+#include <map>
 #include "eyelight.h"
 #include "tasks.h"
 
@@ -45,6 +46,37 @@ std::unique_ptr<Integrator> makeIntegrator(const std::string& name) {
     std::string known;
     for (const auto& i : integratorList()) known += (known.empty() ? "" : ", ") + i.name;
     throw InputError("unknown algorithm '" + name + "' (known: " + known + ")");
+}
+
+namespace {
+std::map<std::string, PathFilteredMaker>& pathFilters() {
+    static std::map<std::string, PathFilteredMaker> filters;
+    return filters;
+}
+}  // namespace
+
+bool registerPathFilter(const std::string& name, PathFilteredMaker make) {
+    pathFilters()[name] = make;
+    return true;
+}
+
+std::vector<std::string> pathFilteredAlgorithms() {
+    std::vector<std::string> names;
+    for (const auto& [name, make] : pathFilters()) names.push_back(name);
+    return names;
+}
+
+bool honoursPaths(const std::string& name) { return pathFilters().count(name) > 0; }
+
+std::unique_ptr<Integrator> makeIntegrator(const std::string& name, const PathExpression* paths) {
+    if (!paths) return makeIntegrator(name);
+    const auto it = pathFilters().find(name);
+    if (it != pathFilters().end()) return it->second(*paths);
+    makeIntegrator(name);  // an unknown name says so first
+    std::string can;
+    for (const std::string& n : pathFilteredAlgorithms()) can += (can.empty() ? "" : ", ") + n;
+    throw InputError("algorithm '" + name + "' cannot render only the paths of an expression (--paths '" +
+                     paths->text() + "'); these can: " + (can.empty() ? std::string("none") : can));
 }
 
 }  // namespace ps

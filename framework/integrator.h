@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 #include "film.h"
+#include "path_expression.h"
 #include "rng.h"
 #include "scene.h"
 
@@ -28,6 +29,14 @@ public:
     // What the integrator counted during the render, one line each (lesson 10: path vertices,
     // splits, roulette), printed by the render command after its summary. Empty by default.
     virtual std::vector<std::string> report() const { return {}; }
+    // The paths whose contribution this integrator estimates on this scene, as a Heckbert path
+    // expression (path_expression.h, lesson 11): every path by default (kAllPaths). A classic of
+    // lesson 11 carries fewer (whitted: "L[DG]S*E|LS*E" where every light is a point light), and
+    // returns "" where no expression over the alphabet says which (whitted on a scene with an
+    // area light, which it shows but lights nothing with). The extreme tests compare an
+    // integrator with pt filtered to its expression.
+    virtual std::string carriedPaths(const Scene&) const { return kAllPaths; }
+    static constexpr const char* kAllPaths = "L.*E";
 };
 
 // An integrator that estimates the radiance along one camera ray per pixel per iteration.
@@ -54,5 +63,26 @@ std::unique_ptr<Integrator> makeIntegrator(const std::string& name);
 #define PS_REGISTER_INTEGRATOR(Type, name, description)               \
     static const bool psRegistered_##Type = ::ps::registerIntegrator( \
         {name, description, []() -> std::unique_ptr<::ps::Integrator> { return std::make_unique<Type>(); }})
+
+// ---- Heckbert's path expressions (`--paths`, path_expression.h, lesson 11) ----------------------
+// An algorithm that can render only the paths an expression matches registers a second form of
+// itself under the same name: an integrator made from the compiled expression. Every other
+// algorithm refuses an expression (makeIntegrator below): an expression is never ignored.
+using PathFilteredMaker = std::unique_ptr<Integrator> (*)(const PathExpression& paths);
+bool registerPathFilter(const std::string& name, PathFilteredMaker make);
+// The algorithms that honour an expression, sorted by name.
+std::vector<std::string> pathFilteredAlgorithms();
+bool honoursPaths(const std::string& name);
+// paths == nullptr: makeIntegrator(name). Otherwise the algorithm's filtered form; InputError if
+// the name is unknown or the algorithm has none ("algorithm 'X' cannot render only the paths of
+// an expression (--paths); these can: ...").
+std::unique_ptr<Integrator> makeIntegrator(const std::string& name, const PathExpression* paths);
+
+// In a lesson's .cpp at namespace scope: Type has a constructor Type(const PathExpression&).
+#define PS_REGISTER_PATH_FILTER(Type, name)                                                                        \
+    static const bool psPathFilter_##Type = ::ps::registerPathFilter(                                             \
+        name, [](const ::ps::PathExpression& paths) -> std::unique_ptr<::ps::Integrator> {                        \
+            return std::make_unique<Type>(paths);                                                                  \
+        })
 
 }  // namespace ps
