@@ -172,9 +172,50 @@ void listAlgorithms(std::ostream& os) {
     const std::vector<IntegratorInfo> list = integratorList();
     size_t width = 0;
     for (const auto& i : list) width = std::max(width, i.name.size());
-    os << "algorithms:\n";
+    os << "algorithms (* also renders only the paths of an expression: --paths):\n";
     for (const auto& i : list)
-        os << "  " << i.name << std::string(width + 2 - i.name.size(), ' ') << i.description << "\n";
+        os << (honoursPaths(i.name) ? "* " : "  ") << i.name << std::string(width + 2 - i.name.size(), ' ')
+           << i.description << "\n";
+}
+
+const char* const kPathsHelp = R"(  --paths EXPR       render only the paths Heckbert's expression EXPR matches (lesson 11): the
+                     types of a path's vertices from the light to the eye: L light, D diffuse,
+                     G glossy (Phong), S specular (mirror, glass), E eye; . any type, [DS] one
+                     of, [^S] any but, ( ), | or, postfix * + ? (zero or more, one or more, zero
+                     or one). Every path is L.*E = L(D|G|S)*E. Algorithms marked * below honour
+                     it, the others refuse it. Examples (quote them in the shell):
+                       LE        lights seen directly        LDE      direct light on diffuse
+                       LD+E      diffuse interreflection      LS+DE    caustics
+                       L.*S.*E   paths with a specular vertex L[DG]S*E what Whitted carries
+)";
+
+PathExpression parsePathsOption(const std::string& text) {
+    try {
+        return PathExpression(text);
+    } catch (const PathExpressionError& e) {
+        throw UsageError("option --paths: " + e.pointed("  "));
+    }
+}
+
+void requirePathFilter(const std::string& algo, const PathExpression& paths) {
+    if (honoursPaths(algo)) return;
+    std::string can;
+    for (const std::string& n : pathFilteredAlgorithms()) can += (can.empty() ? "" : ", ") + n;
+    throw UsageError("algorithm '" + algo + "' cannot render only the paths of an expression (--paths '" +
+                     paths.text() + "'); these can: " + (can.empty() ? std::string("none") : can));
+}
+
+Color parseAmbient(const std::string& opt, const std::string& s) {
+    const std::vector<std::string> parts = splitList(s);
+    if (parts.size() != 1 && parts.size() != 3)
+        throw UsageError("option " + opt + " needs one number or three (R,G,B), got '" + s + "'");
+    float v[3];
+    for (size_t i = 0; i < 3; ++i) {
+        v[i] = parseNumber<float>(opt, parts[parts.size() == 1 ? 0 : i]);
+        if (!(v[i] >= 0.0f && v[i] <= 1e30f))
+            throw UsageError("option " + opt + " must be finite and not negative, got '" + s + "'");
+    }
+    return Color(v[0], v[1], v[2]);
 }
 
 bool stderrIsTerminal() {

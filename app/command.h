@@ -9,7 +9,9 @@
 #include <stdexcept>
 #include <string>
 #include <vector>
+#include "math.h"
 #include "numbers.h"
+#include "path_expression.h"
 
 namespace ps {
 
@@ -111,6 +113,18 @@ void checkOutputFolder(const std::string& option, const std::string& folder, con
 std::string stem(const std::string& path);
 std::string baseName(const std::string& path);
 std::vector<std::string> splitList(const std::string& s);
+
+// --paths EXPR (Heckbert's path expressions, framework/path_expression.h): the compiled
+// expression, else UsageError "option --paths: PROBLEM" with the expression and a caret under
+// the offending character on the next two lines.
+PathExpression parsePathsOption(const std::string& text);
+// UsageError "algorithm 'A' cannot render only the paths of an expression (--paths ...); these
+// can: ..." unless algo has a filtered form (framework/integrator.h).
+void requirePathFilter(const std::string& algo, const PathExpression& paths);
+// The help's paragraph on --paths (render, converge, pyramid share it).
+extern const char* const kPathsHelp;
+// --ambient A or R,G,B: Whitted's ambient radiance (lesson 11), each value finite and >= 0.
+Color parseAmbient(const std::string& opt, const std::string& s);
 
 // One line "pathspace: ALGO leaves out ..." on stderr per piece of work the integrator leaves
 // out on this scene (Integrator::leftOut).

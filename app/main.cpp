@@ -26,7 +26,11 @@ int main(int argc, char** argv) {
             }
         return command->run(args);
     } catch (const ps::UsageError& e) {
-        std::cerr << "pathspace: " << e.what() << " (run 'pathspace --help' for usage)\n";
+        // A message of several lines (an expression and a caret under its fault) keeps them
+        // together and says the rest on a line of its own.
+        const std::string what = e.what();
+        std::cerr << "pathspace: " << what
+                  << (what.find('\n') == std::string::npos ? " " : "\n") << "(run 'pathspace --help' for usage)\n";
         return 2;
     } catch (const ps::InputError& e) {
         std::cerr << "pathspace: error: " << e.what() << "\n";

@@ -29,6 +29,9 @@ struct RenderSettings {
     // Integrators leave out work the capabilities show cannot contribute (Integrator::leftOut);
     // false (`--no-prune`) makes them do all of it, to check that pruning changes nothing.
     bool prune = true;
+    // Whitted's ambient radiance (lesson 11, `whitted` only): light no path carries, added at every
+    // non-specular surface it shades as ambient times the albedo. 0: none.
+    Color ambient = Color(0.0f);
 };
 
 // What a scene has, recorded at load time so integrators can leave out what it does not need.

@@ -573,8 +573,9 @@ private:
     }
 
     void render(Statement& st) {
-        st.readOptions({{"spp", 1}, {"maxdepth", 1}, {"algo", 1}});
+        st.readOptions({{"spp", 1}, {"maxdepth", 1}, {"algo", 1}, {"ambient", 3}});
         RenderSettings& s = scene_.settings;
+        if (st.has("ambient")) s.ambient = checkColor(st, "ambient", st.optVec3("ambient", Color(0.0f)), false);
         s.spp = st.optInt("spp", s.spp);
         s.maxDepth = st.optInt("maxdepth", s.maxDepth);
         s.algo = st.optWord("algo", s.algo);

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <sstream>
 #include "command.h"
 #include "errors.h"
@@ -36,6 +37,8 @@ const char* const kUsage = R"(converge options:
                      the end of the budget, left to right in --algos order, then the reference,
                      each under its label: algorithm and spp)
   --threads T, --maxdepth D, --no-prune, --progress/--no-progress   as for render
+  --paths EXPR       every algorithm (and --ref-algo) renders only the paths EXPR matches, as
+                     for render (a given --reference must be rendered with it too)
 A pixel in which a point light is seen directly is left out of every algorithm's error (a path
 tracer cannot sample that path: both ends are delta positions); the report says which.
 )";
@@ -58,6 +61,7 @@ int runConverge(const std::vector<std::string>& args) {
     double refSeconds = 0.0;
     int maxDepth = -1;
     bool prune = true;
+    std::optional<PathExpression> paths;
     for (size_t i = 0; i < args.size(); ++i) {
         const std::string& a = args[i];
         auto value = [&]() -> std::string { return optionValue(args, i); };
@@ -75,6 +79,7 @@ int runConverge(const std::vector<std::string>& args) {
         else if (a == "--progress") opt.progress = true;
         else if (a == "--no-progress") opt.progress = false;
         else if (a == "--no-prune") prune = false;
+        else if (a == "--paths") paths = parsePathsOption(value());
         else if (!a.empty() && a[0] == '-') throw UsageError("unknown option '" + a + "'");
         else if (scenePath.empty()) scenePath = a;
         else throw UsageError("more than one scene given ('" + scenePath + "' and '" + a + "')");
@@ -85,6 +90,11 @@ int runConverge(const std::vector<std::string>& args) {
     if (opt.seconds == 0.0 && reference.empty() && refSeconds == 0.0)
         throw UsageError("'converge' without --time needs --reference REF or --ref-time SECONDS");
     for (const std::string& a : opt.algos) makeIntegrator(a);  // unknown names fail now, not later
+    if (paths) {
+        opt.paths = &*paths;
+        for (const std::string& a : opt.algos) requirePathFilter(a, *paths);
+        if (!refAlgo.empty()) requirePathFilter(refAlgo, *paths);
+    }
     // The report's folder and every file in it, checked before the scene is loaded (command.h).
     const std::string name = stem(baseName(scenePath));
     if (outDir.empty()) outDir = "converge-" + name;
@@ -101,7 +111,7 @@ int runConverge(const std::vector<std::string>& args) {
         } catch (const InputError& e) { throw InputError(scenePath, 0, e.what()); }
     }
     scene.settings.prune = prune;
-    for (const std::string& a : opt.algos) printLeftOut(a, *makeIntegrator(a), scene);
+    for (const std::string& a : opt.algos) printLeftOut(a, *makeIntegrator(a, opt.paths), scene);
     const std::vector<PointLightPixel> leftOut = pointLightsInView(scene);
     for (const PointLightPixel& p : leftOut) std::cerr << "pathspace: " << describe(p) << "\n";
     std::error_code ec;
@@ -115,7 +125,7 @@ int runConverge(const std::vector<std::string>& args) {
             throw InputError(reference, 0, "reference size differs from the scene's resolution");
     } else {
         if (refAlgo.empty()) refAlgo = opt.algos[0];
-        auto integrator = makeIntegrator(refAlgo);
+        auto integrator = makeIntegrator(refAlgo, opt.paths);
         RenderOptions ro;
         ro.seconds = refSeconds > 0.0 ? refSeconds : 10.0 * opt.seconds;
         ro.seed = 1000003;  // independent of the compared runs (seeds 0 .. K-1)

@@ -4,7 +4,9 @@
 #include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <optional>
 #include "07-bidirectional/bpt.h"
+#include "11-classics/path_filter.h"
 #include "command.h"
 #include "image.h"
 #include "report/label.h"
@@ -17,7 +19,8 @@ const char* const kUsage = R"(pyramid options:
   --max-length K     path lengths 1..K (K edges at most, 1 to 12; default 4); row k of the
                      pyramid holds the techniques s = 0..k+1 (t = k+1-s) from left to right
   --spp N            samples per pixel (default: the scene's)
-  --seed S, --threads T, --no-prune   as for render
+  --seed S, --threads T, --no-prune, --paths EXPR   as for render (--paths: each technique's
+                     image holds only the paths EXPR matches)
   --exposure E       PNG exposure in stops, -100 to 100 (default 0)
   --out PREFIX       writes PREFIX-unweighted.png (each technique alone, its unweighted
                      estimate), PREFIX-weighted.png (the MIS-weighted ones: a row adds up
@@ -35,6 +38,7 @@ int runPyramid(const std::vector<std::string>& args) {
     uint64_t seed = 0;
     float exposure = 0.0f;
     bool prune = true;
+    std::optional<PathExpression> paths;
     for (size_t i = 0; i < args.size(); ++i) {
         const std::string& a = args[i];
         auto value = [&]() -> std::string { return optionValue(args, i); };
@@ -45,6 +49,7 @@ int runPyramid(const std::vector<std::string>& args) {
         else if (a == "--exposure") exposure = parseWithin<float>(a, value(), -kMaxExposure, kMaxExposure);
         else if (a == "--out") out = value();
         else if (a == "--no-prune") prune = false;
+        else if (a == "--paths") paths = parsePathsOption(value());
         else if (!a.empty() && a[0] == '-') throw UsageError("unknown option '" + a + "'");
         else if (scenePath.empty()) scenePath = a;
         else throw UsageError("'pyramid' takes one scene file");
@@ -67,6 +72,13 @@ int runPyramid(const std::vector<std::string>& args) {
     BptOptions opt;
     for (const std::string& line : bptLeftOut(scene, opt))
         std::cerr << "pathspace: pyramid leaves out " << line << "\n";
+    if (paths) {  // lesson 11's filter, as in `bpt --paths`
+        opt.pathTest = [&](const Subpath& light, const Subpath& camera, int s, int t) {
+            return bptPathMatches(*paths, scene, light, camera, s, t);
+        };
+        for (const std::string& line : pathFilterLeftOut(*paths, scene, "a light subpath is connected up to the vertex"))
+            std::cerr << "pathspace: pyramid leaves out " << line << "\n";
+    }
     const TechniqueImages t = renderTechniques(scene, maxLength, spp, seed, threads, opt);
     const int w = scene.camera.width(), h = scene.camera.height(), gap = std::max(2, w / 16);
     const int cols = maxLength + 2;

@@ -3,6 +3,7 @@
 #include <fstream>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include "command.h"
 #include "errors.h"
 #include "image.h"
@@ -30,6 +31,8 @@ const char* const kUsage = R"(render options:
   --no-prune         do not leave out work the scene cannot use (integrators print what
                      they leave out; pruning is exact, this switch is there to check it)
   --progress / --no-progress   progress bar on stderr (default: when stderr is a terminal)
+  --ambient A        whitted's ambient radiance, one number or R,G,B (default: the scene's
+                     'render ambient', else 0)
 )";
 
 int runRender(const std::vector<std::string>& args) {
@@ -38,6 +41,8 @@ int runRender(const std::vector<std::string>& args) {
     double seconds = 0.0;
     uint64_t seed = 0;
     bool progress = stderrIsTerminal(), prune = true;
+    std::optional<PathExpression> paths;
+    std::optional<Color> ambient;
     for (size_t i = 0; i < args.size(); ++i) {
         const std::string& a = args[i];
         auto value = [&]() -> std::string { return optionValue(args, i); };
@@ -54,11 +59,17 @@ int runRender(const std::vector<std::string>& args) {
         else if (a == "--progress") progress = true;
         else if (a == "--no-progress") progress = false;
         else if (a == "--no-prune") prune = false;
+        else if (a == "--paths") paths = parsePathsOption(value());
+        else if (a == "--ambient") ambient = parseAmbient(a, value());
         else if (!a.empty() && a[0] == '-') throw UsageError("unknown option '" + a + "'");
         else if (scenePath.empty()) scenePath = a;
         else throw UsageError("more than one scene given ('" + scenePath + "' and '" + a + "')");
     }
     if (scenePath.empty()) throw UsageError("'render' needs a scene file");
+    if (paths && !algo.empty()) {
+        makeIntegrator(algo);  // an unknown name says so first
+        requirePathFilter(algo, *paths);
+    }
     // Every file this run writes, checked before the scene is loaded (command.h).
     if (out.empty()) out = stem(baseName(scenePath)) + ".png";
     std::vector<OutputFile> outputs = {{"--out", out, imageExtensions()}};
@@ -73,6 +84,7 @@ int runRender(const std::vector<std::string>& args) {
     Scene scene = loadScene(scenePath);
     if (maxDepth >= 0) scene.settings.maxDepth = maxDepth;
     scene.settings.prune = prune;
+    if (ambient) scene.settings.ambient = *ambient;
     std::unique_ptr<Integrator> integrator;
     if (algo.empty()) {
         algo = scene.settings.algo;
@@ -81,9 +93,10 @@ int runRender(const std::vector<std::string>& args) {
         } catch (const InputError& e) {  // name the scene line that asked for it
             throw InputError(scenePath, scene.settings.algoLine, e.what());
         }
-    } else {
-        integrator = makeIntegrator(algo);
+        if (paths) requirePathFilter(algo, *paths);
     }
+    if (paths) integrator = makeIntegrator(algo, &*paths);
+    else if (!integrator) integrator = makeIntegrator(algo);
     if (spp == 0 && seconds == 0.0) spp = scene.settings.spp;
 
     Image ref;
@@ -106,7 +119,8 @@ int runRender(const std::vector<std::string>& args) {
         opt.reference = &ref;
         opt.csv = &csv;
     }
-    std::cerr << "pathspace: " << scenePath << " (" << scene.caps.describe() << "), algo " << algo << "\n";
+    std::cerr << "pathspace: " << scenePath << " (" << scene.caps.describe() << "), algo " << algo
+              << (paths ? ", paths '" + paths->text() + "'" : std::string()) << "\n";
     printLeftOut(algo, *integrator, scene);
 
     const RenderResult res = ps::render(scene, *integrator, opt);
@@ -130,9 +144,11 @@ int runRender(const std::vector<std::string>& args) {
     return 0;
 }
 
+const std::string kRenderUsage = std::string(kUsage) + kPathsHelp;
+
 }  // namespace
 
-PS_REGISTER_COMMAND(render, 10, "render SCENE [options]", "render a scene file (see scenes/README.md)", kUsage, true,
-                    runRender);
+PS_REGISTER_COMMAND(render, 10, "render SCENE [options]", "render a scene file (see scenes/README.md)", kRenderUsage,
+                    true, runRender);
 
 }  // namespace ps

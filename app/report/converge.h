@@ -53,6 +53,9 @@ struct ConvergeOptions {
     int seeds = 1;         // independent runs per algorithm (seeds 0 .. seeds-1), averaged
     int threads = 0;
     bool progress = false;
+    // Heckbert's expression (--paths, lesson 11): every algorithm renders only the paths it
+    // matches (its filtered form: makeIntegrator(algo, paths)); nullptr: every path.
+    const PathExpression* paths = nullptr;
 };
 
 struct ConvergencePoint {

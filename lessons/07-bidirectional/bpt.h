@@ -23,6 +23,7 @@
 // compares. The pinhole is chosen with probability 1 and a point light with P(l) (delta
 // positions: coefficients again); a density that is 0 means "cannot be sampled this way".
 #pragma once
+#include <functional>
 #include <vector>
 #include "02-direct-mis/mis.h"
 #include "05-light-tracing/lighttracer.h"
@@ -152,6 +153,10 @@ struct BptOptions {
     Heuristic heuristic = Heuristic::Power;
     bool recursive = true;  // misWeightRecursive (else misWeightFull)
     bool prune = true;      // leave out what the scene cannot use (Eq. 7.12)
+    // Lesson 11's path expressions (`--paths`, 11-classics/path_filter.h): if set, technique (s, t)
+    // adds its path only if pathTest(light, camera, s, t) says it matches. The random numbers of
+    // s = 1 are drawn before the test, so every technique meets the same numbers either way.
+    std::function<bool(const Subpath& light, const Subpath& camera, int s, int t)> pathTest;
 };
 
 // What one pixel sample's techniques gave, for per-technique images (Veach's pyramid).

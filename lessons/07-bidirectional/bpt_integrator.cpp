@@ -69,6 +69,7 @@ Color bptSample(const Scene& scene, const Vec2& raster, Rng& rng, const BptOptio
                 uLight = rng.uniform();
                 uPos = rng.uniform2();
             }
+            if (opt.pathTest && !opt.pathTest(light, camera, s, t)) continue;  // lesson 11's --paths
             const Connection c = connect(scene, light, camera, s, t, uLight, uPos);
             if (!c.valid) continue;
             const PathVertex* y = s == 1 ? &c.sampledLight : light.data();

@@ -1,0 +1,18 @@
+// Lesson 11 — Whitted's lights: every point light, through one shadow ray each. Interface:
+// lessons/11-classics/whitted.h. Equation numbers refer to lessons/11-classics/README.md.
+#include "11-classics/whitted.h"
+#include "todo.h"
+
+namespace ps {
+
+Color whittedDirect(const Scene& scene, const SurfacePoint& sp, const Vec3& wo) {
+    // TODO(11) Eq. 11.7: for every light of kind LightKind::Point (position, intensity Le):
+    //          d = its distance from sp.p, w = the unit direction towards it,
+    //          f = evalBSDF(scene.materials[sp.material], sp.n, wo, w); if f is not black and
+    //          scene.occluded(scene.spawnRayTo(sp, position)) is false, add
+    //          f * Le * |dot(sp.n, w)| / d^2. Skip a light at distance 0.
+    (void)scene; (void)sp; (void)wo;
+    return PS_TODO("lesson 11: whittedDirect", Color(0.0f));
+}
+
+}  // namespace ps

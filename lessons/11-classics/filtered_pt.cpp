@@ -1,0 +1,79 @@
+// Lesson 11 — plumbing: `pt --paths EXPR`, lesson 3's path tracer (next-event estimation and BSDF
+// hits combined by MIS) restricted to the paths an expression matches (path_filter.h).
+//
+// The camera walk reads the backward automaton: E, then the type of every vertex it meets. At
+// vertex x_k (state b after E x_1 .. x_{k-1}) lesson 3's addMISContribution is called twice:
+//   - with maxDepth = k, it adds only the emission the walk found at x_k (and draws no number):
+//     the path whose light is x_k, kept if reading L next accepts (Eq. 11.5);
+//   - with a copy of the vertex that emits nothing (sp.light = -1), only the light sample: the
+//     path x_k then a new light vertex, kept if reading x_k's type and then L accepts.
+// A rejected light sample is still drawn (into a colour that is thrown away), so the walk meets
+// the same random numbers whatever the expression: images of complementary expressions with the
+// same seed add up to pt's image, and `L.*E` gives pt's image bit for bit (tests/framework/paths).
+// Where no path through the walk can match any more (Eq. 11.6) the walk ends: the pixel's other
+// contributions would all be rejected, and every pixel has its own random numbers, so ending it
+// changes nothing (`--no-prune` walks on, to check that).
+#include <atomic>
+#include "11-classics/path_filter.h"
+
+namespace ps {
+
+namespace {
+
+struct FilteredPathTracer : PixelIntegrator {
+    explicit FilteredPathTracer(const PathExpression& e) : paths(e) {}
+    PathExpression paths;
+    mutable std::atomic<uint64_t> walks{0}, ended{0};
+
+    std::vector<std::string> leftOut(const Scene& scene) const override {
+        return pathFilterLeftOut(paths, scene, "a camera walk ends at the vertex");
+    }
+    std::string carriedPaths(const Scene&) const override { return paths.text(); }
+    std::vector<std::string> report() const override {
+        return {"camera walks ended early (no path through them matches '" + paths.text() +
+                "'): " + std::to_string(ended.load()) + " of " + std::to_string(walks.load())};
+    }
+
+    void renderIteration(const Scene& scene, uint32_t iteration, uint64_t seed, Image& out,
+                         SampleStats& stats) override {
+        if (scene.settings.prune && !sceneCanMatch(paths, scene)) return;  // black: nothing can match
+        PixelIntegrator::renderIteration(scene, iteration, seed, out, stats);
+    }
+
+    Color Li(const Scene& scene, const Ray& ray, Rng& rng) const override {
+        const int maxDepth = scene.settings.maxDepth;
+        const bool prune = scene.settings.prune;
+        Color L(0.0f);
+        ++walks;
+        PathExpression::State b = paths.backStep(paths.backStart(), VertexType::E);
+        cameraWalk(scene, ray, rng, maxDepth, [&](const WalkVertex& v) {
+            // The path whose light is x_k: L, then x_{k-1} .. x_1 (read), then E.
+            if (paths.backAccepting(paths.backStep(b, VertexType::L))) addMISContribution(scene, v, rng, v.bounces, L);
+            if (!v.hit) return false;
+            const PathExpression::State here = paths.backStep(b, surfaceType(scene, v.sp));
+            const bool live = paths.backLive(here);
+            if (prune && !live) {
+                ++ended;
+                return false;
+            }
+            // The light sample at x_k: a new light vertex, then x_k .. x_1, then E.
+            WalkVertex lightSample = v;
+            lightSample.sp.light = -1;  // its emission was the first call's
+            if (paths.backAccepting(paths.backStep(here, VertexType::L))) {
+                addMISContribution(scene, lightSample, rng, maxDepth, L);
+            } else {
+                Color rejected(0.0f);
+                addMISContribution(scene, lightSample, rng, maxDepth, rejected);
+            }
+            b = here;
+            return true;
+        });
+        return L;
+    }
+};
+
+}  // namespace
+
+PS_REGISTER_PATH_FILTER(FilteredPathTracer, "pt");
+
+}  // namespace ps

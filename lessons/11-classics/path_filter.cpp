@@ -1,0 +1,52 @@
+// Lesson 11 — plumbing: what the filtered forms of pt, lt, bpt and pm share (path_filter.h).
+#include "11-classics/path_filter.h"
+
+namespace ps {
+
+VertexType surfaceType(const Scene& scene, const SurfacePoint& sp) {
+    return scatteringType(scene.materials[size_t(sp.material)]);
+}
+
+TypeSet sceneTypes(const Scene& scene) {
+    TypeSet types = 0;
+    for (const Material& m : scene.materials) types = TypeSet(types | typeBit(scatteringType(m)));
+    return TypeSet(types & kInteriorTypes);
+}
+
+bool sceneCanMatch(const PathExpression& paths, const Scene& scene) {
+    return paths.matchesSome(sceneTypes(scene), scene.settings.maxDepth);
+}
+
+std::vector<std::string> pathFilterLeftOut(const PathExpression& paths, const Scene& scene, const std::string& walk) {
+    if (!scene.settings.prune) return {};
+    const std::string expr = "'" + paths.text() + "'";
+    if (!sceneCanMatch(paths, scene)) {
+        std::string types;
+        for (VertexType t : {VertexType::D, VertexType::G, VertexType::S})
+            if (sceneTypes(scene) & typeBit(t)) types += std::string(types.empty() ? "" : ", ") + typeLetter(t);
+        return {"every path: none of at most " + std::to_string(scene.settings.maxDepth) +
+                " bounces over this scene's vertex types (" + (types.empty() ? std::string("none") : types) +
+                ") matches " + expr + " (lesson 11, Eq. 11.6): the image is black"};
+    }
+    return {"paths that do not match " + expr + " (--paths: Heckbert's expression, lesson 11, Eq. 11.5); " + walk +
+            " where no path through it can match any more (a dead state, Eq. 11.6)"};
+}
+
+bool bptPathMatches(const PathExpression& paths, const Scene& scene, const Subpath& light, const Subpath& camera,
+                    int s, int t) {
+    // The light prefix, forward from L: y_0 .. y_{s-1}, or for s = 0 the emitter z_{t-1} alone.
+    PathExpression::State q = paths.step(paths.start(), VertexType::L);
+    for (int i = 1; i < s; ++i) q = paths.step(q, surfaceType(scene, light[size_t(i)].sp));
+    if (!paths.live(q)) return false;
+    // The camera prefix, backward from E: z_1 .. z_{t-1} (z_{t-2} when z_{t-1} is the light).
+    PathExpression::State b = paths.backStep(paths.backStart(), VertexType::E);
+    const int end = s == 0 ? t - 1 : t;
+    for (int j = 1; j < end; ++j) {
+        const PathVertex& z = camera[size_t(j)];
+        if (!z.onSurface() || z.sp.material < 0) return false;  // the background: nothing joins it
+        b = paths.backStep(b, surfaceType(scene, z.sp));
+    }
+    return paths.joins(q, b);
+}
+
+}  // namespace ps

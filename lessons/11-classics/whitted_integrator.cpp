@@ -1,0 +1,43 @@
+// Lesson 11 — plumbing: the Whitted ray tracer the render command knows as `whitted` (read it,
+// nothing to write here). One camera ray through a jittered point of every pixel per iteration,
+// estimated by LiWhitted (whitted.h, Eq. 11.9) with the scene's maximum depth and ambient term
+// (`render maxdepth D ambient R G B` in the scene file, `--maxdepth`, `--ambient` on the command
+// line). Nothing in it is random but the pixel's jitter: its iterations only antialias.
+//
+// Glass splits every ray in two, so a path through glass costs up to 2^maxdepth rays: keep the
+// maximum depth small where there is glass (the lesson's scenes use 6).
+#include "11-classics/whitted.h"
+#include "integrator.h"
+
+namespace ps {
+
+namespace {
+
+struct Whitted : PixelIntegrator {
+    static WhittedOptions options(const Scene& scene) {
+        WhittedOptions opt;
+        opt.maxDepth = scene.settings.maxDepth;
+        opt.ambient = scene.settings.ambient;
+        return opt;
+    }
+
+    Color Li(const Scene& scene, const Ray& ray, Rng&) const override {
+        return LiWhitted(scene, ray, 0, options(scene));
+    }
+
+    // L [DG] S* E from point lights, L S* E from every light (whitted.h); with area lights or a
+    // background, which it shows but lights no surface with, or with an ambient term, no
+    // expression says which paths it carries.
+    std::string carriedPaths(const Scene& scene) const override {
+        if (scene.caps.areaLights || scene.caps.backgroundLight || !isBlack(scene.settings.ambient)) return "";
+        return "L[DG]S*E|LS*E";
+    }
+};
+
+}  // namespace
+
+PS_REGISTER_INTEGRATOR(Whitted, "whitted",
+                       "Whitted ray tracing: mirrors and both branches of glass, point lights with shadow rays, "
+                       "an ambient term (lesson 11)");
+
+}  // namespace ps
