@@ -14,7 +14,7 @@ std::string byVertex(const ps::Scene& scene, const ps::Path& x) {
     std::string s;
     for (size_t i = 0; i < x.size(); ++i) {
         const VertexType t = ps::vertexType(scene, x, i);
-        s += int(t) >= 0 && int(t) < ps::kVertexTypes ? ps::typeLetter(t) : '?';
+        s += int(t) < ps::kVertexTypes ? ps::typeLetter(t) : '?';
     }
     return s;
 }

@@ -121,7 +121,7 @@ TEST_CASE("glassSplit: Snell's directions, F and (1 - F)(eta_o / eta_t)^2, enter
             const std::string where = std::string(inside ? "from inside the glass (eta_o = 1.5, eta_t = 1)"
                                                          : "from outside (eta_o = 1, eta_t = 1.5)") +
                                       " at " + num(deg) + " degrees";
-            const Vec3 refl(wo.x, -wo.y, 0.0f);
+            const Vec3 refl(-wo.x, wo.y, 0.0f);
             CHECK_MESSAGE(glm::length(g.reflected - refl) < 1e-5f,
                           where << ": reflected expected " << str(refl) << ", got " << str(g.reflected));
             if (sinT >= 1.0) {
