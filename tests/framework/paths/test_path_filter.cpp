@@ -1,0 +1,268 @@
+// `--paths`: Heckbert's path expressions applied by pt, lt, bpt and pm (lesson 11's plumbing,
+// lessons/11-classics/path_filter.h). What must hold, and how it is checked:
+//   - exactness of the filter: with the same seed, pt's images of expressions that partition the
+//     paths add up to pt's image (to float rounding: each sample's terms are summed in another
+//     order); an expression that matches every path renders pt's, bpt's and pm's images bit for
+//     bit; ending walks at dead states (pruning) changes no bit of pt, lt and pm;
+//   - the algorithms agree under a filter: lt and bpt against pt (per-pixel z-tests), where each
+//     can sample the paths;
+//   - the caustics of the Cornell spheres (LS+DE) are exactly 0 in the pixels whose first surface
+//     is specular and not 0 on the floor's caustic, in every algorithm; a scene without specular
+//     surfaces has no caustic at all (black);
+//   - Veach's pyramid under `LDE` holds paths of length 2 only;
+//   - every algorithm either honours an expression or refuses it.
+#include <doctest/doctest.h>
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <string>
+#include <vector>
+#include "07-bidirectional/bpt.h"
+#include "errors.h"
+#include "11-classics/path_filter.h"
+#include "format.h"
+#include "lesson_files.h"
+#include "render.h"
+#include "render_helpers.h"
+#include "seed.h"
+#include "statistics.h"
+
+using namespace ps;
+
+namespace {
+
+struct Result {
+    Image mean, variance;
+    SampleStats stats;
+};
+
+Result renderWith(const Scene& scene, const std::string& algo, const std::string& paths, int spp, uint64_t seed,
+                  int threads = 1) {
+    std::unique_ptr<Integrator> integrator;
+    if (paths.empty()) {
+        integrator = makeIntegrator(algo);
+    } else {
+        const PathExpression e(paths);
+        integrator = makeIntegrator(algo, &e);
+    }
+    RenderOptions opt;
+    opt.spp = spp;
+    opt.seed = seed;
+    opt.threads = threads;
+    const RenderResult r = render(scene, *integrator, opt);
+    return {r.film.mean(), r.film.varianceOfMean(), r.stats};
+}
+
+bool sameBits(const Image& a, const Image& b) {
+    if (a.pixels.size() != b.pixels.size()) return false;
+    for (size_t i = 0; i < a.pixels.size(); ++i)
+        for (int c = 0; c < 3; ++c)
+            if (std::memcmp(&a.pixels[i][c], &b.pixels[i][c], sizeof(float)) != 0) return false;
+    return true;
+}
+
+double total(const Image& img) {
+    double t = 0.0;
+    for (const Color& c : img.pixels) t += double(c.r) + c.g + c.b;
+    return t;
+}
+
+Scene spheres(int res = 16) { return testfiles::loadSceneAt("scenes/cornell-spheres.scene", res, res); }
+
+// Every string L t_1 .. t_n E with n <= 7: whether the expressions partition them.
+void requirePartition(const std::vector<std::string>& parts) {
+    std::vector<std::string> mids = {""};
+    for (size_t i = 0; i < mids.size(); ++i)
+        if (mids[i].size() < 7)
+            for (char c : std::string("DGS")) mids.push_back(mids[i] + c);
+    std::vector<PathExpression> e;
+    for (const std::string& p : parts) e.emplace_back(p);
+    for (const std::string& m : mids) {
+        int n = 0;
+        for (const PathExpression& x : e) n += x.matches("L" + m + "E");
+        REQUIRE_MESSAGE(n == 1, "L" << m << "E is matched by " << n << " of the expressions");
+    }
+}
+
+}  // namespace
+
+TEST_CASE("paths filter: pt's images of a partition of the paths add up to pt's image (same seed)") {
+    const struct {
+        const char* scene;
+        std::vector<std::string> parts;
+    } cases[] = {
+        {"scenes/cornell-spheres.scene", {"LE", "LDE", "L(S|G|D.).*E"}},
+        {"scenes/cornell-spheres.scene", {"L[DG]*E", "L.*S.*E"}},
+        {"scenes/cornell-glossy.scene", {"L[DS]*E", "L.*G.*E"}},
+    };
+    for (const auto& c : cases) {
+        requirePartition(c.parts);
+        const Scene scene = testfiles::loadSceneAt(c.scene, 16, 16);
+        const Result all = renderWith(scene, "pt", "", 16, 3);
+        std::vector<Result> parts;
+        for (const std::string& p : c.parts) parts.push_back(renderWith(scene, "pt", p, 16, 3));
+        double worst = 0.0;
+        std::string where;
+        for (size_t i = 0; i < all.mean.pixels.size(); ++i)
+            for (int ch = 0; ch < 3; ++ch) {
+                double sum = 0.0;
+                for (const Result& r : parts) sum += double(r.mean.pixels[i][ch]);
+                const double a = double(all.mean.pixels[i][ch]);
+                const double rel = std::abs(sum - a) / (std::abs(a) + 1e-6);
+                if (rel > worst) {
+                    worst = rel;
+                    where = "pixel " + std::to_string(i) + " channel " + std::to_string(ch) + ": parts add to " +
+                            fmt::num(sum, 9) + ", pt " + fmt::num(a, 9);
+                }
+            }
+        // Each sample adds at most maxdepth + 1 = 9 emission and 8 light-sample terms in float, in
+        // another order than pt: a relative difference of a few float epsilons (1.2e-7 each).
+        CHECK_MESSAGE(worst < 5e-6, c.scene << ": the worst " << where << " (relative " << worst << ")");
+    }
+}
+
+TEST_CASE("paths filter: an expression matching every path renders pt, bpt and pm bit for bit") {
+    const Scene scene = spheres();
+    for (const char* algo : {"pt", "bpt", "pm"})
+        for (const char* every : {"L.*E", "L(D|G|S)*E"}) {
+            const Result plain = renderWith(scene, algo, "", 2, 5, 2), filtered = renderWith(scene, algo, every, 2, 5, 2);
+            CHECK_MESSAGE(sameBits(plain.mean, filtered.mean),
+                          algo << " --paths '" << every << "' differs from " << algo << " (image sums "
+                               << fmt::num(total(filtered.mean), 12) << " and " << fmt::num(total(plain.mean), 12)
+                               << ")");
+        }
+}
+
+TEST_CASE("paths filter: ending walks at dead states changes nothing (pt, lt, pm with and without --no-prune)") {
+    Scene pruned = spheres();
+    Scene unpruned = pruned;
+    unpruned.settings.prune = false;
+    for (const char* algo : {"pt", "lt", "pm"})
+        for (const char* e : {"LDE", "LS+DE", "L.*S.*E", "LD+E"}) {
+            const Result a = renderWith(pruned, algo, e, 2, 9, 2), b = renderWith(unpruned, algo, e, 2, 9, 2);
+            CHECK_MESSAGE(sameBits(a.mean, b.mean), algo << " --paths '" << e << "': pruned and unpruned images differ "
+                                                         << "(sums " << fmt::num(total(a.mean), 12) << " and "
+                                                         << fmt::num(total(b.mean), 12) << ")");
+        }
+}
+
+TEST_CASE("paths filter: lt and bpt agree with pt under the same expression (per-pixel z-tests)") {
+    // The Cornell spheres at 16 x 16, maxdepth 8. Each comparison is a per-pixel z-test of two
+    // independent renders (zTestImages: every channel at the Sidak level over the channels, 99.75 %
+    // must pass), at alpha = 0.01 with Sidak over the comparisons. lt cannot see a path whose last
+    // vertex before the eye is specular, so it is compared on expressions ending in D; the caustics
+    // (LS+DE), which pt samples only by hitting the lamp through the glass or in the mirror, lt
+    // against bpt; and what is seen in the spheres (L[DG]+S+E), bpt against pt. (Not L.*S.*E: its
+    // caustics on the ceiling, the lamp's light reflected up by the mirror sphere, are rare events
+    // for pt whose variance 1024 samples underestimate, and the z-test rejects pt, not bpt.)
+    const Scene scene = spheres();
+    const struct {
+        const char* expr;
+        const char* a;
+        int sppA;
+        const char* b;
+        int sppB;
+    } cases[] = {
+        {"LDE", "lt", 1024, "pt", 1024},      {"LDE", "bpt", 256, "pt", 1024},     {"LD+DE", "lt", 1024, "pt", 1024},
+        {"LD+DE", "bpt", 256, "pt", 1024},    {"L[DG]+S+E", "bpt", 256, "pt", 1024}, {"LS+DE", "lt", 2048, "bpt", 512},
+    };
+    const double alpha = stats::sidak(0.01, int(std::size(cases)));
+    uint64_t seed = testseed::seed(100);
+    for (const auto& c : cases) {
+        const Result a = renderWith(scene, c.a, c.expr, c.sppA, ++seed, 2), b = renderWith(scene, c.b, c.expr, c.sppB, ++seed, 2);
+        CHECK_MESSAGE((a.stats.bad() == 0 && b.stats.bad() == 0), c.expr << ": NaN/Inf samples");
+        REQUIRE_MESSAGE(total(b.mean) > 0.0, c.b << " --paths '" << c.expr << "' renders black");
+        const stats::ZTestResult z = stats::zTestImages(a.mean, a.variance, b.mean, b.variance, alpha);
+        CHECK_MESSAGE(z.passed, c.a << " against " << c.b << " under '" << c.expr << "': " << z.report << " (sums "
+                                    << fmt::num(total(a.mean)) << ", " << fmt::num(total(b.mean)) << ")");
+    }
+}
+
+TEST_CASE("paths filter: the caustics (LS+DE) are 0 where the eye meets a specular surface first, not 0 on the "
+          "floor's caustic, and absent without specular surfaces") {
+    const Scene scene = spheres(24);
+    const std::vector<bool> specularFirst = testrender::pixelsWhere(scene, true, [&](bool hit, const SurfacePoint& sp) {
+        return hit && scene.materials[size_t(sp.material)].isDelta();
+    });
+    // The caustic under the glass sphere: the 4 brightest floor pixels of lt's LS+DE image.
+    const Result ref = renderWith(scene, "lt", "LS+DE", 256, 41, 2);
+    const std::vector<bool> floorOnly = testrender::pixelsWhere(scene, true, [&](bool hit, const SurfacePoint& sp) {
+        return hit && sp.p.y < 1.0f;
+    });
+    std::vector<size_t> order;
+    for (size_t i = 0; i < ref.mean.pixels.size(); ++i)
+        if (floorOnly[i]) order.push_back(i);
+    std::sort(order.begin(), order.end(), [&](size_t a, size_t b) {
+        return total(Image(1, 1, ref.mean.pixels[a])) > total(Image(1, 1, ref.mean.pixels[b]));
+    });
+    REQUIRE(order.size() >= 4);
+    for (const char* algo : {"pt", "lt", "bpt", "pm"}) {
+        // pt finds a caustic only by hitting the lamp through the glass: more samples.
+        const Result r = renderWith(scene, algo, "LS+DE", std::string(algo) == "pt" ? 2048 : 32, 43, 2);
+        int nonZero = 0;
+        for (size_t i = 0; i < r.mean.pixels.size(); ++i)
+            if (specularFirst[i] && !isBlack(r.mean.pixels[i])) ++nonZero;
+        CHECK_MESSAGE(nonZero == 0, algo << " --paths LS+DE: " << nonZero
+                                         << " pixels whose first surface is specular are not black");
+        for (size_t j = 0; j < 4; ++j)
+            CHECK_MESSAGE(!isBlack(r.mean.pixels[order[j]]), algo << " --paths LS+DE: the caustic pixel " << order[j]
+                                                                  << " is black");
+    }
+    const Scene box = testfiles::loadSceneAt("scenes/cornell-box.scene", 8, 8);
+    for (const char* algo : {"pt", "lt", "bpt", "pm"}) {
+        Scene unpruned = box;
+        unpruned.settings.prune = false;
+        for (const Scene* s : {&box, static_cast<const Scene*>(&unpruned)}) {
+            const Result r = renderWith(*s, algo, "LS+DE", 2, 47);
+            CHECK_MESSAGE(total(r.mean) == 0.0, algo << " --paths LS+DE on the Cornell box (no specular surface)"
+                                                     << (s->settings.prune ? "" : " with --no-prune")
+                                                     << ": expected black, got sum " << total(r.mean));
+        }
+    }
+}
+
+TEST_CASE("paths filter: Veach's pyramid under LDE holds the paths of length 2 only") {
+    const Scene scene = testfiles::loadSceneAt("scenes/cornell-box.scene", 8, 8);
+    const PathExpression e("LDE");
+    BptOptions opt;
+    opt.pathTest = [&](const Subpath& light, const Subpath& camera, int s, int t) {
+        return bptPathMatches(e, scene, light, camera, s, t);
+    };
+    const TechniqueImages t = renderTechniques(scene, 3, 16, 5, 1, opt);
+    for (int k = 1; k <= 3; ++k)
+        for (int s = 0; s <= k + 1; ++s) {
+            const double sum = total(t.unweighted[size_t(techniqueIndex(s, k))]);
+            if (k == 2 && s >= 0 && s <= 2)
+                CHECK_MESSAGE(sum > 0.0, "technique (" << s << ", " << k + 1 - s << ") of LDE is black");
+            else if (k != 2)
+                CHECK_MESSAGE(sum == 0.0, "technique (" << s << ", " << k + 1 - s << "), length " << k
+                                                        << ": LDE has length 2, expected black, got sum " << sum);
+        }
+}
+
+TEST_CASE("paths filter: every algorithm honours an expression or refuses it, never ignores it") {
+    const PathExpression e("LDE");
+    const Scene scene = spheres(8);
+    std::vector<std::string> honoured;
+    for (const IntegratorInfo& info : integratorList()) {
+        CAPTURE(info.name);
+        if (honoursPaths(info.name)) {
+            honoured.push_back(info.name);
+            const std::unique_ptr<Integrator> i = makeIntegrator(info.name, &e);
+            CHECK(i->carriedPaths(scene) == "LDE");
+        } else {
+            bool refused = false;
+            try {
+                makeIntegrator(info.name, &e);
+            } catch (const InputError& err) {
+                refused = std::string(err.what()).find("--paths") != std::string::npos;
+            }
+            CHECK_MESSAGE(refused, info.name << " neither honours --paths nor refuses it");
+        }
+    }
+    for (const char* must : {"pt", "lt", "bpt", "bpt-balance", "bpt-full", "pm"})
+        CHECK_MESSAGE(std::find(honoured.begin(), honoured.end(), must) != honoured.end(), must << " has no filtered form");
+    for (const char* refuses : {"pssmlt", "mmlt", "pt-adrrs", "path-s1", "pt-nee", "pt-bsdf", "whitted", "ppm", "pm-ic"})
+        CHECK_MESSAGE(std::find(honoured.begin(), honoured.end(), refuses) == honoured.end(),
+                      refuses << " claims to honour --paths");
+}
