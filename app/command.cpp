@@ -172,18 +172,19 @@ void listAlgorithms(std::ostream& os) {
     const std::vector<IntegratorInfo> list = integratorList();
     size_t width = 0;
     for (const auto& i : list) width = std::max(width, i.name.size());
-    os << "algorithms (* also renders only the paths of an expression: --paths):\n";
+    os << "algorithms:\n";
     for (const auto& i : list)
-        os << (honoursPaths(i.name) ? "* " : "  ") << i.name << std::string(width + 2 - i.name.size(), ' ')
-           << i.description << "\n";
+        os << "  " << i.name << std::string(width + 2 - i.name.size(), ' ') << i.description
+           << (honoursPaths(i.name) ? " *" : "") << "\n";
+    os << "  (* also renders only the paths of an expression: --paths)\n";
 }
 
 const char* const kPathsHelp = R"(  --paths EXPR       render only the paths Heckbert's expression EXPR matches (lesson 11): the
                      types of a path's vertices from the light to the eye: L light, D diffuse,
                      G glossy (Phong), S specular (mirror, glass), E eye; . any type, [DS] one
                      of, [^S] any but, ( ), | or, postfix * + ? (zero or more, one or more, zero
-                     or one). Every path is L.*E = L(D|G|S)*E. Algorithms marked * below honour
-                     it, the others refuse it. Examples (quote them in the shell):
+                     or one). Every path is L.*E = L(D|G|S)*E. The algorithms marked * below
+                     honour it, the others refuse it. Examples (quote them in the shell):
                        LE        lights seen directly        LDE      direct light on diffuse
                        LD+E      diffuse interreflection      LS+DE    caustics
                        L.*S.*E   paths with a specular vertex L[DG]S*E what Whitted carries

@@ -39,8 +39,18 @@ struct Result {
     SampleStats stats;
 };
 
+// algo may be "pt --paths EXPR": pt's filtered form (lesson 11), the reference of an integrator that
+// carries only some paths (Integrator::carriedPaths).
 Result renderWith(const Scene& scene, const std::string& algo, int spp, uint64_t seed = 7) {
-    std::unique_ptr<Integrator> integrator = makeIntegrator(algo);
+    const std::string flag = " --paths ";
+    const size_t at = algo.find(flag);
+    std::unique_ptr<Integrator> integrator;
+    if (at == std::string::npos) {
+        integrator = makeIntegrator(algo);
+    } else {
+        const PathExpression paths(algo.substr(at + flag.size()));
+        integrator = makeIntegrator(algo.substr(0, at), &paths);
+    }
     RenderOptions opt;
     opt.spp = spp;
     opt.seed = seed;
@@ -332,8 +342,9 @@ TEST_CASE(
     // mean without the 3 x 3 pixels around the light (lt and bpt see the point light itself
     // there, the path L E, which pt cannot sample), from kRuns renders (seeds apart) each.
     // References: pt for the full transport; lesson 6's path-s1 for its fixed-length
-    // single-technique integrators (path-*); direct-light for lesson 2's direct-* integrators.
-    // BSDF sampling alone never hits a point light: pt-bsdf, direct-bsdf and path-s0 must be
+    // single-technique integrators (path-*); direct-light for lesson 2's direct-* integrators;
+    // pt filtered to the expression of an integrator that carries only some paths (lesson 11's
+    // classics: whitted, Integrator::carriedPaths). BSDF sampling alone never hits a point light: pt-bsdf, direct-bsdf and path-s0 must be
     // exactly black. Welch's t-test, two-sided, alpha = 0.01 with Sidak over every comparison;
     // power: the standard error of the difference must be below 1.5 % of the reference mean
     // (4 % for path-*). Without the fix, at this size: lt -9 %, bpt +10 %, bpt-balance +8 %,
@@ -359,9 +370,15 @@ TEST_CASE(
     Vec2 lightRaster;
     const bool off = !scene.camera.rasterPosition(scene.lights[0].position, lightRaster);
 
-    const auto reference = [](const std::string& algo) -> std::string {
+    // What an integrator carries (Integrator::carriedPaths): every path, or the paths of an
+    // expression (lesson 11's classics: pt filtered to it is the reference), or "" when no
+    // expression says which (then only finite and not black, as the biased ones).
+    const auto carried = [&](const std::string& algo) { return makeIntegrator(algo)->carriedPaths(scene); };
+    const auto reference = [&](const std::string& algo) -> std::string {
         if (algo.rfind("path-", 0) == 0) return "path-s1";
         if (algo.rfind("direct-", 0) == 0) return "direct-light";
+        const std::string paths = carried(algo);
+        if (paths != Integrator::kAllPaths && !paths.empty()) return "pt --paths " + paths;
         return "pt";
     };
     const auto black = [](const std::string& algo) {
@@ -371,7 +388,9 @@ TEST_CASE(
     // the density estimate's blur (lesson 8, Eq. 8.12), so it is not t-tested here, only checked
     // for a finite, non-black image (lesson 8's graded tests bound the bias of pm, pm-ic and ppm
     // on the Cornell box).
-    const auto biased = [](const std::string& algo) { return algo == "pm" || algo == "pm-ic" || algo == "ppm"; };
+    const auto biased = [&](const std::string& algo) {
+        return algo == "pm" || algo == "pm-ic" || algo == "ppm" || carried(algo).empty();
+    };
     struct Estimate {
         stats::Welford w;
         uint64_t bad = 0;
