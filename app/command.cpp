@@ -179,7 +179,8 @@ void listAlgorithms(std::ostream& os) {
     os << "  (* also renders only the paths of an expression: --paths)\n";
 }
 
-const char* const kPathsHelp = R"(  --paths EXPR       render only the paths Heckbert's expression EXPR matches (lesson 11): the
+const char* const kPathsHelp =
+    R"(  --paths EXPR       render only the paths Heckbert's expression EXPR matches (lesson 11): the
                      types of a path's vertices from the light to the eye: L light, D diffuse,
                      G glossy (Phong), S specular (mirror, glass), E eye; . any type, [DS] one
                      of, [^S] any but, ( ), | or, postfix * + ? (zero or more, one or more, zero
@@ -193,9 +194,7 @@ const char* const kPathsHelp = R"(  --paths EXPR       render only the paths Hec
 PathExpression parsePathsOption(const std::string& text) {
     try {
         return PathExpression(text);
-    } catch (const PathExpressionError& e) {
-        throw UsageError("option --paths: " + e.pointed("  "));
-    }
+    } catch (const PathExpressionError& e) { throw UsageError("option --paths: " + e.pointed("  ")); }
 }
 
 void requirePathFilter(const std::string& algo, const PathExpression& paths) {

@@ -29,8 +29,8 @@ int main(int argc, char** argv) {
         // A message of several lines (an expression and a caret under its fault) keeps them
         // together and says the rest on a line of its own.
         const std::string what = e.what();
-        std::cerr << "pathspace: " << what
-                  << (what.find('\n') == std::string::npos ? " " : "\n") << "(run 'pathspace --help' for usage)\n";
+        std::cerr << "pathspace: " << what << (what.find('\n') == std::string::npos ? " " : "\n")
+                  << "(run 'pathspace --help' for usage)\n";
         return 2;
     } catch (const ps::InputError& e) {
         std::cerr << "pathspace: error: " << e.what() << "\n";

@@ -79,10 +79,10 @@ bool honoursPaths(const std::string& name);
 std::unique_ptr<Integrator> makeIntegrator(const std::string& name, const PathExpression* paths);
 
 // In a lesson's .cpp at namespace scope: Type has a constructor Type(const PathExpression&).
-#define PS_REGISTER_PATH_FILTER(Type, name)                                                                        \
-    static const bool psPathFilter_##Type = ::ps::registerPathFilter(                                             \
-        name, [](const ::ps::PathExpression& paths) -> std::unique_ptr<::ps::Integrator> {                        \
-            return std::make_unique<Type>(paths);                                                                  \
+#define PS_REGISTER_PATH_FILTER(Type, name)                                                                         \
+    static const bool psPathFilter_##Type =                                                                         \
+        ::ps::registerPathFilter(name, [](const ::ps::PathExpression& paths) -> std::unique_ptr<::ps::Integrator> { \
+            return std::make_unique<Type>(paths);                                                                   \
         })
 
 }  // namespace ps

@@ -170,8 +170,9 @@ private:
 
     [[noreturn]] void unknown(size_t at, const std::string& where = "") const {
         const char c = text_[at];
-        std::string problem = "'" + std::string(1, c) + "' is not a vertex type" + where +
-                              " (types: L light, E eye, D diffuse, G glossy, S specular; operators: | * + ? . ( ) [ ] ^)";
+        std::string problem =
+            "'" + std::string(1, c) + "' is not a vertex type" + where +
+            " (types: L light, E eye, D diffuse, G glossy, S specular; operators: | * + ? . ( ) [ ] ^)";
         if (typeOf(char(c - 'a' + 'A')) >= 0 && c >= 'a' && c <= 'z')
             problem = "'" + std::string(1, c) + "' is not a vertex type" + where + ": the types are upper case ('" +
                       std::string(1, char(c - 'a' + 'A')) + "')";
@@ -202,9 +203,11 @@ StateSet closure(const Nfa& nfa, StateSet set) {
 
 PathExpressionError::PathExpressionError(const std::string& expression_, size_t column_, const std::string& problem_)
     : std::runtime_error(problem_ + (column_ == std::string::npos ? std::string()
-                                                                    : " (character " + std::to_string(column_ + 1) +
-                                                                          " of '" + expression_ + "')")),
-      expression(expression_), problem(problem_), column(column_) {}
+                                                                  : " (character " + std::to_string(column_ + 1) +
+                                                                        " of '" + expression_ + "')")),
+      expression(expression_),
+      problem(problem_),
+      column(column_) {}
 
 std::string PathExpressionError::pointed(const std::string& indent) const {
     std::string s = problem + "\n" + indent + expression;
@@ -217,9 +220,9 @@ PathExpression::PathExpression(const std::string& text) : text_(text) {
     Nfa nfa;
     const Fragment whole = Parser(text, nfa).parse();
     const auto tooComplex = [&]() {
-        throw PathExpressionError(text, std::string::npos,
-                                  "the expression needs more than " + std::to_string(kMaxStates) +
-                                      " automaton states: write it more simply");
+        throw PathExpressionError(
+            text, std::string::npos,
+            "the expression needs more than " + std::to_string(kMaxStates) + " automaton states: write it more simply");
     };
 
     // 2. The subset construction (Eq. 11.3): a DFA state is the set of NFA states the NFA can be
@@ -347,8 +350,9 @@ PathExpression::PathExpression(const std::string& text) : text_(text) {
 
     if (!matchesSome())
         throw PathExpressionError(text, std::string::npos,
-                                  "'" + text + "' matches no path: every path is L(D|G|S)*E, from the light (L) "
-                                               "to the eye (E)");
+                                  "'" + text +
+                                      "' matches no path: every path is L(D|G|S)*E, from the light (L) "
+                                      "to the eye (E)");
 }
 
 bool PathExpression::matches(const std::vector<VertexType>& path) const {

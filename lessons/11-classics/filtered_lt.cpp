@@ -29,8 +29,8 @@ struct FilteredLightTracer : Integrator {
     std::vector<std::string> leftOut(const Scene& scene) const override {
         std::vector<std::string> lines = pathFilterLeftOut(paths, scene, "a light path is joined to the camera up to");
         if (scene.settings.prune && sceneCanMatch(paths, scene) && depth(scene) < scene.settings.maxDepth)
-            lines.push_back("light paths beyond " + std::to_string(depth(scene)) + " bounces: no longer path matches '" +
-                            paths.text() + "' on this scene");
+            lines.push_back("light paths beyond " + std::to_string(depth(scene)) +
+                            " bounces: no longer path matches '" + paths.text() + "' on this scene");
         return lines;
     }
     std::string carriedPaths(const Scene&) const override { return paths.text(); }

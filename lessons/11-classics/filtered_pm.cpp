@@ -68,7 +68,8 @@ struct FilteredPhotonMapper : Integrator {
     PathExpression paths;
 
     std::vector<std::string> leftOut(const Scene& scene) const override {
-        std::vector<std::string> lines = pathFilterLeftOut(paths, scene, "a photon path or a camera walk ends at the vertex");
+        std::vector<std::string> lines =
+            pathFilterLeftOut(paths, scene, "a photon path or a camera walk ends at the vertex");
         if (scene.settings.prune && !scene.caps.hasDeltaBSDF())
             lines.push_back("the caustic map: no specular surface, so no photon path L S+ D (lesson 8, Eq. 8.2)");
         return lines;
@@ -106,8 +107,8 @@ struct FilteredPhotonMapper : Integrator {
     }
 
     // pm's tracePhotonMap, into one map per state (photons in path order within each).
-    StateMaps traceMaps(const Scene& scene, MapKind kind, int emitted, int maxDepth, uint64_t seed,
-                        uint32_t iteration, SampleStats& stats) const {
+    StateMaps traceMaps(const Scene& scene, MapKind kind, int emitted, int maxDepth, uint64_t seed, uint32_t iteration,
+                        SampleStats& stats) const {
         std::vector<std::vector<TypedPhoton>> perTask(size_t(taskCount(emitted)));
         runTasks(emitted, seed, iteration, nullptr, 0.0f, stats, [&](int, Rng& rng, Task& task) {
             tracePhotonPath(scene, rng, maxDepth, kind, emitted, perTask[task.index]);

@@ -32,8 +32,8 @@ std::vector<std::string> pathFilterLeftOut(const PathExpression& paths, const Sc
             " where no path through it can match any more (a dead state, Eq. 11.6)"};
 }
 
-bool bptPathMatches(const PathExpression& paths, const Scene& scene, const Subpath& light, const Subpath& camera,
-                    int s, int t) {
+bool bptPathMatches(const PathExpression& paths, const Scene& scene, const Subpath& light, const Subpath& camera, int s,
+                    int t) {
     // The light prefix, forward from L: y_0 .. y_{s-1}, or for s = 0 the emitter z_{t-1} alone.
     PathExpression::State q = paths.step(paths.start(), VertexType::L);
     for (int i = 1; i < s; ++i) q = paths.step(q, surfaceType(scene, light[size_t(i)].sp));

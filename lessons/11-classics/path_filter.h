@@ -49,7 +49,7 @@ std::vector<std::string> pathFilterLeftOut(const PathExpression& paths, const Sc
 // Whether bpt's technique (s, t) joins the light subpath's first s vertices and the camera
 // subpath's first t into a path that matches (Eq. 11.5): y_0 (or, for s = 0, z_{t-1}) is L, the
 // pinhole z_0 is E, the vertices between are typed by surfaceType. Lesson 7's BptOptions::pathTest.
-bool bptPathMatches(const PathExpression& paths, const Scene& scene, const Subpath& light, const Subpath& camera,
-                    int s, int t);
+bool bptPathMatches(const PathExpression& paths, const Scene& scene, const Subpath& light, const Subpath& camera, int s,
+                    int t);
 
 }  // namespace ps

@@ -35,18 +35,19 @@ inline double alpha() { return ps::testalpha::perTest(kStatisticalTestsPaths); }
 // One material of every kind, an area light whose surface is the loader's black "(emitter)", a
 // white quad that emits too, a point light and the background.
 inline ps::Scene everyKind() {
-    return ps::parseScene("camera eye 0 1 -4  target 0 0.5 0  fov 45  resolution 8 8\n"
-                          "material white  diffuse albedo 0.8 0.8 0.8\n"
-                          "material gloss  phong albedo 0.5 0.5 0.5  exponent 20\n"
-                          "material flat   phong albedo 0.5 0.5 0.5  exponent 0\n"
-                          "material chrome mirror albedo 0.9 0.9 0.9\n"
-                          "material glass  dielectric ior 1.5\n"
-                          "quad -2 0 -2  -2 0 2  2 0 2  2 0 -2  material white\n"              // floor
-                          "quad -0.5 2 -0.5  0.5 2 -0.5  0.5 2 0.5  -0.5 2 0.5  emission 5 5 5\n"  // lamp
-                          "quad -2 0 2  2 0 2  2 2 2  -2 2 2  material white  emission 1 1 1\n"    // glowing wall
-                          "pointlight position 0 1.5 0  intensity 3 3 3\n"
-                          "background radiance 0.2 0.2 0.2\n",
-                          "every-kind.scene");
+    return ps::parseScene(
+        "camera eye 0 1 -4  target 0 0.5 0  fov 45  resolution 8 8\n"
+        "material white  diffuse albedo 0.8 0.8 0.8\n"
+        "material gloss  phong albedo 0.5 0.5 0.5  exponent 20\n"
+        "material flat   phong albedo 0.5 0.5 0.5  exponent 0\n"
+        "material chrome mirror albedo 0.9 0.9 0.9\n"
+        "material glass  dielectric ior 1.5\n"
+        "quad -2 0 -2  -2 0 2  2 0 2  2 0 -2  material white\n"                  // floor
+        "quad -0.5 2 -0.5  0.5 2 -0.5  0.5 2 0.5  -0.5 2 0.5  emission 5 5 5\n"  // lamp
+        "quad -2 0 2  2 0 2  2 2 2  -2 2 2  material white  emission 1 1 1\n"    // glowing wall
+        "pointlight position 0 1.5 0  intensity 3 3 3\n"
+        "background radiance 0.2 0.2 0.2\n",
+        "every-kind.scene");
 }
 
 inline int materialIndex(const ps::Scene& scene, const std::string& name) {

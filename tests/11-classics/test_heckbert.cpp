@@ -56,9 +56,10 @@ TEST_CASE("vertexType: x_0 is L whatever the light and its surface's material; t
     for (const auto& l : lights) {
         const ps::Path x = {l.light, floor, eye};
         const VertexType t0 = ps::vertexType(scene, x, 0), t2 = ps::vertexType(scene, x, 2);
-        CHECK_MESSAGE(t0 == VertexType::L, "x_0 on " << l.what << ": expected L (the path's light, by its place "
-                                                                  "in the path), got "
-                                                      << letter(t0));
+        CHECK_MESSAGE(t0 == VertexType::L, "x_0 on " << l.what
+                                                     << ": expected L (the path's light, by its place "
+                                                        "in the path), got "
+                                                     << letter(t0));
         CHECK_MESSAGE(t2 == VertexType::E,
                       "x_2, the pinhole, of a path L D E: expected E (the eye, by its place), got " << letter(t2));
         const VertexType t1 = ps::vertexType(scene, x, 1);
@@ -71,16 +72,19 @@ TEST_CASE("vertexType: a vertex in the middle of a path on a surface that emits 
     const int wall = lightIndex(scene, ps::LightKind::Area, true);
     // The lamp's light reaches the glowing white wall, which reflects it to the camera: the wall
     // is not the path's light (x_0 is the lamp), it is a diffuse bounce that happens to emit.
-    const ps::Path x = {onAreaLight(scene, false), surface(scene, "white", Vec3(0, 1, 2), wall), ps::cameraVertex(scene)};
+    const ps::Path x = {onAreaLight(scene, false), surface(scene, "white", Vec3(0, 1, 2), wall),
+                        ps::cameraVertex(scene)};
     const VertexType t = ps::vertexType(scene, x, 1);
-    CHECK_MESSAGE(t == VertexType::D, "x_1 on the emitting white wall, between the lamp (x_0) and the eye: expected D "
-                                      "(it scatters the lamp's light; only x_0 is the path's light), got "
-                                          << letter(t));
+    CHECK_MESSAGE(t == VertexType::D,
+                  "x_1 on the emitting white wall, between the lamp (x_0) and the eye: expected D "
+                  "(it scatters the lamp's light; only x_0 is the path's light), got "
+                      << letter(t));
     const ps::Path y = {onPointLight(scene), surface(scene, "chrome", Vec3(1, 0.5f, 0)),
                         surface(scene, "white", Vec3(0, 1, 2), wall), surface(scene, "gloss", Vec3(-1, 0.5f, 0)),
                         ps::cameraVertex(scene)};
-    CHECK_MESSAGE(byVertex(scene, y) == "LSDGE",
-                  "point light, mirror, the emitting white wall, Phong, eye: expected LSDGE, got " << byVertex(scene, y));
+    CHECK_MESSAGE(
+        byVertex(scene, y) == "LSDGE",
+        "point light, mirror, the emitting white wall, Phong, eye: expected LSDGE, got " << byVertex(scene, y));
 }
 
 TEST_CASE("pathString: the letters from the light to the eye (LSDE, LDSSE, LGE, LE) [2 pts]") {
@@ -88,7 +92,8 @@ TEST_CASE("pathString: the letters from the light to the eye (LSDE, LDSSE, LGE, 
     const ps::PathVertex eye = ps::cameraVertex(scene);
     const ps::PathVertex floor = surface(scene, "white", Vec3(0.3f, 0, 0.2f));
     const ps::PathVertex mirror = surface(scene, "chrome", Vec3(1, 0.5f, 0));
-    const ps::PathVertex glassIn = surface(scene, "glass", Vec3(0, 0.6f, 0)), glassOut = surface(scene, "glass", Vec3(0, 0.4f, 0));
+    const ps::PathVertex glassIn = surface(scene, "glass", Vec3(0, 0.6f, 0)),
+                         glassOut = surface(scene, "glass", Vec3(0, 0.4f, 0));
     const ps::PathVertex gloss = surface(scene, "gloss", Vec3(-1, 0.5f, 0));
     const struct {
         ps::Path x;
@@ -106,7 +111,8 @@ TEST_CASE("pathString: the letters from the light to the eye (LSDE, LDSSE, LGE, 
         std::string reversed(c.want);
         std::reverse(reversed.begin(), reversed.end());
         CHECK_MESSAGE(got == c.want, c.what << ": expected '" << c.want << "' (x_0, the light, first), got '" << got
-                                            << "'" << (got == reversed ? " (reversed: Heckbert reads from the light)" : ""));
+                                            << "'"
+                                            << (got == reversed ? " (reversed: Heckbert reads from the light)" : ""));
     }
 }
 

@@ -11,8 +11,9 @@
 
 using namespace lesson11paths;
 
-TEST_CASE("whitted: equals pt filtered to L[DG]S*E|LS*E on the Cornell box with point lights, a mirror, glass and "
-          "Phong (z-test) [3 pts]") {
+TEST_CASE(
+    "whitted: equals pt filtered to L[DG]S*E|LS*E on the Cornell box with point lights, a mirror, glass and "
+    "Phong (z-test) [3 pts]") {
     const ps::Scene scene = loadSceneAt("scenes/cornell-whitted.scene", 24, 24);
     REQUIRE(scene.settings.maxDepth == 6);
     REQUIRE(ps::isBlack(scene.settings.ambient));
@@ -20,7 +21,7 @@ TEST_CASE("whitted: equals pt filtered to L[DG]S*E|LS*E on the Cornell box with 
     const ps::Image refVar = ps::readPFM(sourcePath("tests/11-classics/data/cornell-whitted-24-variance.pfm"));
     const ps::testrender::Render w = ps::testrender::render(scene, "whitted", 256, ps::testseed::seed(1111));
     CHECK_MESSAGE(w.stats.bad() == 0, "whitted: expected no NaN or Inf sample, got " << w.stats.nan << " NaN and "
-                                                                                       << w.stats.inf << " Inf");
+                                                                                     << w.stats.inf << " Inf");
     const double total = ps::testrender::total(w.mean), refTotal = ps::testrender::total(ref);
     const ps::stats::ZTestResult z = ps::stats::zTestImages(w.mean, w.variance, ref, refVar, alpha());
     CHECK_MESSAGE(z.passed, "whitted (256 spp) against pt filtered to L[DG]S*E|LS*E (a = yours, b = the reference): "

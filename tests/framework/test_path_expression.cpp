@@ -165,8 +165,9 @@ TEST_CASE("paths: the automaton accepts exactly what an independent matcher acce
     }
 }
 
-TEST_CASE("paths: the backward automaton reads the reversed string, and every split of a path joins exactly when it "
-          "matches") {
+TEST_CASE(
+    "paths: the backward automaton reads the reversed string, and every split of a path joins exactly when it "
+    "matches") {
     const std::vector<std::string> mids = allStrings("DGS", 5);
     for (const char* text : kExpressions) {
         const PathExpression e(text);
@@ -191,8 +192,8 @@ TEST_CASE("paths: live states are those from which some path can still match (br
     const std::vector<std::string> prefixes = allStrings("DGS", 4), completions = allStrings("DGS", 7);
     for (const char* text : kExpressions) {
         const PathExpression e(text);
-        REQUIRE_MESSAGE(e.states() <= 8, "'" << text << "': completions of up to 7 letters do not cover "
-                                               << e.states() << " states");
+        REQUIRE_MESSAGE(e.states() <= 8,
+                        "'" << text << "': completions of up to 7 letters do not cover " << e.states() << " states");
         for (const std::string& mid : prefixes) {
             // Forward: the light prefix L mid.
             bool can = false;
@@ -217,7 +218,7 @@ TEST_CASE("paths: the longest matching path and whether any path matches, per se
     CHECK(caustic.longestInterior(TypeSet(D | S)) == PathExpression::kUnbounded);
     CHECK(direct.longestInterior(D) == 1);  // without S the chain S* is empty
     CHECK(caustic.matchesSome(TypeSet(D | S)));
-    CHECK_FALSE(caustic.matchesSome(TypeSet(D | G)));  // no mirror or glass: no caustic
+    CHECK_FALSE(caustic.matchesSome(TypeSet(D | G)));     // no mirror or glass: no caustic
     CHECK_FALSE(caustic.matchesSome(TypeSet(D | S), 1));  // a caustic needs two interior vertices
     CHECK(caustic.matchesSome(TypeSet(D | S), 2));
     CHECK_FALSE(lde.matchesSome(G));

@@ -125,11 +125,12 @@ TEST_CASE("paths filter: an expression matching every path renders pt, bpt and p
     const Scene scene = spheres();
     for (const char* algo : {"pt", "bpt", "pm"})
         for (const char* every : {"L.*E", "L(D|G|S)*E"}) {
-            const Result plain = renderWith(scene, algo, "", 2, 5, 2), filtered = renderWith(scene, algo, every, 2, 5, 2);
-            CHECK_MESSAGE(sameBits(plain.mean, filtered.mean),
-                          algo << " --paths '" << every << "' differs from " << algo << " (image sums "
-                               << fmt::num(total(filtered.mean), 12) << " and " << fmt::num(total(plain.mean), 12)
-                               << ")");
+            const Result plain = renderWith(scene, algo, "", 2, 5, 2),
+                         filtered = renderWith(scene, algo, every, 2, 5, 2);
+            CHECK_MESSAGE(sameBits(plain.mean, filtered.mean), algo << " --paths '" << every << "' differs from "
+                                                                    << algo << " (image sums "
+                                                                    << fmt::num(total(filtered.mean), 12) << " and "
+                                                                    << fmt::num(total(plain.mean), 12) << ")");
         }
 }
 
@@ -163,13 +164,14 @@ TEST_CASE("paths filter: lt and bpt agree with pt under the same expression (per
         const char* b;
         int sppB;
     } cases[] = {
-        {"LDE", "lt", 1024, "pt", 1024},      {"LDE", "bpt", 256, "pt", 1024},     {"LD+DE", "lt", 1024, "pt", 1024},
-        {"LD+DE", "bpt", 256, "pt", 1024},    {"L[DG]+S+E", "bpt", 256, "pt", 1024}, {"LS+DE", "lt", 2048, "bpt", 512},
+        {"LDE", "lt", 1024, "pt", 1024},   {"LDE", "bpt", 256, "pt", 1024},       {"LD+DE", "lt", 1024, "pt", 1024},
+        {"LD+DE", "bpt", 256, "pt", 1024}, {"L[DG]+S+E", "bpt", 256, "pt", 1024}, {"LS+DE", "lt", 2048, "bpt", 512},
     };
     const double alpha = stats::sidak(0.01, int(std::size(cases)));
     uint64_t seed = testseed::seed(100);
     for (const auto& c : cases) {
-        const Result a = renderWith(scene, c.a, c.expr, c.sppA, ++seed, 2), b = renderWith(scene, c.b, c.expr, c.sppB, ++seed, 2);
+        const Result a = renderWith(scene, c.a, c.expr, c.sppA, ++seed, 2),
+                     b = renderWith(scene, c.b, c.expr, c.sppB, ++seed, 2);
         CHECK_MESSAGE((a.stats.bad() == 0 && b.stats.bad() == 0), c.expr << ": NaN/Inf samples");
         REQUIRE_MESSAGE(total(b.mean) > 0.0, c.b << " --paths '" << c.expr << "' renders black");
         const stats::ZTestResult z = stats::zTestImages(a.mean, a.variance, b.mean, b.variance, alpha);
@@ -178,17 +180,17 @@ TEST_CASE("paths filter: lt and bpt agree with pt under the same expression (per
     }
 }
 
-TEST_CASE("paths filter: the caustics (LS+DE) are 0 where the eye meets a specular surface first, not 0 on the "
-          "floor's caustic, and absent without specular surfaces") {
+TEST_CASE(
+    "paths filter: the caustics (LS+DE) are 0 where the eye meets a specular surface first, not 0 on the "
+    "floor's caustic, and absent without specular surfaces") {
     const Scene scene = spheres(24);
     const std::vector<bool> specularFirst = testrender::pixelsWhere(scene, true, [&](bool hit, const SurfacePoint& sp) {
         return hit && scene.materials[size_t(sp.material)].isDelta();
     });
     // The caustic under the glass sphere: the 4 brightest floor pixels of lt's LS+DE image.
     const Result ref = renderWith(scene, "lt", "LS+DE", 256, 41, 2);
-    const std::vector<bool> floorOnly = testrender::pixelsWhere(scene, true, [&](bool hit, const SurfacePoint& sp) {
-        return hit && sp.p.y < 1.0f;
-    });
+    const std::vector<bool> floorOnly =
+        testrender::pixelsWhere(scene, true, [&](bool hit, const SurfacePoint& sp) { return hit && sp.p.y < 1.0f; });
     std::vector<size_t> order;
     for (size_t i = 0; i < ref.mean.pixels.size(); ++i)
         if (floorOnly[i]) order.push_back(i);
@@ -202,11 +204,11 @@ TEST_CASE("paths filter: the caustics (LS+DE) are 0 where the eye meets a specul
         int nonZero = 0;
         for (size_t i = 0; i < r.mean.pixels.size(); ++i)
             if (specularFirst[i] && !isBlack(r.mean.pixels[i])) ++nonZero;
-        CHECK_MESSAGE(nonZero == 0, algo << " --paths LS+DE: " << nonZero
-                                         << " pixels whose first surface is specular are not black");
+        CHECK_MESSAGE(nonZero == 0,
+                      algo << " --paths LS+DE: " << nonZero << " pixels whose first surface is specular are not black");
         for (size_t j = 0; j < 4; ++j)
-            CHECK_MESSAGE(!isBlack(r.mean.pixels[order[j]]), algo << " --paths LS+DE: the caustic pixel " << order[j]
-                                                                  << " is black");
+            CHECK_MESSAGE(!isBlack(r.mean.pixels[order[j]]),
+                          algo << " --paths LS+DE: the caustic pixel " << order[j] << " is black");
     }
     const Scene box = testfiles::loadSceneAt("scenes/cornell-box.scene", 8, 8);
     for (const char* algo : {"pt", "lt", "bpt", "pm"}) {
@@ -254,15 +256,15 @@ TEST_CASE("paths filter: every algorithm honours an expression or refuses it, ne
             bool refused = false;
             try {
                 makeIntegrator(info.name, &e);
-            } catch (const InputError& err) {
-                refused = std::string(err.what()).find("--paths") != std::string::npos;
-            }
+            } catch (const InputError& err) { refused = std::string(err.what()).find("--paths") != std::string::npos; }
             CHECK_MESSAGE(refused, info.name << " neither honours --paths nor refuses it");
         }
     }
     for (const char* must : {"pt", "lt", "bpt", "bpt-balance", "bpt-full", "pm"})
-        CHECK_MESSAGE(std::find(honoured.begin(), honoured.end(), must) != honoured.end(), must << " has no filtered form");
-    for (const char* refuses : {"pssmlt", "mmlt", "pt-adrrs", "path-s1", "pt-nee", "pt-bsdf", "whitted", "ppm", "pm-ic"})
+        CHECK_MESSAGE(std::find(honoured.begin(), honoured.end(), must) != honoured.end(),
+                      must << " has no filtered form");
+    for (const char* refuses :
+         {"pssmlt", "mmlt", "pt-adrrs", "path-s1", "pt-nee", "pt-bsdf", "whitted", "ppm", "pm-ic"})
         CHECK_MESSAGE(std::find(honoured.begin(), honoured.end(), refuses) == honoured.end(),
                       refuses << " claims to honour --paths");
 }
