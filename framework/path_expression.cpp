@@ -1,5 +1,5 @@
 // Heckbert's path expressions: the parser, Thompson's NFA, the subset construction, Moore's
-// minimisation, and the backward automaton of sets (lesson 11, Eq. 11.2-11.6). See
+// minimisation, and the backward automaton of sets (lesson 11, Eq. 11.3-11.6). See
 // path_expression.h.
 #include "path_expression.h"
 #include <algorithm>
@@ -25,7 +25,7 @@ int typeOf(char c) {
 
 constexpr TypeSet kAllTypes = TypeSet((1u << kVertexTypes) - 1u);
 
-// Thompson's NFA (Eq. 11.2): every state has epsilon edges and at most one edge on a set of types.
+// Thompson's NFA: every state has epsilon edges and at most one edge on a set of types.
 struct Nfa {
     struct State {
         std::vector<int> eps;
@@ -216,7 +216,7 @@ std::string PathExpressionError::pointed(const std::string& indent) const {
 }
 
 PathExpression::PathExpression(const std::string& text) : text_(text) {
-    // 1. Thompson's NFA (Eq. 11.2).
+    // 1. Thompson's NFA.
     Nfa nfa;
     const Fragment whole = Parser(text, nfa).parse();
     const auto tooComplex = [&]() {

@@ -170,6 +170,31 @@ if wanted 10; then
   done_fig "$d/skylight-equal-time.png, skylight-convergence.svg, skylight-convergence.csv, skylight-efficiency.md"
 fi
 
+# lesson 11 (paths): pt split by Heckbert's path expressions on the Cornell spheres (LE, LDE, LD+DE
+# and L.*S.*E add up to every path, L.*E; LS+DE, the caustics, is part of the last), and Whitted
+# beside pt filtered to what Whitted carries and pt with every path, on the Cornell box lit by
+# point lights (lessons/11-classics README, "Expected output"; tools/strip.cpp labels them).
+if wanted 11; then
+  d="$(dest 11-classics)"; s="$(scene cornell-spheres 128)"
+  cmake --build "$build" --target strip >/dev/null
+  cells=()
+  for e in 'L.*E' LE LDE 'LD+DE' 'L.*S.*E' 'LS+DE'; do
+    f="$work/11-split-${#cells[@]}.pfm"
+    "$ps" render "$s" --algo pt --paths "$e" --spp "$(t 1024 4)" --seed 1 --out "$f" --no-progress >/dev/null 2>&1
+    cells+=("pt $e=$f")
+  done
+  "$build/strip" "$d/pt-split.png" "${cells[@]}"
+  done_fig "$d/pt-split.png"
+  s="$(scene cornell-whitted 128)"
+  "$ps" render "$s" --algo whitted --spp "$(t 64 2)" --seed 1 --out "$work/11-whitted.pfm" --no-progress >/dev/null 2>&1
+  "$ps" render "$s" --algo pt --paths 'L[DG]S*E' --spp "$(t 2048 4)" --seed 1 --out "$work/11-pt-whitted.pfm" \
+    --no-progress >/dev/null 2>&1
+  "$ps" render "$s" --algo pt --spp "$(t 2048 4)" --seed 1 --out "$work/11-pt.pfm" --no-progress >/dev/null 2>&1
+  "$build/strip" "$d/whitted-vs-pt.png" "whitted=$work/11-whitted.pfm" "pt L[DG]S*E=$work/11-pt-whitted.pfm" \
+    "pt L.*E=$work/11-pt.pfm"
+  done_fig "$d/whitted-vs-pt.png"
+fi
+
 # Every image a slide deck shows from a lesson folder must be one this script makes (so one command
 # remakes all of them); checked when every lesson was run.
 if [ ${#only[@]} -eq 0 ]; then

@@ -1,7 +1,8 @@
 // Text drawn into an image: the labels on the equal-time strip of `pathspace converge` and on
 // the cells of `pathspace pyramid`, so that a figure says what each image is. A 5 x 7 pixel font
-// of lower-case letters, digits and the signs labels use; an upper-case letter is drawn as its
-// lower case, any other character as an empty box. Each font pixel becomes scale x scale pixels.
+// of lower-case letters, digits, the signs labels use and the upper-case L, D, G, S, E of
+// Heckbert's path expressions (lesson 11); any other upper-case letter is drawn as its lower case,
+// any other character as an empty box. Each font pixel becomes scale x scale pixels.
 #pragma once
 #include <string>
 #include <vector>
