@@ -76,8 +76,8 @@ int runPyramid(const std::vector<std::string>& args) {
         opt.pathTest = [&](const Subpath& light, const Subpath& camera, int s, int t) {
             return bptPathMatches(*paths, scene, light, camera, s, t);
         };
-        for (const std::string& line :
-             pathFilterLeftOut(*paths, scene, "a light subpath is connected up to the vertex"))
+        for (const std::string& line : pathFilterLeftOut(
+                 *paths, scene, "a technique connects (traces its shadow ray) only where its path matches"))
             std::cerr << "pathspace: pyramid leaves out " << line << "\n";
     }
     const TechniqueImages t = renderTechniques(scene, maxLength, spp, seed, threads, opt);

@@ -23,7 +23,8 @@ struct FilteredBpt : Integrator {
 
     std::vector<std::string> leftOut(const Scene& scene) const override {
         std::vector<std::string> lines = bptLeftOut(scene, opt);
-        for (const std::string& l : pathFilterLeftOut(paths, scene, "a light subpath is connected up to the vertex"))
+        for (const std::string& l : pathFilterLeftOut(
+                 paths, scene, "a technique connects (traces its shadow ray) only where its path matches"))
             lines.push_back(l);
         return lines;
     }

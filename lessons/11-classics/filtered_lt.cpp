@@ -27,7 +27,9 @@ struct FilteredLightTracer : Integrator {
     }
 
     std::vector<std::string> leftOut(const Scene& scene) const override {
-        std::vector<std::string> lines = pathFilterLeftOut(paths, scene, "a light path is joined to the camera up to");
+        std::vector<std::string> lines = pathFilterLeftOut(
+            paths, scene,
+            "a light path is joined to the camera up to its last vertex from which a path can still match (Eq. 11.6)");
         if (scene.settings.prune && sceneCanMatch(paths, scene) && depth(scene) < scene.settings.maxDepth)
             lines.push_back("light paths beyond " + std::to_string(depth(scene)) +
                             " bounces: no longer path matches '" + paths.text() + "' on this scene");

@@ -68,8 +68,9 @@ struct FilteredPhotonMapper : Integrator {
     PathExpression paths;
 
     std::vector<std::string> leftOut(const Scene& scene) const override {
-        std::vector<std::string> lines =
-            pathFilterLeftOut(paths, scene, "a photon path or a camera walk ends at the vertex");
+        std::vector<std::string> lines = pathFilterLeftOut(
+            paths, scene,
+            "a photon path or a camera walk ends at its first vertex from which no path can match any more (a dead state, Eq. 11.6)");
         if (scene.settings.prune && !scene.caps.hasDeltaBSDF())
             lines.push_back("the caustic map: no specular surface, so no photon path L S+ D (lesson 8, Eq. 8.2)");
         return lines;

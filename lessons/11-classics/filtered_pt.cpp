@@ -26,7 +26,9 @@ struct FilteredPathTracer : PixelIntegrator {
     mutable std::atomic<uint64_t> walks{0}, ended{0};
 
     std::vector<std::string> leftOut(const Scene& scene) const override {
-        return pathFilterLeftOut(paths, scene, "a camera walk ends at the vertex");
+        return pathFilterLeftOut(
+            paths, scene,
+            "a camera walk ends at its first vertex from which no path can match any more (a dead state, Eq. 11.6)");
     }
     std::string carriedPaths(const Scene&) const override { return paths.text(); }
     std::vector<std::string> report() const override {

@@ -28,15 +28,17 @@ std::vector<std::string> pathFilterLeftOut(const PathExpression& paths, const Sc
                 " bounces over this scene's vertex types (" + (types.empty() ? std::string("none") : types) +
                 ") matches " + expr + " (lesson 11, Eq. 11.6): the image is black"};
     }
-    return {"paths that do not match " + expr + " (--paths: Heckbert's expression, lesson 11, Eq. 11.5); " + walk +
-            " where no path through it can match any more (a dead state, Eq. 11.6)"};
+    return {"paths that do not match " + expr + " (--paths: Heckbert's expression, lesson 11, Eq. 11.5); " + walk};
 }
 
 bool bptPathMatches(const PathExpression& paths, const Scene& scene, const Subpath& light, const Subpath& camera, int s,
                     int t) {
-    // The light prefix, forward from L: y_0 .. y_{s-1}, or for s = 0 the emitter z_{t-1} alone.
+    // The light prefix, forward from L: y_0 .. y_{s-1}, or for s = 0 the emitter z_{t-1} alone. A
+    // technique t = 0 (a light subpath that reaches a camera with a lens) ends on the eye: y_{s-1} is E.
     PathExpression::State q = paths.step(paths.start(), VertexType::L);
-    for (int i = 1; i < s; ++i) q = paths.step(q, surfaceType(scene, light[size_t(i)].sp));
+    const int lightEnd = t == 0 ? s - 1 : s;
+    for (int i = 1; i < lightEnd; ++i) q = paths.step(q, surfaceType(scene, light[size_t(i)].sp));
+    if (t == 0) return paths.accepting(paths.step(q, VertexType::E));
     if (!paths.live(q)) return false;
     // The camera prefix, backward from E: z_1 .. z_{t-1} (z_{t-2} when z_{t-1} is the light).
     PathExpression::State b = paths.backStep(paths.backStart(), VertexType::E);

@@ -43,12 +43,13 @@ TypeSet sceneTypes(const Scene& scene);
 bool sceneCanMatch(const PathExpression& paths, const Scene& scene);
 
 // The lines a filtered form prints through Integrator::leftOut (empty with --no-prune): what the
-// expression leaves out on this scene. `walk` says where this algorithm stops early.
+// expression leaves out on this scene. `walk` says how this algorithm leaves out what cannot match.
 std::vector<std::string> pathFilterLeftOut(const PathExpression& paths, const Scene& scene, const std::string& walk);
 
 // Whether bpt's technique (s, t) joins the light subpath's first s vertices and the camera
 // subpath's first t into a path that matches (Eq. 11.5): y_0 (or, for s = 0, z_{t-1}) is L, the
-// pinhole z_0 is E, the vertices between are typed by surfaceType. Lesson 7's BptOptions::pathTest.
+// camera z_0 (or, for t = 0, y_{s-1} on a lens) is E, the vertices between are typed by
+// surfaceType. Lesson 7's BptOptions::pathTest.
 bool bptPathMatches(const PathExpression& paths, const Scene& scene, const Subpath& light, const Subpath& camera, int s,
                     int t);
 
