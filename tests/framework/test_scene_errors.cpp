@@ -279,6 +279,7 @@ TEST_CASE("scene errors: other values out of their range") {
     expectLine3("mesh x.obj material w scale 0", {"'scale' must be positive"});
     expectLine3("render spp 0", {"'spp' must be at least 1"});
     expectLine3("render maxdepth -1", {"'maxdepth' must not be negative"});
+    expectLine3("render ambient 0.1 -0.1 0", {"'ambient' must not be negative"});
 }
 
 TEST_CASE("scene errors: values too large for float light transport") {
