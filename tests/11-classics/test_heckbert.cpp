@@ -41,7 +41,7 @@ TEST_CASE("scatteringType: Lambertian D, Phong G (exponent 0: Lambertian, D), mi
     }
 }
 
-TEST_CASE("vertexType: x_0 is L whatever the light and its surface's material; the camera is E [2 pts]") {
+TEST_CASE("vertexType: x_0 is L whatever the light and its surface's material, the camera is E [2 pts]") {
     const ps::Scene scene = everyKind();
     const ps::PathVertex eye = ps::cameraVertex(scene), floor = surface(scene, "white", Vec3(0.3f, 0, 0.2f));
     const struct {

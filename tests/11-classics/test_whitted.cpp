@@ -66,7 +66,7 @@ TEST_CASE("whittedDirect: a diffuse floor under a point light: I cos / d^2 albed
     }
 }
 
-TEST_CASE("whittedDirect: a Phong floor reflects with its BSDF towards the viewer; two point lights add [1 pt]") {
+TEST_CASE("whittedDirect: a Phong floor reflects with its BSDF towards the viewer, and two point lights add [1 pt]") {
     const ps::Scene scene =
         litFloor("pointlight position 3 1 -1  intensity 2 2 2\n", "phong albedo 0.7 0.6 0.5  exponent 8");
     const ps::Material& m = scene.materials[0];
