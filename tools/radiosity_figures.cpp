@@ -127,8 +127,8 @@ int makePatches(const Settings& s) {
       << " s). Columns: quad index, its scene file line, mean radiance r g b, standard error of the mean r g b.\n";
     char buf[512];
     for (size_t q = 0; q < pt.size(); ++q) {
-        std::snprintf(buf, sizeof buf, "%zu %d  %.9g %.9g %.9g  %.6g %.6g %.6g\n", q, scene.quads[q].line,
-                      pt[q].mean.r, pt[q].mean.g, pt[q].mean.b, pt[q].stdError.r, pt[q].stdError.g, pt[q].stdError.b);
+        std::snprintf(buf, sizeof buf, "%zu %d  %.9g %.9g %.9g  %.6g %.6g %.6g\n", q, scene.quads[q].line, pt[q].mean.r,
+                      pt[q].mean.g, pt[q].mean.b, pt[q].stdError.r, pt[q].stdError.g, pt[q].stdError.b);
         f << buf;
     }
     std::printf("radiosity_figures: wrote %s (%.1f s)\n", s.makePatches.c_str(), sec);

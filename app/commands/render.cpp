@@ -65,8 +65,7 @@ int runRender(const std::vector<std::string>& args) {
             const size_t x = v.find('x');
             elements[0] = parseWithin<int>(a, v.substr(0, x), 1, kMaxElements);
             elements[1] = x == std::string::npos ? elements[0] : parseWithin<int>(a, v.substr(x + 1), 1, kMaxElements);
-        }
-        else if (!a.empty() && a[0] == '-') throw UsageError("unknown option '" + a + "'");
+        } else if (!a.empty() && a[0] == '-') throw UsageError("unknown option '" + a + "'");
         else if (scenePath.empty()) scenePath = a;
         else throw UsageError("more than one scene given ('" + scenePath + "' and '" + a + "')");
     }

@@ -14,6 +14,7 @@
 // (the side its normal points to); light that reaches the back of a reflecting quad is lost to
 // radiosity (the integrator reports how much; none in the Cornell box, whose quads face the room).
 #pragma once
+#include <algorithm>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -98,17 +99,23 @@ float pointFormFactor(const Vec3& x, const Vec3& nx, const Vec3& y, const Vec3& 
 // direction (2).
 float formFactor(const Scene& scene, const ElementMesh& mesh, int i, int j, int samples, Rng& rng);
 
-// Samples per form factor in the integrator.
+// Samples per form factor in the integrator: at least kFormFactorSamples, and at least
+// kRowSamples over a row of the N elements' form factors (ceil(kRowSamples / N) each), so that a
+// coarse mesh, whose few large elements share long edges (the noisiest pairs, Eq. 11.25), is
+// not noisier than a fine one.
 constexpr int kFormFactorSamples = 16;
+constexpr int kRowSamples = 16384;
+inline int formFactorSamples(int elements) {
+    return std::max(kFormFactorSamples, (kRowSamples + std::max(elements, 1) - 1) / std::max(elements, 1));
+}
 
-// Row i of the form factors (plumbing: radiosity_solver.cpp): F[j] = F_ij for every element j,
-// each formFactor(..., kFormFactorSamples, rng) with rng = taskRng(seed, i, j), in the
+// Row i of the form factors (plumbing: radiosity_integrator.cpp): F[j] = F_ij for every element
+// j, each formFactor(..., formFactorSamples(N), rng) with rng = taskRng(seed, i, j), in the
 // framework's task loop: the same numbers for any number of threads, and the same row every time
 // element i shoots. F_ij = 0 without a ray where it is 0 exactly: j on i's own quad (a quad is
 // flat), or j wholly behind i's plane, or i wholly behind j's. `back` is the fraction of the
 // power leaving i that arrives at the back of a reflecting quad, which one-sided elements lose
-// (kFormFactorSamples cosine rays per element of the row's size... see the .cpp). stats counts
-// the rays.
+// (estimated with 4 kFormFactorSamples cosine rays from i). stats counts the rays.
 struct FormFactorRow {
     std::vector<float> F;
     float back = 0.0f;

@@ -42,10 +42,11 @@ FormFactorRow formFactorRow(const Scene& scene, const ElementMesh& mesh, int i, 
     FormFactorRow row;
     row.F.assign(size_t(mesh.size()), 0.0f);
     const Element& ei = mesh[i];
+    const int samples = formFactorSamples(mesh.size());
     runTasks(mesh.size(), seed, uint32_t(i), nullptr, 1.0f, stats, [&](int j, Rng& rng, Task&) {
         const Element& ej = mesh[j];
         if (ej.quad == ei.quad || behind(ej, ei) || behind(ei, ej)) return;
-        row.F[size_t(j)] = formFactor(scene, mesh, i, j, kFormFactorSamples, rng);
+        row.F[size_t(j)] = formFactor(scene, mesh, i, j, samples, rng);
     });
     // The power lost to the backs of reflecting quads: cosine rays from element i (Eq. 11.24:
     // the fraction of them that arrive somewhere is the form factor to there).
@@ -124,8 +125,7 @@ Color RadiosityIntegrator::radiance(int element) const {
     return B / kPi;
 }
 
-void RadiosityIntegrator::renderIteration(const Scene& scene, uint32_t, uint64_t seed, Image& out,
-                                          SampleStats& stats) {
+void RadiosityIntegrator::renderIteration(const Scene& scene, uint32_t, uint64_t seed, Image& out, SampleStats& stats) {
     shootSteps(scene, scene.settings.shots, seed, stats);
     if (ambient_ && solution_.unshot.size() == size_t(mesh_.size())) ambientTerm_ = ambientRadiosity(mesh_, solution_);
     constexpr int m = kRadiosityPixelSamples;
@@ -147,7 +147,7 @@ std::vector<std::string> RadiosityIntegrator::report() const {
     std::vector<std::string> lines;
     std::ostringstream s;
     s << mesh_.size() << " elements (" << mesh_.nu() << " x " << mesh_.nv() << " per quad), " << solution_.shots
-      << " shots, " << rowsComputed_ << " rows of form factors computed (" << kFormFactorSamples
+      << " shots, " << rowsComputed_ << " rows of form factors computed (" << formFactorSamples(mesh_.size())
       << " samples each); unshot power " << unshotFraction(mesh_, solution_) << " of the emitted (stops below "
       << kStopResidual << ")";
     lines.push_back(s.str());

@@ -30,7 +30,8 @@ double cross2(const glm::dvec2& a, const glm::dvec2& b) { return a.x * b.y - a.y
 
 // The quad's normal: its first triangle's (the scene's, Scene::Quad).
 DVec3 quadNormal(const Quad& q) {
-    return glm::normalize(glm::cross(DVec3(q.corners[1]) - DVec3(q.corners[0]), DVec3(q.corners[2]) - DVec3(q.corners[0])));
+    return glm::normalize(
+        glm::cross(DVec3(q.corners[1]) - DVec3(q.corners[0]), DVec3(q.corners[2]) - DVec3(q.corners[0])));
 }
 
 // Whether the quad is convex: its corners turn the same way (seen along its normal) at all four.
@@ -50,7 +51,8 @@ glm::dvec2 inverseBilinear(const Quad& q, const DVec3& p) {
     const DVec3 o(q.corners[0]);
     const DVec3 e1 = glm::normalize(DVec3(q.corners[1]) - o), e2 = glm::cross(n, e1);
     auto flat = [&](const DVec3& x) { return glm::dvec2(glm::dot(x - o, e1), glm::dot(x - o, e2)); };
-    const glm::dvec2 a(0.0), b = flat(DVec3(q.corners[1])), c = flat(DVec3(q.corners[2])), d = flat(DVec3(q.corners[3]));
+    const glm::dvec2 a(0.0), b = flat(DVec3(q.corners[1])), c = flat(DVec3(q.corners[2])),
+                             d = flat(DVec3(q.corners[3]));
     const glm::dvec2 e = b - a, f = d - a, g = a - b + c - d, h = flat(p) - a;
     // h = u e + v f + u v g; eliminating u gives k2 v^2 + k1 v + k0 = 0.
     const double k2 = cross2(g, f), k1 = cross2(e, f) + cross2(h, g), k0 = cross2(h, e);
@@ -71,10 +73,10 @@ glm::dvec2 inverseBilinear(const Quad& q, const DVec3& p) {
 
 std::string materialKind(BSDFKind k) {
     switch (k) {
-        case BSDFKind::Diffuse: return "diffuse";
-        case BSDFKind::Phong: return "phong";
-        case BSDFKind::Mirror: return "mirror";
-        case BSDFKind::Dielectric: return "dielectric";
+    case BSDFKind::Diffuse: return "diffuse";
+    case BSDFKind::Phong: return "phong";
+    case BSDFKind::Mirror: return "mirror";
+    case BSDFKind::Dielectric: return "dielectric";
     }
     return "unknown";
 }
@@ -109,7 +111,8 @@ void checkRadiosityScene(const Scene& scene) {
     }
     for (const Light& l : scene.lights) {
         if (l.kind == LightKind::Point)
-            throw InputError(path, l.line, std::string("a point light: ") + kWhat + " (a point has no area to be a patch)");
+            throw InputError(path, l.line,
+                             std::string("a point light: ") + kWhat + " (a point has no area to be a patch)");
         if (l.kind == LightKind::Background)
             throw InputError(path, l.line, std::string("a background light: ") + kWhat);
     }

@@ -28,7 +28,8 @@ std::vector<PatchEstimate> patchRadiancePT(const Scene& scene, int samples, int 
     SampleStats stats;
     for (size_t qi = 0; qi < scene.quads.size(); ++qi) {
         const Quad& q = scene.quads[qi];
-        const Triangle t[2] = {scene.triangles[scene.prims[q.prim].index], scene.triangles[scene.prims[q.prim + 1].index]};
+        const Triangle t[2] = {scene.triangles[scene.prims[q.prim].index],
+                               scene.triangles[scene.prims[q.prim + 1].index]};
         const float p0 = t[0].area() / (t[0].area() + t[1].area());
         const size_t tasks = size_t(taskCount(samples));
         std::vector<DColor> sum(tasks, DColor(0.0)), sumSq(tasks, DColor(0.0));
