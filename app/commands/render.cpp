@@ -98,6 +98,7 @@ int runRender(const std::vector<std::string>& args) {
         integrator = makeIntegrator(algo);
     }
     if (spp == 0 && seconds == 0.0) spp = scene.settings.spp;
+    integrator->checkScene(scene);  // a refusal (InputError) before anything is printed
 
     Image ref;
     std::ofstream csv;
