@@ -180,9 +180,9 @@ inline ps::Scene closedBox(float sx, float sy, float sz, float a, float Le) {
     const std::string al = num(a) + " " + num(a) + " " + num(a);
     std::string opt = "material w";
     if (Le > 0.0f) opt += " emission " + num(Le) + " " + num(Le) + " " + num(Le);
-    std::string text = "camera eye " + num(sx / 2) + " " + num(sy / 2) + " " + num(sz / 2) + "  target " +
-                       num(sx / 2) + " " + num(sy / 2) + " " + num(sz) + "  fov 90  resolution 8 8\n" +
-                       "material w diffuse albedo " + al + "\n";
+    std::string text = "camera eye " + num(sx / 2) + " " + num(sy / 2) + " " + num(sz / 2) + "  target " + num(sx / 2) +
+                       " " + num(sy / 2) + " " + num(sz) + "  fov 90  resolution 8 8\n" + "material w diffuse albedo " +
+                       al + "\n";
     const float X = sx, Y = sy, Z = sz;
     text += "quad " + corners({{0, 0, 0}, {0, 0, Z}, {X, 0, Z}, {X, 0, 0}}) + opt + "\n";  // floor y = 0
     text += "quad " + corners({{0, Y, 0}, {X, Y, 0}, {X, Y, Z}, {0, Y, Z}}) + opt + "\n";  // ceiling y = Y

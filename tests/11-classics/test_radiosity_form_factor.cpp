@@ -35,11 +35,26 @@ TEST_CASE("radiosity: the point form factor g = A cos cos / (pi r^2), by hand (E
     const float s = std::sqrt(0.5f);
     const Case cases[] = {
         {{0, 0, 0}, {0, 0, 1}, {0, 0, 2}, {0, 0, -1}, 0.5f, 0.5 / (ps::kPi * 4.0), "facing each other at distance 2"},
-        {{0, 0, 0}, {0, 0, 1}, {1, 0, 1}, {-1, 0, 0}, 0.3f, 0.3 * 0.5 / (ps::kPi * 2.0),
+        {{0, 0, 0},
+         {0, 0, 1},
+         {1, 0, 1},
+         {-1, 0, 0},
+         0.3f,
+         0.3 * 0.5 / (ps::kPi * 2.0),
          "both cosines 1/sqrt(2), r^2 = 2"},
-        {{1, 2, 3}, {0, 0, 1}, {1, 2 + 3 * s, 3 + 3 * s}, {0, 0, -1}, 2.0f, 2.0 * 0.5 / (ps::kPi * 9.0),
+        {{1, 2, 3},
+         {0, 0, 1},
+         {1, 2 + 3 * s, 3 + 3 * s},
+         {0, 0, -1},
+         2.0f,
+         2.0 * 0.5 / (ps::kPi * 9.0),
          "both cosines 1/sqrt(2), r = 3"},
-        {{0, 0, 0}, {0, 0, 1}, {0, 0.5f, 2}, {0, 0, -1}, 1.0f, 1.0 * (2 / std::sqrt(4.25)) * (2 / std::sqrt(4.25)) / (ps::kPi * 4.25),
+        {{0, 0, 0},
+         {0, 0, 1},
+         {0, 0.5f, 2},
+         {0, 0, -1},
+         1.0f,
+         1.0 * (2 / std::sqrt(4.25)) * (2 / std::sqrt(4.25)) / (ps::kPi * 4.25),
          "cos = 2 / sqrt(4.25) at both ends"},
         {{0, 0, 0}, {0, 0, 1}, {0, 0, 2}, {0, 0, 1}, 0.5f, 0.0, "y faces away from x"},
         {{0, 0, 0}, {0, 0, -1}, {0, 0, 2}, {0, 0, -1}, 0.5f, 0.0, "x faces away from y"},
@@ -95,17 +110,18 @@ TEST_CASE(
                       << num(largest)
                       << ": area sampling without the balance heuristic has infinite variance here (Eq. 11.25)");
     const ps::stats::TTestResult t = ps::stats::tTest(w, closed, alpha(), 0.01);
-    CHECK_MESSAGE(t.passed, "formFactor between perpendicular unit squares with a common edge: expected the closed form "
-                                << num(closed) << ", got " << num(w.mean) << " (ratio " << num(w.mean / closed) << ")\n  "
-                                << t.report);
+    CHECK_MESSAGE(t.passed,
+                  "formFactor between perpendicular unit squares with a common edge: expected the closed form "
+                      << num(closed) << ", got " << num(w.mean) << " (ratio " << num(w.mean / closed) << ")\n  "
+                      << t.report);
 }
 
-TEST_CASE("radiosity: reciprocity A_1 F_12 = A_2 F_21 for perpendicular rectangles of areas 0.5 and 2 (t-tests, Eq. 11.22) [1 pt]") {
+TEST_CASE(
+    "radiosity: reciprocity A_1 F_12 = A_2 F_21 for perpendicular rectangles of areas 0.5 and 2 (t-tests, Eq. 11.22) [1 pt]") {
     // Common edge l = 1; rectangle 1 is 0.5 wide, rectangle 2 is 2 high.
     const double F12 = perpendicularRectangles(1, 0.5, 2), F21 = perpendicularRectangles(1, 2, 0.5);
-    REQUIRE_MESSAGE(std::abs(0.5 * F12 - 2.0 * F21) < 1e-9, "the closed forms themselves: A_1 F_12 = " << 0.5 * F12
-                                                                                                      << ", A_2 F_21 = "
-                                                                                                      << 2.0 * F21);
+    REQUIRE_MESSAGE(std::abs(0.5 * F12 - 2.0 * F21) < 1e-9,
+                    "the closed forms themselves: A_1 F_12 = " << 0.5 * F12 << ", A_2 F_21 = " << 2.0 * F21);
     REQUIRE(std::abs(F12 - perpendicularRectanglesNumeric(1, 0.5, 2)) < 1e-5);
     const ps::Scene scene = perpendicular(1, 0.5, 2);
     checkFormFactor("from the 0.5 x 1 rectangle to the 1 x 2 one (they share an edge)", scene, 0, 1, F12, 16384, 4,
@@ -114,7 +130,8 @@ TEST_CASE("radiosity: reciprocity A_1 F_12 = A_2 F_21 for perpendicular rectangl
                     1105);
 }
 
-TEST_CASE("radiosity: no form factor through a wall: a square blocking every line between two squares gives F = 0 (Eq. 11.22) [1 pt]") {
+TEST_CASE(
+    "radiosity: no form factor through a wall: a square blocking every line between two squares gives F = 0 (Eq. 11.22) [1 pt]") {
     const ps::Scene scene = opposedSquares(1.0, true);
     const ps::ElementMesh mesh(scene, 1, 1);
     ps::Rng rng(ps::testseed::seed(1106));
@@ -130,7 +147,8 @@ TEST_CASE("radiosity: no form factor through a wall: a square blocking every lin
     const ps::Scene open = opposedSquares(1.0, false);
     const ps::ElementMesh openMesh(open, 1, 1);
     const float F = ps::formFactor(open, openMesh, 0, 1, 4096, rng);
-    CHECK_MESSAGE(F > 0.15f, "formFactor between the same squares without the blocker: expected about 0.2, got " << num(F));
+    CHECK_MESSAGE(F > 0.15f,
+                  "formFactor between the same squares without the blocker: expected about 0.2, got " << num(F));
 }
 
 TEST_CASE("radiosity: the form factors from an element of a closed box sum to 1 (t-tests, Eq. 11.22) [2 pts]") {

@@ -68,10 +68,11 @@ TEST_CASE(
     for (size_t q = 0; q < 6; ++q)
         for (int c = 0; c < 3; ++c)
             CHECK_MESSAGE(std::abs(s.patches[q][c] - 2.0f) <= 0.03f * 2.0f,
-                          "the furnace box (albedo 0.5, Le = 1), face " << q << ", channel " << c
-                                                                        << ": expected the radiance B / pi = Le / (1 - a) = 2 "
-                                                                           "within 3 %, got "
-                                                                        << num(s.patches[q][c]));
+                          "the furnace box (albedo 0.5, Le = 1), face "
+                              << q << ", channel " << c
+                              << ": expected the radiance B / pi = Le / (1 - a) = 2 "
+                                 "within 3 %, got "
+                              << num(s.patches[q][c]));
     double mean = 0.0;
     for (const Color& c : s.image.pixels) mean += (double(c.r) + c.g + c.b) / 3.0;
     mean /= double(s.image.pixels.size());
@@ -105,10 +106,9 @@ TEST_CASE(
         const int n = k == 0 ? 1 : 4;
         const Solved s = solve(cornell, n, ps::testseed::seed(2000));
         REQUIRE(s.patches.size() == pt.size());
-        CHECK_MESSAGE(s.residual < ps::kStopResidual, "the Cornell box with " << n << " x " << n
-                                                                             << " elements: unshot power " << s.residual
-                                                                             << " of the emitted after " << s.shots
-                                                                             << " shots");
+        CHECK_MESSAGE(s.residual < ps::kStopResidual, "the Cornell box with "
+                                                          << n << " x " << n << " elements: unshot power " << s.residual
+                                                          << " of the emitted after " << s.shots << " shots");
         CHECK_MESSAGE(s.patches[lamp] == Color(17, 12, 4) / 1.0f,
                       "the Cornell box's lamp (Le = (17, 12, 4), black): expected its patch to show exactly Le, got "
                           << str(Vec3(s.patches[lamp].r, s.patches[lamp].g, s.patches[lamp].b)));
@@ -130,15 +130,17 @@ TEST_CASE(
         }
         error[k] = sum / count;
     }
-    CHECK_MESSAGE(error[1] <= 0.085, "the Cornell box, 4 x 4 elements a quad: expected the patch averages within 8.5 % "
-                                     "of the path tracer's on average (measured 5.2 % +- 0.55 %), got "
-                                         << num(100.0 * error[1]) << " %; the worst: " << worst[1]);
+    CHECK_MESSAGE(error[1] <= 0.085,
+                  "the Cornell box, 4 x 4 elements a quad: expected the patch averages within 8.5 % "
+                  "of the path tracer's on average (measured 5.2 % +- 0.55 %), got "
+                      << num(100.0 * error[1]) << " %; the worst: " << worst[1]);
     CHECK_MESSAGE(error[1] <= 0.5 * error[0],
                   "the Cornell box: expected the error with 4 x 4 elements a quad at most half the error with 1 x 1 "
                   "(the discretisation bias shrinks with the element size; measured ratio at most 0.33), got "
                       << num(100.0 * error[1]) << " % and " << num(100.0 * error[0]) << " %");
     // The same solution and image with 2 threads as with 1 (rows drawn from taskRng(seed, i, j)).
-    const Solved one = solve(cornell, 1, ps::testseed::seed(2001), 1), two = solve(cornell, 1, ps::testseed::seed(2001), 2);
+    const Solved one = solve(cornell, 1, ps::testseed::seed(2001), 1),
+                 two = solve(cornell, 1, ps::testseed::seed(2001), 2);
     CHECK_MESSAGE(one.image.pixels == two.image.pixels,
                   "the Cornell box by radiosity: expected the same image with 1 and 2 threads");
 }

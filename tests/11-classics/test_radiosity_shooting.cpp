@@ -52,7 +52,8 @@ TEST_CASE("radiosity: the solution starts with B = E and unshot = E (Eq. 11.27) 
     }
 }
 
-TEST_CASE("radiosity: the shooter is the element with the most unshot power, unshot A, not the most radiosity (Eq. 11.28) [1 pt]") {
+TEST_CASE(
+    "radiosity: the shooter is the element with the most unshot power, unshot A, not the most radiosity (Eq. 11.28) [1 pt]") {
     const ps::Scene scene = threeQuads();
     const ps::ElementMesh mesh(scene, 1, 1);
     REQUIRE(mesh.size() == 3);
@@ -62,23 +63,26 @@ TEST_CASE("radiosity: the shooter is the element with the most unshot power, uns
     // Unshot radiosity (summed over channels) 6, 3, 2.5; power 6, 6, 10.
     s.unshot = {Color(2, 2, 2), Color(1, 1, 1), Color(1, 1, 0.5f)};
     int i = ps::chooseShooter(mesh, s);
-    CHECK_MESSAGE(i == 2, "chooseShooter: unshot (2,2,2), (1,1,1), (1,1,0.5) on areas 1, 2, 4: expected element 2 "
-                          "(power 10 against 6 and 6), got "
-                              << i << (i == 0 ? " (the most unshot radiosity, not power: multiply by the area)" : ""));
+    CHECK_MESSAGE(i == 2,
+                  "chooseShooter: unshot (2,2,2), (1,1,1), (1,1,0.5) on areas 1, 2, 4: expected element 2 "
+                  "(power 10 against 6 and 6), got "
+                      << i << (i == 0 ? " (the most unshot radiosity, not power: multiply by the area)" : ""));
     s.unshot[2] = Color(0.0f);
     i = ps::chooseShooter(mesh, s);
     CHECK_MESSAGE(i == 0, "chooseShooter: powers 6, 6, 0: expected the first of the equal ones, 0, got " << i);
     s.unshot = {Color(3, 0, 0), Color(0, 0.9f, 0.9f), Color(0.0f)};
     i = ps::chooseShooter(mesh, s);
-    CHECK_MESSAGE(i == 1, "chooseShooter: unshot (3,0,0) on area 1 and (0,0.9,0.9) on area 2: expected element 1 "
-                          "(power summed over the channels: 3.6 against 3), got "
-                              << i);
+    CHECK_MESSAGE(i == 1,
+                  "chooseShooter: unshot (3,0,0) on area 1 and (0,0.9,0.9) on area 2: expected element 1 "
+                  "(power summed over the channels: 3.6 against 3), got "
+                      << i);
     s.unshot.assign(3, Color(0.0f));
     i = ps::chooseShooter(mesh, s);
     CHECK_MESSAGE(i == -1, "chooseShooter: no unshot power anywhere: expected -1, got " << i);
 }
 
-TEST_CASE("radiosity: shooting steps by hand: dB_j = rho_j dB_i F_ij A_i / A_j, and unshot_i reset (Eq. 11.28) [2 pts]") {
+TEST_CASE(
+    "radiosity: shooting steps by hand: dB_j = rho_j dB_i F_ij A_i / A_j, and unshot_i reset (Eq. 11.28) [2 pts]") {
     const ps::Scene scene = threeQuads();
     const ps::ElementMesh mesh(scene, 1, 1);
     REQUIRE(mesh.size() == 3);
@@ -97,14 +101,14 @@ TEST_CASE("radiosity: shooting steps by hand: dB_j = rho_j dB_i F_ij A_i / A_j, 
     CHECK_MESSAGE(near(s.unshot[0], Color(1, 2, 3) + to0), "shoot from element 1: unshot_0 expected "
                                                                << colour(Color(1, 2, 3) + to0) << ", got "
                                                                << colour(s.unshot[0]) << hint);
-    CHECK_MESSAGE(near(s.B[2], to2), "shoot from element 1: B_2 expected " << colour(to2) << ", got " << colour(s.B[2])
-                                                                           << hint);
-    CHECK_MESSAGE(near(s.unshot[2], to2), "shoot from element 1: unshot_2 expected " << colour(to2) << ", got "
-                                                                                     << colour(s.unshot[2]) << hint);
-    CHECK_MESSAGE(near(s.B[1], Color(1.0f)), "shoot from element 1: its own B must not change, expected (1, 1, 1), got "
-                                                 << colour(s.B[1]));
-    CHECK_MESSAGE(s.unshot[1] == Color(0.0f), "shoot from element 1: its unshot must be reset to 0 (it has shot it), got "
-                                                  << colour(s.unshot[1]));
+    CHECK_MESSAGE(near(s.B[2], to2),
+                  "shoot from element 1: B_2 expected " << colour(to2) << ", got " << colour(s.B[2]) << hint);
+    CHECK_MESSAGE(near(s.unshot[2], to2),
+                  "shoot from element 1: unshot_2 expected " << colour(to2) << ", got " << colour(s.unshot[2]) << hint);
+    CHECK_MESSAGE(near(s.B[1], Color(1.0f)),
+                  "shoot from element 1: its own B must not change, expected (1, 1, 1), got " << colour(s.B[1]));
+    CHECK_MESSAGE(s.unshot[1] == Color(0.0f),
+                  "shoot from element 1: its unshot must be reset to 0 (it has shot it), got " << colour(s.unshot[1]));
     CHECK_MESSAGE(s.shots == 1, "shoot: expected shots = 1 after one step, got " << s.shots);
 
     // Then from element 0 (area 1), coloured: to element 1 (rho (0.2, 0.4, 0.8)) with F = 0.1.
@@ -117,8 +121,8 @@ TEST_CASE("radiosity: shooting steps by hand: dB_j = rho_j dB_i F_ij A_i / A_j, 
                                                        << hint << "; rho is a colour, per channel");
     CHECK_MESSAGE(near(s.unshot[1], to1), "second shot, from element 0: unshot_1 expected "
                                               << colour(to1) << ", got " << colour(s.unshot[1]) << hint);
-    CHECK_MESSAGE(near(s.B[2], to2b), "second shot, from element 0: B_2 expected " << colour(to2b) << ", got "
-                                                                                   << colour(s.B[2]) << hint);
+    CHECK_MESSAGE(near(s.B[2], to2b),
+                  "second shot, from element 0: B_2 expected " << colour(to2b) << ", got " << colour(s.B[2]) << hint);
     CHECK_MESSAGE(s.unshot[0] == Color(0.0f), "second shot: unshot_0 must be reset, got " << colour(s.unshot[0]));
     CHECK_MESSAGE(s.shots == 2, "shoot: expected shots = 2 after two steps, got " << s.shots);
 
@@ -154,9 +158,10 @@ TEST_CASE(
         if (i < 0) break;
         ps::shoot(mesh, s, i, row);
     }
-    CHECK_MESSAGE(steps < 20000, "the shooting loop did not bring the unshot power below 1e-9 of the emitted in 20000 "
-                                 "steps (unshot "
-                                     << ps::unshotFraction(mesh, s) << "): is unshot_i reset after a shot?");
+    CHECK_MESSAGE(steps < 20000,
+                  "the shooting loop did not bring the unshot power below 1e-9 of the emitted in 20000 "
+                  "steps (unshot "
+                      << ps::unshotFraction(mesh, s) << "): is unshot_i reset after a shot?");
     const double expected = ps::kPi / (1.0 - 0.5);
     for (int i = 0; i < mesh.size(); ++i)
         CHECK_MESSAGE(std::abs(s.B[size_t(i)].g - expected) <= 1e-4 * expected,
@@ -175,17 +180,19 @@ TEST_CASE("radiosity: the ambient term, by hand and exact in a furnace box befor
     // rho_avg = (0.5 + 2 (0.2, 0.4, 0.8) + 4 0.9) / 7; sum unshot A / sum A = (2, 3, 4) / 7.
     const Color expected(0.8f, 3.0f / 2.1f, 4.0f / 1.3f);
     const Color got = ps::ambientRadiosity(mesh, s);
-    CHECK_MESSAGE(near(got, expected), "ambientRadiosity: areas 1, 2, 4, albedos 0.5, (0.2, 0.4, 0.8), 0.9, unshot (1, 2, 3), "
-                                       "(0.5, 0.5, 0.5), 0: expected R sum unshot A / sum A with R = 1 / (1 - rho_avg) = "
-                                           << colour(expected) << ", got " << colour(got));
+    CHECK_MESSAGE(near(got, expected),
+                  "ambientRadiosity: areas 1, 2, 4, albedos 0.5, (0.2, 0.4, 0.8), 0.9, unshot (1, 2, 3), "
+                  "(0.5, 0.5, 0.5), 0: expected R sum unshot A / sum A with R = 1 / (1 - rho_avg) = "
+                      << colour(expected) << ", got " << colour(got));
     // The furnace box before any shot: B + rho ambient = E + rho E / (1 - rho) = E / (1 - rho).
     const ps::Scene box = closedBox(1, 2, 3, 0.5f, 1.0f);
     const ps::ElementMesh boxMesh(box, 2, 2);
     const ps::RadiositySolution start = ps::startRadiosity(boxMesh);
     const Color amb = ps::ambientRadiosity(boxMesh, start);
     const Color shown = start.B.empty() ? Color(0.0f) : start.B[0] + boxMesh[0].rho * amb;
-    CHECK_MESSAGE(near(shown, Color(2.0f * ps::kPi)),
-                  "a furnace box (albedo 0.5, E = pi) before the first shot: expected B + rho ambient = E / (1 - rho) = "
-                  "2 pi exactly, got "
-                      << colour(shown) << " (ambient " << colour(amb) << ")");
+    CHECK_MESSAGE(
+        near(shown, Color(2.0f * ps::kPi)),
+        "a furnace box (albedo 0.5, E = pi) before the first shot: expected B + rho ambient = E / (1 - rho) = "
+        "2 pi exactly, got "
+            << colour(shown) << " (ambient " << colour(amb) << ")");
 }

@@ -41,9 +41,7 @@ std::vector<std::string> allAlgorithms() {
 bool refuses(const std::string& algo, const Scene& scene) {
     try {
         makeIntegrator(algo)->checkScene(scene);
-    } catch (const InputError&) {
-        return true;
-    }
+    } catch (const InputError&) { return true; }
     return false;
 }
 
