@@ -140,13 +140,14 @@ struct ErrorRow {
     double seconds = 0.0, meanRel = 0.0, maxRel = 0.0;
 };
 
-// The relative error of radiosity's patch averages against pt's, over the patches and channels
-// that pt sees lit (the lamp's own patch included: it is exact in both).
-void compare(const std::vector<Color>& rad, const std::vector<PatchEstimate>& pt, ErrorRow& row) {
+// The relative error of radiosity's patch averages against pt's, over the reflecting quads and
+// the channels (as the graded test: the lamp's own patch is exactly its Le in both).
+void compare(const Scene& scene, const std::vector<Color>& rad, const std::vector<PatchEstimate>& pt, ErrorRow& row) {
     double sum = 0.0;
     int count = 0;
     for (size_t q = 0; q < pt.size() && q < rad.size(); ++q)
         for (int c = 0; c < 3; ++c) {
+            if (scene.prims[scene.quads[q].prim].light >= 0) continue;
             if (!(pt[q].mean[c] > 0.0)) continue;
             const double rel = std::abs(double(rad[q][c]) / pt[q].mean[c] - 1.0);
             sum += rel;
@@ -248,7 +249,7 @@ int figures(const Settings& s) {
         row.n = n;
         row.elements = rad.mesh().size();
         row.shots = rad.solution().shots;
-        compare(patchRadiance(rad.mesh(), rad.solution()), pt, row);
+        compare(sc, patchRadiance(rad.mesh(), rad.solution()), pt, row);
         rows.push_back(row);
         if (n >= 2) images.push_back(picture(sc, rad));
         std::printf("radiosity_figures: %d x %d elements: mean relative error %.4f, largest %.4f (quad %d) (%.1f s)\n",

@@ -155,7 +155,8 @@ std::vector<std::string> RadiosityIntegrator::report() const {
         char buf[256];
         std::snprintf(buf, sizeof buf,
                       "warning: %.3g %% of the shot power arrived at the backs of reflecting quads, which "
-                      "one-sided elements drop (pt reflects it): turn those quads around",
+                      "one-sided elements drop (pt reflects it): quads facing away from the light, or "
+                      "elements that reach into a closed object (light leaks)",
                       100.0 * backPower_ / shotPower_);
         lines.push_back(buf);
     }
