@@ -195,8 +195,8 @@ inline ps::Scene closedBox(float sx, float sy, float sz, float a, float Le) {
 
 // `n` independent estimates of F_ij, each formFactor with `samples` samples from its own
 // generator taskRng(seed, i, k).
-inline ps::stats::Welford formFactorSamples(const ps::Scene& scene, const ps::ElementMesh& mesh, int i, int j, int n,
-                                            int samples, uint64_t seed) {
+inline ps::stats::Welford independentEstimates(const ps::Scene& scene, const ps::ElementMesh& mesh, int i, int j, int n,
+                                               int samples, uint64_t seed) {
     ps::stats::Welford w;
     for (int k = 0; k < n; ++k) {
         ps::Rng rng = ps::taskRng(seed, uint32_t(i), uint32_t(k));

@@ -13,7 +13,7 @@ namespace {
 void checkFormFactor(const char* what, const ps::Scene& scene, int i, int j, double expected, int n, int samples,
                      uint64_t seed) {
     const ps::ElementMesh mesh(scene, 1, 1);
-    const ps::stats::Welford w = formFactorSamples(scene, mesh, i, j, n, samples, ps::testseed::seed(seed));
+    const ps::stats::Welford w = independentEstimates(scene, mesh, i, j, n, samples, ps::testseed::seed(seed));
     const ps::stats::TTestResult t = ps::stats::tTest(w, expected, alpha(), 0.01);
     CHECK_MESSAGE(t.passed, "formFactor " << what << ": expected the closed form " << num(expected)
                                           << " (Eq. 11.22), got the mean of " << n << " estimates of " << samples
