@@ -54,13 +54,12 @@ FormFactorRow formFactorRow(const Scene& scene, const ElementMesh& mesh, int i, 
     const int rays = 4 * kFormFactorSamples;
     int back = 0;
     for (int k = 0; k < rays; ++k) {
-        const SurfacePoint x = mesh.samplePoint(i, rng.uniform2());
-        const Vec3 w = Frame(x.n).toWorld(sampleCosineHemisphere(rng.uniform2()));
-        Ray ray = scene.spawnRay(x, w);
-        SurfacePoint hit;
-        if (scene.intersect(ray, hit) && glm::dot(hit.n, w) >= 0.0f &&
-            !isBlack(scene.materials[size_t(hit.material)].albedo))
-            ++back;
+        const SurfacePoint from = mesh.samplePoint(i, rng.uniform2());
+        Ray probe = scene.spawnRay(from, Frame(from.n).toWorld(sampleCosineHemisphere(rng.uniform2())));
+        SurfacePoint at;
+        const bool reflectingBack = scene.intersect(probe, at) && glm::dot(at.n, probe.d) >= 0.0f &&
+                                    !isBlack(scene.materials[size_t(at.material)].albedo);
+        back += reflectingBack ? 1 : 0;
     }
     row.back = float(back) / float(rays);
     return row;
