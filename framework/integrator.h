@@ -14,6 +14,10 @@ namespace ps {
 class Integrator {
 public:
     virtual ~Integrator() = default;
+    // Throws InputError, naming what it does not support, if this integrator cannot render the
+    // scene at all (lesson 11's radiosity: diffuse quads and area lights only). render() calls it
+    // first. The default accepts every scene.
+    virtual void checkScene(const Scene&) const {}
     // Scene-dependent preprocessing (a photon pass, a bootstrap); counted in render time.
     virtual void prepare(const Scene&) {}
     // What this integrator leaves out on this scene because the scene's capabilities show it
@@ -37,6 +41,11 @@ public:
     // integrator with pt filtered to its expression.
     virtual std::string carriedPaths(const Scene&) const { return kAllPaths; }
     static constexpr const char* kAllPaths = "L.*E";
+    // True for an integrator whose every iteration's image is its whole current estimate, not
+    // one more sample of it (lesson 11's radiosity: iteration k shows the solution after k
+    // batches of shooting steps). The render loop then keeps only the latest image instead of
+    // averaging them (its variance of the mean is 0).
+    virtual bool latestIterationIsImage() const { return false; }
 };
 
 // An integrator that estimates the radiance along one camera ray per pixel per iteration.

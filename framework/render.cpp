@@ -25,6 +25,7 @@ void drawProgress(int done, int total, double seconds, double budget) {
 }  // namespace
 
 RenderResult render(const Scene& scene, Integrator& integrator, const RenderOptions& opt) {
+    integrator.checkScene(scene);
     if (opt.threads > 0) omp_set_num_threads(opt.threads);
         // Rays traced before this render (by any thread) are not this render's: discard their count.
 #pragma omp parallel
@@ -47,6 +48,7 @@ RenderResult render(const Scene& scene, Integrator& integrator, const RenderOpti
         t0 = Clock::now();
         std::fill(iterImage.pixels.begin(), iterImage.pixels.end(), Color(0.0f));
         integrator.renderIteration(scene, static_cast<uint32_t>(it), opt.seed, iterImage, res.stats);
+        if (integrator.latestIterationIsImage()) res.film = Film(res.film.width(), res.film.height());
         res.film.addIteration(iterImage);
         elapsed += std::chrono::duration<double>(Clock::now() - t0).count();
         res.iterations = it + 1;

@@ -20,12 +20,20 @@ struct Primitive {
     int light = -1;      // into Scene::lights if the primitive emits, else -1
 };
 
+// The most elements radiosity cuts a quad's edge into (RenderSettings::elements).
+constexpr int kMaxElements = 256;
+
 // Defaults a scene file may set; the command line overrides them.
 struct RenderSettings {
     int spp = 16;
     int maxDepth = 8;  // maximum number of bounces; 0 = only emission seen directly
     std::string algo = "eyelight";
     int algoLine = 0;  // the scene file line that set algo (for messages), 0 if none
+    // Lesson 11's radiosity (no other integrator reads these): each quad is cut into
+    // elements[0] x elements[1] elements (along its edges 1-2 and 1-4), and every iteration
+    // makes `shots` shooting steps.
+    int elements[2] = {8, 8};
+    int shots = 256;
     // Integrators leave out work the capabilities show cannot contribute (Integrator::leftOut);
     // false (`--no-prune`) makes them do all of it, to check that pruning changes nothing.
     bool prune = true;
@@ -49,6 +57,16 @@ struct Capabilities {
     std::string describe() const;
 };
 
+// A quad of the scene file as it was written: its corners (counter-clockwise seen from the side
+// its normal points to) and its two triangles, prims[prim] = corners (1, 2, 3) and
+// prims[prim + 1] = (1, 3, 4). Nothing renders from it (the triangles are the geometry); lesson
+// 11's radiosity makes its patches from the quads.
+struct Quad {
+    Vec3 corners[4];
+    uint32_t prim = 0;  // the first of its two primitives
+    int line = 0;       // the scene file line
+};
+
 class Scene {
 public:
     std::string path;  // the scene file, for messages
@@ -58,6 +76,7 @@ public:
     std::vector<Triangle> triangles;
     std::vector<Sphere> spheres;
     std::vector<Primitive> prims;
+    std::vector<Quad> quads;  // the scene file's quads, in file order (a record: see Quad)
     std::vector<Light> lights;
     int background = -1;            // index of the background light, -1 if none
     Distribution1D lightSelection;  // picks lights proportionally to their power

@@ -381,6 +381,13 @@ private:
             st.fail(
                 "the quad's halves (corners 1-2-3 and 1-3-4) face opposite ways: its corners are not in order "
                 "around its edge, or it is concave at corner 2 or 4 (start at the concave corner)");
+        if (corners == 4) {  // the record of the quad (Scene::Quad)
+            Quad q;
+            for (int i = 0; i < 4; ++i) q.corners[i] = v[size_t(i)];
+            q.prim = static_cast<uint32_t>(scene_.prims.size());
+            q.line = st.line;
+            scene_.quads.push_back(q);
+        }
         for (int i = 1; i + 1 < corners; ++i) addTriangle({v[0], v[i], v[i + 1]}, material, light);
     }
 
@@ -573,9 +580,20 @@ private:
     }
 
     void render(Statement& st) {
-        st.readOptions({{"spp", 1}, {"maxdepth", 1}, {"algo", 1}, {"ambient", 3}});
+        st.readOptions({{"spp", 1}, {"maxdepth", 1}, {"algo", 1}, {"ambient", 3}, {"elements", 2}, {"shots", 1}});
         RenderSettings& s = scene_.settings;
         if (st.has("ambient")) s.ambient = checkColor(st, "ambient", st.optVec3("ambient", Color(0.0f)), false);
+        if (st.has("elements")) {
+            const auto& e = st.options.at("elements");
+            for (int i = 0; i < 2; ++i) {
+                s.elements[i] = Statement::toInt(st, e[size_t(i)], "'elements'");
+                if (s.elements[i] < 1 || s.elements[i] > kMaxElements)
+                    st.fail("'elements' must be between 1 and " + std::to_string(kMaxElements) +
+                            " along each edge of a quad, got " + e[0] + " " + e[1]);
+            }
+        }
+        s.shots = st.optInt("shots", s.shots);
+        if (s.shots < 1) st.fail("'shots' must be at least 1");
         s.spp = st.optInt("spp", s.spp);
         s.maxDepth = st.optInt("maxdepth", s.maxDepth);
         s.algo = st.optWord("algo", s.algo);

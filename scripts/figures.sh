@@ -205,6 +205,19 @@ if wanted 11; then
   done_fig "$d/whitted-vs-pt.png"
 fi
 
+# lesson 11 (radiosity)
+# The Cornell box by radiosity (8 x 8 elements a quad) after 1, 10, 100, 1000 shots and converged,
+# next to pt; the same shots with the ambient term; converged with 2 x 2 to 16 x 16 elements; and
+# the patch averages' error against pt's for each element size (tools/radiosity_figures.cpp,
+# lessons/11-classics/drafts/radiosity.md, section 5). About 4 minutes on 2 cores, most of it
+# the 16 x 16 elements' form factors.
+if wanted 11; then
+  d="$(dest 11-classics)"
+  cmake --build "$build" --target radiosity_figures >/dev/null
+  if [ "$quick" = 1 ]; then "$build/radiosity_figures" "$d" --quick; else "$build/radiosity_figures" "$d"; fi > "$work/11-radiosity.log"
+  done_fig "$d/radiosity-shots.png, radiosity-ambient-shots.png, radiosity-elements.png, radiosity-elements.md, radiosity-elements.svg"
+fi
+
 # Every image a slide deck shows from a lesson folder must be one this script makes (so one command
 # remakes all of them); checked when every lesson was run, with the reference.
 if [ ${#only[@]} -eq 0 ] && [ "$handout" = 0 ]; then

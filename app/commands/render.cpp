@@ -1,4 +1,5 @@
 // pathspace render SCENE [options]: one image with one integrator, progressively (framework/render.h).
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <iostream>
@@ -28,6 +29,10 @@ const char* const kUsage = R"(render options:
   --variance FILE    also write the per-pixel variance of the mean (FILE ends in .pfm)
   --reference REF    a reference image (.pfm or .hdr): log error against run time
   --csv FILE         where that log goes (default: the output's name + .csv)
+  --elements N[xM]   radiosity only: cut every quad into N x M elements (default: the scene's
+                     'render elements', else 8x8; N, M from 1 to 256)
+  --shots S          radiosity only: shooting steps per iteration (default: the scene's
+                     'render shots', else 256)
   --no-prune         do not leave out work the scene cannot use (integrators print what
                      they leave out; pruning is exact, this switch is there to check it)
   --progress / --no-progress   progress bar on stderr (default: when stderr is a terminal)
@@ -37,7 +42,7 @@ const char* const kUsage = R"(render options:
 
 int runRender(const std::vector<std::string>& args) {
     std::string scenePath, algo, out, reference, csvPath, variancePath;
-    int spp = 0, threads = 0, maxDepth = -1;
+    int spp = 0, threads = 0, maxDepth = -1, shots = 0, elements[2] = {0, 0};
     double seconds = 0.0;
     uint64_t seed = 0;
     bool progress = stderrIsTerminal(), prune = true;
@@ -61,7 +66,13 @@ int runRender(const std::vector<std::string>& args) {
         else if (a == "--no-prune") prune = false;
         else if (a == "--paths") paths = parsePathsOption(value());
         else if (a == "--ambient") ambient = parseAmbient(a, value());
-        else if (!a.empty() && a[0] == '-') throw UsageError("unknown option '" + a + "'");
+        else if (a == "--shots") shots = parseAtLeast<int>(a, value(), 1);
+        else if (a == "--elements") {
+            const std::string v = value();
+            const size_t x = v.find('x');
+            elements[0] = parseWithin<int>(a, v.substr(0, x), 1, kMaxElements);
+            elements[1] = x == std::string::npos ? elements[0] : parseWithin<int>(a, v.substr(x + 1), 1, kMaxElements);
+        } else if (!a.empty() && a[0] == '-') throw UsageError("unknown option '" + a + "'");
         else if (scenePath.empty()) scenePath = a;
         else throw UsageError("more than one scene given ('" + scenePath + "' and '" + a + "')");
     }
@@ -85,6 +96,8 @@ int runRender(const std::vector<std::string>& args) {
     if (maxDepth >= 0) scene.settings.maxDepth = maxDepth;
     scene.settings.prune = prune;
     if (ambient) scene.settings.ambient = *ambient;
+    if (shots > 0) scene.settings.shots = shots;
+    if (elements[0] > 0) std::copy(elements, elements + 2, scene.settings.elements);
     std::unique_ptr<Integrator> integrator;
     if (algo.empty()) {
         algo = scene.settings.algo;
@@ -98,6 +111,7 @@ int runRender(const std::vector<std::string>& args) {
     if (paths) integrator = makeIntegrator(algo, &*paths);
     else if (!integrator) integrator = makeIntegrator(algo);
     if (spp == 0 && seconds == 0.0) spp = scene.settings.spp;
+    integrator->checkScene(scene);  // a refusal (InputError) before anything is printed
 
     Image ref;
     std::ofstream csv;

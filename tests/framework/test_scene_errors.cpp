@@ -280,6 +280,30 @@ TEST_CASE("scene errors: other values out of their range") {
     expectLine3("render spp 0", {"'spp' must be at least 1"});
     expectLine3("render maxdepth -1", {"'maxdepth' must not be negative"});
     expectLine3("render ambient 0.1 -0.1 0", {"'ambient' must not be negative"});
+    expectLine3("render elements 0 4", {"'elements' must be between 1 and 256", "got 0 4"});
+    expectLine3("render elements 4 257", {"'elements' must be between 1 and 256", "got 4 257"});
+    expectLine3("render elements 4", {"'elements' needs 2 value(s)"});
+    expectLine3("render shots 0", {"'shots' must be at least 1"});
+}
+
+TEST_CASE("scene errors: a quad is kept as written (Scene::quads), its two triangles after it") {
+    const Scene s = parseScene(
+        "camera eye 0 0 -5  target 0 0 0  fov 40  resolution 8 8\n"
+        "material w diffuse albedo 0.5 0.5 0.5\n"
+        "triangle 0 0 0  1 0 0  0 1 0  material w\n"
+        "quad 0 0 1  2 0 1  2 1 1  0 1 1  material w\n"
+        "render elements 3 5 shots 7\n",
+        "quads.scene");
+    REQUIRE(s.quads.size() == 1);
+    CHECK(s.quads[0].line == 4);
+    CHECK(s.quads[0].prim == 1);
+    CHECK(s.quads[0].corners[1] == Vec3(2, 0, 1));
+    CHECK(s.quads[0].corners[3] == Vec3(0, 1, 1));
+    CHECK(s.triangles[s.prims[1].index].p2 == Vec3(2, 1, 1));
+    CHECK(s.triangles[s.prims[2].index].p1 == Vec3(2, 1, 1));
+    CHECK(s.settings.elements[0] == 3);
+    CHECK(s.settings.elements[1] == 5);
+    CHECK(s.settings.shots == 7);
 }
 
 TEST_CASE("scene errors: values too large for float light transport") {

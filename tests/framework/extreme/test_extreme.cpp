@@ -9,6 +9,7 @@
 #include <map>
 #include <string>
 #include <vector>
+#include "errors.h"
 #include "format.h"
 #include "statistics.h"
 #include "integrator.h"
@@ -32,6 +33,16 @@ std::vector<std::string> allAlgorithms() {
     std::vector<std::string> names;
     for (const IntegratorInfo& i : integratorList()) names.push_back(i.name);
     return names;
+}
+
+// Whether the integrator refuses the scene outright (Integrator::checkScene: lesson 11's
+// radiosity renders diffuse quads lit by quads only). Such pairs are left out here; the refusal
+// itself is tested with the integrator (tests/framework/cli).
+bool refuses(const std::string& algo, const Scene& scene) {
+    try {
+        makeIntegrator(algo)->checkScene(scene);
+    } catch (const InputError&) { return true; }
+    return false;
 }
 
 struct Result {
@@ -82,6 +93,7 @@ void checkAll(const std::string& what, const std::string& text, const std::vecto
     const Scene scene = parseScene(text, what + ".scene");
     for (const std::string& algo : algos) {
         CAPTURE(algo);
+        if (refuses(algo, scene)) continue;
         const Result r = renderWith(scene, algo, spp);
         CHECK_MESSAGE(r.stats.nan == 0, what << ", " << algo << ": " << r.stats.nan << " NaN samples");
         CHECK_MESSAGE(r.stats.inf == 0, what << ", " << algo << ": " << r.stats.inf << " Inf samples");
@@ -231,6 +243,7 @@ TEST_CASE("extreme: the Cornell spheres scaled by 1e-4 and 1e4 and moved by 1e5 
             const char* name;
         };
         for (const std::string& algo : transportAlgorithms()) {
+            if (refuses(algo, base)) continue;
             const Result ref = renderWith(base, algo, 4);
             REQUIRE(ref.stats.bad() == 0);
             const double m0 = meanValue(ref.mean);
@@ -409,11 +422,12 @@ TEST_CASE(
     };
     std::vector<std::string> compared;
     for (const std::string& algo : transportAlgorithms())
-        if (!black(algo) && !biased(algo) && algo != reference(algo)) compared.push_back(algo);
+        if (!black(algo) && !biased(algo) && algo != reference(algo) && !refuses(algo, scene)) compared.push_back(algo);
     const double alpha = stats::sidak(0.01, int(compared.size()));
     std::map<std::string, Estimate> refs;
     for (const std::string& algo : allAlgorithms()) {
         CAPTURE(algo);
+        if (refuses(algo, scene)) continue;
         const bool transport = algo != "eyelight" && algo != "normals";
         if (!transport || black(algo)) {
             const Result r = renderWith(scene, algo, 2);
