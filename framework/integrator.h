@@ -28,6 +28,11 @@ public:
     // What the integrator counted during the render, one line each (lesson 10: path vertices,
     // splits, roulette), printed by the render command after its summary. Empty by default.
     virtual std::vector<std::string> report() const { return {}; }
+    // Whether it renders a thin-lens camera (lesson 11) correctly. render() refuses a lens scene
+    // otherwise (InputError), rather than render it as something else. False unless an
+    // integrator says so: PixelIntegrator does (the framework's pixel loop makes lens rays).
+    virtual bool rendersThinLens() const { return false; }
+    std::string name;  // the algorithm's name (makeIntegrator sets it), for messages
 };
 
 // An integrator that estimates the radiance along one camera ray per pixel per iteration.
@@ -37,6 +42,7 @@ public:
     virtual Color Li(const Scene& scene, const Ray& ray, Rng& rng) const = 0;
     void renderIteration(const Scene& scene, uint32_t iteration, uint64_t seed, Image& out,
                          SampleStats& stats) override;
+    bool rendersThinLens() const override { return true; }
 };
 
 struct IntegratorInfo {

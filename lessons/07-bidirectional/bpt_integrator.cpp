@@ -13,6 +13,7 @@
 // Left out where the scene shows it cannot contribute (Eq. 7.12, exact): see bptLeftOut.
 #include <omp.h>
 #include "07-bidirectional/bpt.h"
+#include "11-classics/thinlens.h"
 #include "tasks.h"
 
 namespace ps {
@@ -35,7 +36,8 @@ Pruning pruning(const Scene& scene, const BptOptions& opt) {
 std::vector<std::string> bptLeftOut(const Scene& scene, const BptOptions& opt) {
     if (!opt.prune || !scene.settings.prune) return {};
     std::vector<std::string> lines;
-    lines.push_back("t = 0 techniques: the pinhole is a delta position no ray can hit (Eq. 7.12)");
+    if (scene.camera.isPinhole())
+        lines.push_back("t = 0 techniques: the pinhole is a delta position no ray can hit (Eq. 7.12)");
     const Pruning p = pruning(scene, opt);
     if (p.s0) lines.push_back("s = 0 techniques: no light can be hit (point lights only) (Eq. 7.12)");
     if (scene.caps.hasDeltaBSDF())
@@ -44,6 +46,48 @@ std::vector<std::string> bptLeftOut(const Scene& scene, const BptOptions& opt) {
             "connected to the camera: a delta BSDF is 0 for every given pair of directions (Eq. 7.12)");
     return lines;
 }
+
+namespace {
+
+// The technique t = 0 (lesson 11, Eq. 11.16-11.18): with a thin lens, every light vertex y_m takes
+// one more step (connectLens), and where that step's ray meets the lens the path y_0 .. y_m z,
+// s = m + 2, t = 0, is splatted where it lands, MIS-weighted against every other technique. Its
+// weight comes from the same functions as the others' (Eq. 7.5-7.10): the path as a light subpath
+// ending on the lens, with the lens vertex's densities from both sides.
+void lensTechniques(const Scene& scene, const Subpath& light, Rng& rng, const BptOptions& opt, const SplatTarget& splat,
+                    TechniqueRecorder* recorder) {
+    thread_local Subpath x;
+    const int maxDepth = scene.settings.maxDepth;
+    for (int m = 0; m < static_cast<int>(light.size()) && m <= maxDepth; ++m) {
+        const LensConnection c = connectLens(scene, light.data(), m, rng);
+        if (!c.valid) continue;
+        x.assign(light.begin(), light.begin() + m + 1);
+        if (m == 0) {
+            x[0] = c.light;
+            x[0].pdfFwd = pdfLightOrigin(scene, x[0]);
+            x[0].misSum = 0.0;
+        }
+        PathVertex z = c.lens;
+        z.pdfFwd = m == 0 ? pdfLightToward(scene, x[0], z)
+                          : pdfScatter(scene, &x[size_t(m) - 1], x[size_t(m)], z, Transport::Importance);
+        x.push_back(z);
+        // The camera side's densities: of z itself, and of y_m from z; and y_{m-1}'s, which
+        // lightSubpath took from the walk's own next vertex, now from z.
+        ReversePdfs rev;
+        rev.lightEnd = scene.camera.pdfPoint();
+        rev.lightPrev = pdfScatter(scene, nullptr, z, x[size_t(m)], Transport::Radiance);
+        if (m >= 1)
+            x[size_t(m) - 1].pdfRev = pdfScatter(scene, &z, x[size_t(m)], x[size_t(m) - 1], Transport::Radiance);
+        updateMisSum(x, size_t(m) + 1, opt.heuristic);
+        const int s = m + 2;
+        const float w = opt.recursive ? misWeightRecursive(x.data(), s, nullptr, 0, rev, opt.heuristic)
+                                      : misWeightFull(x.data(), s, nullptr, 0, rev, opt.heuristic);
+        splat.add(c.raster, c.value * w);
+        if (recorder) recorder->add(s, 0, c.raster, c.value * splat.scale, c.value * (w * splat.scale));
+    }
+}
+
+}  // namespace
 
 Color bptSample(const Scene& scene, const Vec2& raster, Rng& rng, const BptOptions& opt, const SplatTarget& splat,
                 TechniqueRecorder* recorder) {
@@ -84,6 +128,7 @@ Color bptSample(const Scene& scene, const Vec2& raster, Rng& rng, const BptOptio
             }
         }
     }
+    if (!scene.camera.isPinhole()) lensTechniques(scene, light, rng, opt, splat, recorder);
     return L;
 }
 
@@ -92,6 +137,7 @@ namespace {
 struct BptBase : Integrator {
     BptOptions opt;
     std::vector<std::string> leftOut(const Scene& scene) const override { return bptLeftOut(scene, opt); }
+    bool rendersThinLens() const override { return true; }  // t = 0 included (lesson 11)
 
     void renderIteration(const Scene& scene, uint32_t iteration, uint64_t seed, Image& out,
                          SampleStats& stats) override {
@@ -133,7 +179,7 @@ struct ImageRecorder : TechniqueRecorder {
             checkSample(isFinite(unweighted) ? weighted : unweighted, *stats);
             return;
         }
-        if (t == 1) splats->push_back({i, x, y, unweighted, weighted});
+        if (t <= 1) splats->push_back({i, x, y, unweighted, weighted});
         else accumulate(*images, i, x, y, unweighted, weighted);
     }
     static void accumulate(TechniqueImages& images, size_t i, int x, int y, const Color& u, const Color& w) {
