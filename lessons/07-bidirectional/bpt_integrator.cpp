@@ -47,48 +47,6 @@ std::vector<std::string> bptLeftOut(const Scene& scene, const BptOptions& opt) {
     return lines;
 }
 
-namespace {
-
-// The technique t = 0 (lesson 11, Eq. 11.16-11.18): with a thin lens, every light vertex y_m takes
-// one more step (connectLens), and where that step's ray meets the lens the path y_0 .. y_m z,
-// s = m + 2, t = 0, is splatted where it lands, MIS-weighted against every other technique. Its
-// weight comes from the same functions as the others' (Eq. 7.5-7.10): the path as a light subpath
-// ending on the lens, with the lens vertex's densities from both sides.
-void lensTechniques(const Scene& scene, const Subpath& light, Rng& rng, const BptOptions& opt, const SplatTarget& splat,
-                    TechniqueRecorder* recorder) {
-    thread_local Subpath x;
-    const int maxDepth = scene.settings.maxDepth;
-    for (int m = 0; m < static_cast<int>(light.size()) && m <= maxDepth; ++m) {
-        const LensConnection c = connectLens(scene, light.data(), m, rng);
-        if (!c.valid) continue;
-        x.assign(light.begin(), light.begin() + m + 1);
-        if (m == 0) {
-            x[0] = c.light;
-            x[0].pdfFwd = pdfLightOrigin(scene, x[0]);
-            x[0].misSum = 0.0;
-        }
-        PathVertex z = c.lens;
-        z.pdfFwd = m == 0 ? pdfLightToward(scene, x[0], z)
-                          : pdfScatter(scene, &x[size_t(m) - 1], x[size_t(m)], z, Transport::Importance);
-        x.push_back(z);
-        // The camera side's densities: of z itself, and of y_m from z; and y_{m-1}'s, which
-        // lightSubpath took from the walk's own next vertex, now from z.
-        ReversePdfs rev;
-        rev.lightEnd = scene.camera.pdfPoint();
-        rev.lightPrev = pdfScatter(scene, nullptr, z, x[size_t(m)], Transport::Radiance);
-        if (m >= 1)
-            x[size_t(m) - 1].pdfRev = pdfScatter(scene, &z, x[size_t(m)], x[size_t(m) - 1], Transport::Radiance);
-        updateMisSum(x, size_t(m) + 1, opt.heuristic);
-        const int s = m + 2;
-        const float w = opt.recursive ? misWeightRecursive(x.data(), s, nullptr, 0, rev, opt.heuristic)
-                                      : misWeightFull(x.data(), s, nullptr, 0, rev, opt.heuristic);
-        splat.add(c.raster, c.value * w);
-        if (recorder) recorder->add(s, 0, c.raster, c.value * splat.scale, c.value * (w * splat.scale));
-    }
-}
-
-}  // namespace
-
 Color bptSample(const Scene& scene, const Vec2& raster, Rng& rng, const BptOptions& opt, const SplatTarget& splat,
                 TechniqueRecorder* recorder) {
     thread_local Subpath camera, light;

@@ -47,4 +47,19 @@ struct LensConnection {
 // times its weight. Not valid for a pinhole camera.
 LensConnection connectLens(const Scene& scene, const PathVertex* y, int m, Rng& rng);
 
+// ---- plumbing (lens_technique.cpp): t = 0 inside lesson 7's bptSample -----------------------
+
+// The MIS weight of the path y_0 .. y_m z that connectLens made (s = m + 2, t = 0; Eq. 11.18),
+// from lesson 7's weights with the lens vertex's densities from both sides: the light side's
+// (pdfLightToward for m = 0, else pdfScatter Importance from y_m) and the camera side's
+// (camera.pdfPoint(); y_m's from z, pdfScatter Radiance). joined (if not null): the full path,
+// x_0 .. x_{m+1}, with those densities in pdfFwd / pdfRev.
+float lensMisWeight(const Scene& scene, const Subpath& light, int m, const LensConnection& c, Heuristic h,
+                    bool recursive, Subpath* joined = nullptr);
+
+// What bptSample adds for t = 0 with a thin lens: connectLens at every light vertex y_m (m <=
+// maxDepth), each valid one splatted at its raster position with its weight (recorder: (m + 2, 0)).
+void lensTechniques(const Scene& scene, const Subpath& light, Rng& rng, const BptOptions& opt, const SplatTarget& splat,
+                    TechniqueRecorder* recorder);
+
 }  // namespace ps

@@ -88,6 +88,14 @@ inline const std::vector<LensCase>& lensCases() {
     return cases;
 }
 
+// A fixed sequence of uniform numbers for Rng::replayFrom: values[0], values[1], ... then 0.5.
+struct Replay : ps::UniformSource {
+    std::vector<float> values;
+    size_t read = 0;
+    explicit Replay(std::vector<float> v) : values(std::move(v)) {}
+    float next() override { return read < values.size() ? values[read++] : (++read, 0.5f); }
+};
+
 // The lens point lensPoint(u) in double.
 inline DVec3 lensPointD(const ps::Camera& cam, const Vec2& u) { return DVec3(cam.lensPoint(u)); }
 
