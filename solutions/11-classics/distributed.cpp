@@ -36,8 +36,8 @@ Color LiDistributed(const Scene& scene, const Ray& cameraRay, Rng& rng, int maxD
         const bool hit = scene.intersect(ray, sp);
         const int light = hit ? sp.light : scene.background;
         if (light >= 0) {
-            const Color Le = hit ? emittedRadiance(scene.lights[size_t(light)], sp.n, -ray.d)
-                                 : scene.backgroundRadiance();
+            const Color Le =
+                hit ? emittedRadiance(scene.lights[size_t(light)], sp.n, -ray.d) : scene.backgroundRadiance();
             const float w = delta ? 1.0f
                                   : misWeight(Heuristic::Power, 1.0f, pdfPrev, 1.0f,
                                               pdfLightDirection(scene, light, pPrev, sp.p, sp.n));

@@ -71,8 +71,8 @@ float Camera::lensWe(const Vec3& z, const Vec3& dir) const {
     //! STUB return PS_TODO("lesson 11: Camera::lensWe", 0.0f);
     //! BEGIN
     const float cosTheta = glm::dot(dir, forward_);
-    Vec2 raster;
-    if (!(cosTheta > 0.0f) || !lensRasterOfDirection(z, dir, raster)) return 0.0f;
+    Vec2 landing;
+    if (!(cosTheta > 0.0f) || !lensRasterOfDirection(z, dir, landing)) return 0.0f;
     const float c2 = cosTheta * cosTheta;
     return pdfLens() / (imagePlaneArea() * c2 * c2);
     //! END

@@ -5,7 +5,8 @@
 //   m = 1: the same light's particle on a mirror turned so that its reflection goes to a chosen lens
 //          point: value = beta_1 * albedo * width * height * W_e (a delta lobe keeps the power);
 //   W_e = 1 / (pi r^2 A cos^4 theta) (Eq. 11.14), raster: where the ray crosses the plane of focus.
-// And not valid where the step misses the lens, where something blocks it, or for a pinhole.
+// And not valid where the step misses the lens, where something blocks it, or for a pinhole. (A
+// black wall stands 1 m behind the camera: the shadow ray ends at the lens, not beyond.)
 #include "lens_support.h"
 
 using namespace lens11;
@@ -36,6 +37,7 @@ ps::Scene scene(float radius, const DVec3& aim, bool blocker) {
     std::string text =
         camera(radius) + "material chrome mirror albedo 0.8 0.9 1\nmaterial black diffuse albedo 0 0 0\n";
     text += "pointlight position 0.5 1 4  intensity 100 100 100\n";
+    text += "quad -2 -2 -1  2 -2 -1  2 2 -1  -2 2 -1  material black\n";  // a wall behind the camera
     text += "quad " + vec(M - a * t1 - a * t2) + vec(M + a * t1 - a * t2) + vec(M + a * t1 + a * t2) +
             vec(M - a * t1 + a * t2) + "material chrome\n";
     if (blocker) {
