@@ -85,6 +85,7 @@ int runRender(const std::vector<std::string>& args) {
         integrator = makeIntegrator(algo);
     }
     if (spp == 0 && seconds == 0.0) spp = scene.settings.spp;
+    checkCamera(scene, *integrator);  // a thin lens it cannot render: one error line, before anything else
 
     Image ref;
     std::ofstream csv;
