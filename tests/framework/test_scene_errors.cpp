@@ -231,8 +231,8 @@ TEST_CASE("scene errors: bad resolution or field of view") {
 
 TEST_CASE("scene errors: a bad thin lens (lens RADIUS focus DISTANCE)") {
     auto camera = [](const std::string& options, std::initializer_list<const char*> words) {
-        const std::string text = "# a comment line\n\ncamera eye 0 0 -5  target 0 0 0  fov 40  resolution 8 8  " +
-                                 options + "\n";
+        const std::string text =
+            "# a comment line\n\ncamera eye 0 0 -5  target 0 0 0  fov 40  resolution 8 8  " + options + "\n";
         INFO("camera options: " << options);
         const std::string msg = errorOf(text);
         CHECK_MESSAGE(msg.rfind("test.scene:3: ", 0) == 0, msg);

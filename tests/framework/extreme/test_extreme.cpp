@@ -9,6 +9,7 @@
 #include <map>
 #include <string>
 #include <vector>
+#include "errors.h"
 #include "format.h"
 #include "statistics.h"
 #include "integrator.h"
@@ -332,7 +333,8 @@ TEST_CASE(
     // mean without the 3 x 3 pixels around the light (lt and bpt see the point light itself
     // there, the path L E, which pt cannot sample), from kRuns renders (seeds apart) each.
     // References: pt for the full transport; lesson 6's path-s1 for its fixed-length
-    // single-technique integrators (path-*); direct-light for lesson 2's direct-* integrators.
+    // single-technique integrators (path-*); direct-light for lesson 2's direct-* integrators and
+    // lesson 11's drt (no diffuse interreflection).
     // BSDF sampling alone never hits a point light: pt-bsdf, direct-bsdf and path-s0 must be
     // exactly black. Welch's t-test, two-sided, alpha = 0.01 with Sidak over every comparison;
     // power: the standard error of the difference must be below 1.5 % of the reference mean
@@ -361,7 +363,9 @@ TEST_CASE(
 
     const auto reference = [](const std::string& algo) -> std::string {
         if (algo.rfind("path-", 0) == 0) return "path-s1";
-        if (algo.rfind("direct-", 0) == 0) return "direct-light";
+        // Distributed ray tracing (lesson 11) has no diffuse interreflection: in this all-diffuse
+        // box it is direct illumination.
+        if (algo.rfind("direct-", 0) == 0 || algo == "drt") return "direct-light";
         return "pt";
     };
     const auto black = [](const std::string& algo) {
@@ -475,4 +479,46 @@ TEST_CASE("extreme: albedo 1 in a closed emitting box at maximum depth 1e5: no p
                                                 << " pixels are not exactly D + 1 = " << exact << " (image mean "
                                                 << meanValue(r.mean) << ", " << lost
                                                 << " bounces missing): paths ended before the maximum depth");
+}
+
+TEST_CASE("extreme: a thin-lens camera: every integrator renders it finite and not black, or refuses it by name") {
+    // scenes/cornell-lens.scene (a lens of radius 40 mm, the box's spheres: glossy, mirror,
+    // diffuse) at 8 x 8, and the same with a lens of 1e-3 mm (nearly a pinhole: the densities
+    // 1 / (pi r^2) near 3e5) and one of 400 mm (wider than the box; most lens points see the
+    // outside): an integrator that says it renders a lens (Integrator::rendersThinLens) must give
+    // no NaN or Inf (and pt, lt, bpt, drt a non-black image); every other one must refuse the
+    // scene with an InputError that names it and the camera line, never render it as if the
+    // camera were a pinhole.
+    const std::string text = scenetext::readText(std::string(PATHSPACE_SOURCE_DIR) + "/scenes/cornell-lens.scene");
+    for (const char* lens : {"lens 40", "lens 0.001", "lens 400"}) {
+        std::string t = text;
+        const size_t at = t.find("lens 40");
+        REQUIRE_MESSAGE(at != std::string::npos, "scenes/cornell-lens.scene no longer says 'lens 40'");
+        t.replace(at, 7, lens);
+        const Scene scene = parseScene(scenetext::transformScene(t, 1.0, 0.0, 8), "cornell-lens.scene");
+        REQUIRE(!scene.camera.isPinhole());
+        for (const std::string& algo : allAlgorithms()) {
+            CAPTURE(lens);
+            CAPTURE(algo);
+            if (!makeIntegrator(algo)->rendersThinLens()) {
+                try {
+                    renderWith(scene, algo, 1);
+                    FAIL_CHECK(algo << " does not render a thin lens but rendered the scene instead of refusing it");
+                } catch (const InputError& e) {
+                    const std::string msg = e.what();
+                    CHECK_MESSAGE((msg.find("cornell-lens.scene:9:") != std::string::npos &&
+                                   msg.find("'" + algo + "' cannot render") != std::string::npos),
+                                  "expected an error naming the camera line and '" << algo << "', got: " << msg);
+                }
+                continue;
+            }
+            const Result r = renderWith(scene, algo, 2);
+            CHECK_MESSAGE(r.stats.bad() == 0,
+                          algo << ": " << r.stats.nan << " NaN and " << r.stats.inf << " Inf samples");
+            // (2 samples of BSDF sampling alone, or of one path length, may well miss the light.)
+            if (algo == "eyelight" || algo == "normals" || algo == "pt" || algo == "lt" || algo == "bpt" ||
+                algo == "drt")
+                CHECK_MESSAGE(!firstNonBlack(r.mean).empty(), algo << " renders the lens box black");
+        }
+    }
 }
