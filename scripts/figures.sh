@@ -51,6 +51,14 @@ reference() {
 }
 # converge SCENE REF OUTDIR ARGS...: pathspace converge quietly into OUTDIR.
 converge() { local s="$1" r="$2" o="$3"; shift 3; "$ps" converge "$s" --reference "$r" --out "$o" --no-progress "$@" > "$o.log"; }
+# The student handout has no reference: the figures come from the student's own pieces, and lesson
+# 8's photon-map pictures (tools/photon_figures.cpp gathers with the reference's code) are left out.
+handout=0
+if [ ! -d solutions ]; then
+  handout=1
+  echo "figures: no solutions/ here (the student handout): the figures are made with your own pieces;" \
+    "lesson 8's photon-map pictures (a lecturer's tool) are left out" >&2
+fi
 n=0
 done_fig() { n=$((n + 1)); echo "figures: wrote $1"; }
 cmake --build "$build" --target diagrams >/dev/null && "$build/diagrams" "${out:-$src/lessons}"  # blackboard SVGs, every lesson
@@ -132,9 +140,11 @@ fi
 # and ppm on the glass caustic at equal time, per region (lessons/08 README, section 5).
 if wanted 08; then
   d="$(dest 08-photon-mapping)"
-  cmake --build "$build" --target photon_figures >/dev/null
-  if [ "$quick" = 1 ]; then "$build/photon_figures" "$d" --quick; else "$build/photon_figures" "$d"; fi > "$work/08-figures.log"
-  done_fig "$d/pm-photons.png, pm-filters.png, pm-caustic-map.png, pm-final-gather.png, pm-ic-records.png"
+  if [ "$handout" = 0 ]; then
+    cmake --build "$build" --target photon_figures >/dev/null
+    if [ "$quick" = 1 ]; then "$build/photon_figures" "$d" --quick; else "$build/photon_figures" "$d"; fi > "$work/08-figures.log"
+    done_fig "$d/pm-photons.png, pm-filters.png, pm-caustic-map.png, pm-final-gather.png, pm-ic-records.png"
+  fi
   s="$(scene glass-caustic 128)"
   r="$(reference bpt "$(t 900 2)" "$s")"
   converge "$s" "$r" "$work/08" --algos pt,bpt,pm,ppm --time "$(t 30 0.3)" --seeds 2 --regions white,mirror,glass
@@ -192,8 +202,8 @@ if wanted 11; then
 fi
 
 # Every image a slide deck shows from a lesson folder must be one this script makes (so one command
-# remakes all of them); checked when every lesson was run.
-if [ ${#only[@]} -eq 0 ]; then
+# remakes all of them); checked when every lesson was run, with the reference.
+if [ ${#only[@]} -eq 0 ] && [ "$handout" = 0 ]; then
   missing=0
   for link in $(grep -ho '](\.\./lessons/[^)]*)' slides/*.md | sed 's/^](\.\.\/lessons\///; s/)$//' | sort -u); do
     if [ ! -f "$(dest "${link%%/*}")/${link#*/}" ] || [ -z "$(find "$(dest "${link%%/*}")/${link#*/}" -newer "$work/start" 2>/dev/null)" ]; then

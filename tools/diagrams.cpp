@@ -3,8 +3,10 @@
 // and slides show the SVGs it writes into lessons/NN-name/.
 //
 //   diagrams [LESSONS_DIR]     writes LESSONS_DIR/NN-name/*.svg (default: lessons; folders are created)
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -43,7 +45,8 @@ std::string num(double v) {
     return s;
 }
 
-// Text with light markup: _x or _{...} is a subscript, ^x or ^{...} a superscript.
+// Text with light markup: _x or _{...} is a subscript, ^x or ^{...} a superscript, ~{X} is X
+// with a tilde above (for a Greek capital, which has no precomposed form).
 std::string markup(const std::string& s) {
     std::string out;
     for (size_t i = 0; i < s.size(); ++i) {
@@ -64,6 +67,12 @@ std::string markup(const std::string& s) {
             const char* back = c == '_' ? "-0.3em" : "0.45em";
             out += std::string("<tspan dy=\"") + dy + "\" font-size=\"72%\">" + markup(body) + "</tspan><tspan dy=\"" +
                    back + "\">\u200b</tspan>";
+        } else if (c == '~' && i + 1 < s.size() && s[i + 1] == '{') {  // ~{X}: X with a tilde above
+            size_t end = s.find('}', i + 2);
+            out += markup(s.substr(i + 2, end - i - 2)) +
+                   "<tspan dx=\"-0.89em\" dy=\"-0.88em\" font-size=\"85%\">~</tspan><tspan dx=\"0.05em\" "
+                   "dy=\"0.75em\">\u200b</tspan>";
+            i = end;
         } else if (c == '&') {
             out += "&amp;";
         } else if (c == '<') {
@@ -131,6 +140,20 @@ public:
            << (italic ? " font-style=\"italic\"" : "") << ">" << markup(t) << "</text>\n";
     }
     void dot(P c, const char* colour = kInk, double r = 6) { circle(c, r, colour); }
+    // A quadratic Bezier curve from a to b bent towards ctrl, with an arrowhead at b.
+    void curveArrow(P a, P ctrl, P b, const char* colour, double width = 2) {
+        P d = normalize(b - ctrl), n{-d.y, d.x};
+        double head = 8 + 3 * width;
+        P end = b - (0.8 * head) * d;
+        s_ << "<path d=\"M" << num(a.x) << "," << num(a.y) << " Q" << num(ctrl.x) << "," << num(ctrl.y) << " "
+           << num(end.x) << "," << num(end.y) << "\" fill=\"none\" stroke=\"" << colour << "\" stroke-width=\""
+           << num(width) << "\"/>\n";
+        polygon({b, b - head * d + (0.45 * head) * n, b - head * d - (0.45 * head) * n}, colour, colour);
+    }
+    void rect(P a, P b, const char* fill, const char* stroke = "none", double opacity = 1, double width = 2) {
+        polygon({a, {b.x, a.y}, b, {a.x, b.y}}, fill, stroke, opacity, width);
+    }
+
     bool save(const std::string& path) const {
         std::ofstream f(path);
         f << "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 " << num(w_) << " " << num(h_)
@@ -497,6 +520,309 @@ Svg bptTechniques() {
     return s;
 }
 
+
+// Lesson 8: a left-balanced kd-tree of 12 photons stored in one array in heap order, and one
+// k-nearest query that never enters half of the tree (8.4, 8.5). The tree is given, not built
+// here (building it is the lesson's task); main checks that it is a kd-tree in heap order.
+struct KdNode {
+    P p;       // position in the unit square (y up)
+    int axis;  // split axis of an inner node: 0 = x, 1 = y; -1 for a leaf
+};
+// Node i at index i (index 0 unused); node i's children are 2i and 2i + 1.
+const std::vector<KdNode> kKdTree = {{{0, 0}, -1},       {{0.66, 0.90}, 0},  {{0.33, 0.45}, 1},  {{0.80, 0.55}, 1},
+                                     {{0.42, 0.12}, 0},  {{0.27, 0.85}, 0},  {{0.93, 0.30}, 0},  {{0.88, 0.80}, -1},
+                                     {{0.18, 0.22}, -1}, {{0.58, 0.35}, -1}, {{0.08, 0.62}, -1}, {{0.50, 0.66}, -1},
+                                     {{0.72, 0.18}, -1}};
+const int kKdSize = static_cast<int>(kKdTree.size()) - 1;
+
+double coord(P p, int axis) { return axis == 0 ? p.x : p.y; }
+// The nodes of the subtree rooted at i.
+std::vector<int> subtree(int i) {
+    std::vector<int> out;
+    if (i > kKdSize) return out;
+    out.push_back(i);
+    for (int c : {2 * i, 2 * i + 1})
+        for (int j : subtree(c)) out.push_back(j);
+    return out;
+}
+// Every photon of a node's left subtree lies at or below its split, of the right at or above;
+// a node has children exactly when it has a split axis.
+bool isHeapKdTree() {
+    for (int i = 1; i <= kKdSize; ++i) {
+        const KdNode& n = kKdTree[i];
+        if ((n.axis >= 0) != (2 * i <= kKdSize)) return false;
+        if (n.axis < 0) continue;
+        for (int j : subtree(2 * i))
+            if (coord(kKdTree[j].p, n.axis) > coord(n.p, n.axis)) return false;
+        for (int j : subtree(2 * i + 1))
+            if (coord(kKdTree[j].p, n.axis) < coord(n.p, n.axis)) return false;
+    }
+    return true;
+}
+// The squared distance of the k-th nearest of `nodes` to x (brute force).
+double kthNearest2(std::vector<int> nodes, P x, int k) {
+    std::vector<double> d2;
+    for (int j : nodes) d2.push_back(std::pow(length(kKdTree[j].p - x), 2));
+    std::sort(d2.begin(), d2.end());
+    return d2[k - 1];
+}
+
+// The split lines of the subtree at i inside its cell [lo, hi] (unit square coordinates).
+void splitLines(Svg& s, int i, P lo, P hi, P (*toScreen)(P), const char* colour) {
+    if (i > kKdSize || kKdTree[i].axis < 0) return;
+    const KdNode& n = kKdTree[i];
+    P a = n.axis == 0 ? P{n.p.x, lo.y} : P{lo.x, n.p.y}, b = n.axis == 0 ? P{n.p.x, hi.y} : P{hi.x, n.p.y};
+    s.line(toScreen(a), toScreen(b), colour, i == 1 ? 3 : 2);
+    splitLines(s, 2 * i, lo, n.axis == 0 ? P{n.p.x, hi.y} : P{hi.x, n.p.y}, toScreen, colour);
+    splitLines(s, 2 * i + 1, n.axis == 0 ? P{n.p.x, lo.y} : P{lo.x, n.p.y}, hi, toScreen, colour);
+}
+
+P kdScreen(P u) { return {50 + 400 * u.x, 470 - 400 * u.y}; }
+
+Svg kdTreeQuery() {
+    Svg s(1000, 600);
+    const P x{0.25, 0.30};
+    const int k = 3;
+    // The search (8.5) at the root: node 2's side first; node 3's side only if delta^2 <= d2max.
+    const double delta = x.x - kKdTree[1].p.x;
+    const double boundAfterLeft = kthNearest2(subtree(2), x, k);
+    if (delta * delta <= boundAfterLeft) {  // the figure says node 3's side is skipped
+        std::fprintf(stderr, "diagrams: the kd-tree query searches both sides of the root; move x\n");
+        std::exit(1);
+    }
+    std::vector<int> all = subtree(1);
+    const double r = std::sqrt(kthNearest2(all, x, k));
+    const std::vector<int> skipped = subtree(3);
+    auto isSkipped = [&](int i) { return std::find(skipped.begin(), skipped.end(), i) != skipped.end(); };
+
+    // Left: the photons in the plane, the split lines, the query.
+    s.rect(kdScreen({kKdTree[1].p.x, 0}), kdScreen({1, 1}), "#e6e6e6", "none", 1);
+    s.rect(kdScreen({0, 0}), kdScreen({1, 1}), "none", kInk, 1, 2.5);
+    splitLines(s, 1, {0, 0}, {1, 1}, kdScreen, kGrey);
+    s.text(kdScreen({0.79, 0.11}), "never", "middle", 18, kGrey);
+    s.text(kdScreen({0.79, 0.11}) + P{0, 22}, "searched", "middle", 18, kGrey);
+    s.circle(kdScreen(x), 400 * r, kRed, kRed, 2.5, 0.08);
+    s.circle(kdScreen(x), 400 * r, "none", kRed, 2.5);
+    for (int i = 1; i <= kKdSize; ++i) {
+        P c = kdScreen(kKdTree[i].p);
+        bool found = length(kKdTree[i].p - x) <= r + 1e-12;
+        if (found) s.circle(c, 12, "none", kRed, 3);
+        s.dot(c, isSkipped(i) ? kGrey : kLight, 7);
+        s.text(c + P{11, -10}, std::to_string(i), "start", 18, isSkipped(i) ? kGrey : kInk);
+    }
+    P xs = kdScreen(x), split = kdScreen({kKdTree[1].p.x, x.y});
+    s.line(xs + P{-9, -9}, xs + P{9, 9}, kRed, 3.5);
+    s.line(xs + P{-9, 9}, xs + P{9, -9}, kRed, 3.5);
+    s.text(xs + P{0, -16}, "x", "middle", 22, kRed, true);
+    s.arrow(xs + P{14, 0}, split, kInk, 2);
+    s.text(lerp(xs, split, 0.55) + P{0, -10}, "δ", "middle", 22, kInk, true);
+    s.text(kdScreen({0, 0}) + P{0, 28}, "12 photons, the split lines of their nodes", "start", 18);
+
+    // Right: the tree, level by level, and the array it lives in.
+    auto nodeAt = [](int i) {
+        int level = 0;
+        while ((2 << level) <= i) ++level;
+        double slot = 420.0 / (1 << level);
+        return P{540 + slot * (i - (1 << level) + 0.5), 95 + 78.0 * level};
+    };
+    for (int i = 2; i <= kKdSize; ++i)
+        s.line(nodeAt(i / 2), nodeAt(i), isSkipped(i) ? "#bbbbbb" : kInk, 2, isSkipped(i) ? "6 5" : nullptr);
+    for (int i = 1; i <= kKdSize; ++i) {
+        P c = nodeAt(i);
+        s.circle(c, 17, isSkipped(i) ? "#eeeeee" : "#fbe3bd", isSkipped(i) ? "#bbbbbb" : kLight, 2);
+        s.text(c + P{0, 6}, std::to_string(i), "middle", 18, isSkipped(i) ? kGrey : kInk);
+        if (kKdTree[i].axis >= 0) s.text(c + P{22, -8}, kKdTree[i].axis == 0 ? "x" : "y", "start", 18, kGrey, true);
+    }
+    s.text({540, 50}, "the tree: each level full but the last, packed left", "start", 18);
+    const double cell = 420.0 / kKdSize, ay = 420;
+    for (int i = 1; i <= kKdSize; ++i) {
+        P a{540 + cell * (i - 1), ay}, b{540 + cell * i, ay + 36};
+        s.rect(a, b, isSkipped(i) ? "#eeeeee" : "#fbe3bd", kInk, 1, 1.5);
+        s.text({0.5 * (a.x + b.x), ay + 25}, std::to_string(i), "middle", 18);
+    }
+    auto cellTop = [&](int i) { return P{540 + cell * (i - 0.5), ay - 2}; };
+    for (int c : {4, 5})
+        s.curveArrow(cellTop(2), 0.5 * (cellTop(2) + cellTop(c)) + P{0, c == 4 ? -30.0 : -56.0}, cellTop(c), kCamera);
+    s.text({540, ay + 62}, "one array in heap order, no pointers:", "start", 18);
+    s.text({540, ay + 86}, "node i's children are 2i and 2i + 1", "start", 18);
+
+    const int nLeft = static_cast<int>(subtree(2).size());
+    s.text({40, 548},
+           "left-balanced: n = " + std::to_string(kKdSize) + " photons fill nodes 1 … " + std::to_string(kKdSize) +
+               ", the root's left subtree holds n_{left} = " + std::to_string(nLeft) + " (8.4)",
+           "start", 18);
+    s.text({40, 578},
+           "k = " + std::to_string(k) +
+               " nearest of x (ringed): after node 2's side d²_{max} < δ², so node 3's side "
+               "is skipped (8.5)",
+           "start", 18);
+    return s;
+}
+
+
+// Lesson 9: a Metropolis chain in primary sample space: small steps, large steps, and the
+// acceptance a = min(1, I(y) / I(x)) (9.2, 9.8, 9.9). Two primary samples (u_0, u_1) stand for
+// the whole vector; I is a made-up luminance with two bright regions.
+struct Blob {
+    P c;
+    double sigma, height;
+};
+const Blob kBlobs[] = {{{0.68, 0.36}, 0.12, 1.0}, {{0.26, 0.72}, 0.10, 0.6}};
+double luminance(P u) {
+    double v = 0.03;
+    for (const Blob& b : kBlobs) v += b.height * std::exp(-std::pow(length(u - b.c), 2) / (2 * b.sigma * b.sigma));
+    return v;
+}
+P pssScreen(P u) { return {50 + 400 * u.x, 470 - 400 * u.y}; }
+
+Svg metropolisChain() {
+    Svg s(1000, 600);
+    // I(u) as nested level sets of each bright region.
+    for (const Blob& b : kBlobs)
+        for (double level : {0.1, 0.3, 0.5, 0.7, 0.9})
+            s.circle(pssScreen(b.c), 400 * b.sigma * std::sqrt(-2 * std::log(level)), kLight, "none", 2,
+                     0.16 * b.height);
+    s.rect(pssScreen({0, 0}), pssScreen({1, 1}), "none", kInk, 1, 2.5);
+    s.text(pssScreen({0.5, 0}) + P{0, 30}, "u_0", "middle", 20, kInk, true);
+    s.text(pssScreen({0, 0.5}) + P{-14, 6}, "u_1", "end", 20, kInk, true);
+    s.text(pssScreen({0, 1}) + P{0, -14}, "[0, 1)², wrapped around: a torus", "start", 18);
+    // The proposals: where each step goes and the uniform number that decides it.
+    struct Step {
+        bool large;
+        P to;
+        double xi;
+        P label;  // where its number goes, from the proposal
+    };
+    const Step steps[] = {{false, {0.58, 0.25}, 0.52, {14, 20}},  {false, {0.66, 0.34}, 0.90, {-16, -10}},
+                          {false, {0.79, 0.45}, 0.74, {12, -10}}, {true, {0.12, 0.14}, 0.40, {-4, 30}},
+                          {true, {0.33, 0.65}, 0.31, {12, -10}},  {false, {0.24, 0.75}, 0.66, {12, -10}}};
+    P x{0.48, 0.17};
+    s.dot(pssScreen(x), kCamera, 8);
+    s.text(pssScreen(x) + P{-12, 22}, "x_0", "end", 20, kCamera, true);
+    const double tx = 520, ty = 78, col[] = {0, 50, 125, 245, 320, 390};
+    const char* head[] = {"step", "kind", "I(y) / I(x)", "a", "ξ", ""};
+    for (int c = 0; c < 6; ++c) s.text({tx + col[c], ty}, head[c], "start", 18, kInk, c == 3 || c == 4);
+    s.line({tx, ty + 10}, {tx + 460, ty + 10}, kInk, 1.5);
+    int i = 1;
+    for (const Step& st : steps) {
+        const double ratio = luminance(st.to) / luminance(x), a = std::min(1.0, ratio);
+        const bool accepted = st.xi < a;
+        const char* colour = st.large ? kBsdf : kCamera;
+        P from = pssScreen(x), to = pssScreen(st.to);
+        P end = to - 11 * normalize(to - from);
+        if (accepted) {
+            s.arrow(from, end, colour, 2.5);
+            s.dot(to, kCamera, 8);
+        } else {
+            s.arrow(from, end, colour, 2, "7 5");
+            s.circle(to, 8, "white", kRed, 2.5);
+        }
+        s.text(to + st.label, std::to_string(i), "start", 18, accepted ? kInk : kRed);
+        char r[16], av[16], xv[16];
+        std::snprintf(r, sizeof r, "%.2f", ratio);
+        std::snprintf(av, sizeof av, "%.2f", a);
+        std::snprintf(xv, sizeof xv, "%.2f", st.xi);
+        const double y = ty + 38 + 30.0 * (i - 1);
+        const std::string cells[] = {
+            std::to_string(i), st.large ? "large" : "small", r, av, xv, accepted ? "accept" : "reject"};
+        for (int c = 0; c < 6; ++c)
+            s.text({tx + col[c], y}, cells[c], "start", 18, c == 1 ? colour : c == 5 ? (accepted ? kInk : kRed) : kInk);
+        if (accepted) x = st.to;
+        ++i;
+    }
+    const double ly = ty + 38 + 30.0 * i;
+    s.text({tx, ly}, "a = min(1, I(y) / I(x)): both steps are", "start", 18);
+    s.text({tx, ly + 26}, "symmetric, T cancels (9.2); accept if ξ < a,", "start", 18);
+    s.text({tx, ly + 52}, "else the chain stays where it is", "start", 18);
+    s.text({tx, ly + 88}, "small: u_k' = u_k ± s_2 e^{−ln(s_2/s_1) ξ} mod 1 (9.9)", "start", 18, kCamera);
+    s.text({tx, ly + 114}, "large: u_k' = ξ_k (9.8), probability p_{large}", "start", 18, kBsdf);
+    // Legend.
+    s.arrow({50, 525}, {100, 525}, kCamera, 2.5);
+    s.text({110, 531}, "small step (drawn enlarged)", "start", 18);
+    s.arrow({380, 525}, {430, 525}, kBsdf, 2.5);
+    s.text({440, 531}, "large step", "start", 18);
+    s.circle({600, 525}, 8, "white", kRed, 2.5);
+    s.text({616, 531}, "rejected proposal", "start", 18);
+    s.circle({800, 525}, 8, "#fbe3bd", "none");
+    s.circle({800, 525}, 5, kLight, "none", 2, 0.5);
+    s.text({816, 531}, "bright I(u)", "start", 18);
+    s.text({50, 572}, "both proposals splat: f/I at x with weight 1 − a, at y with weight a (9.11)", "start", 18,
+           kGrey);
+    return s;
+}
+
+
+// Lesson 10: the weight window around the centre C_ww = I~ / Psi~ (10.5-10.7): roulette below it,
+// nothing inside, splitting above, q clamped at both ends; one path of each kind.
+Svg weightWindow() {
+    Svg s(1000, 570);
+    const double sRatio = 5, qMin = 0.05, qMax = 8;                       // s, q_min, q_max of (10.6), (10.7)
+    const double lower = 2 / (1 + sRatio), upper = sRatio * lower;        // delta^-, delta^+ with C_ww = 1
+    auto at = [](double nu) { return 60 + 220 * (std::log10(nu) + 2); };  // nu / C_ww from 0.01 to 100
+    const double top = 90, bottom = 330, xl = at(lower), xu = at(upper), xc = at(1);
+    const double xMin = at(qMin * lower), xMax = at(qMax * upper);
+    s.rect({at(0.01), top}, {xl, bottom}, "#f6d5d0", "none");
+    s.rect({at(0.01), top}, {xMin, bottom}, "#eab2aa", "none");
+    s.rect({xl, top}, {xu, bottom}, "#cfeedd", "none");
+    s.rect({xu, top}, {at(100), bottom}, "#d6e3f6", "none");
+    s.rect({xMax, top}, {at(100), bottom}, "#b4cbef", "none");
+    s.text({0.5 * (xMin + xl), top + 28}, "Russian roulette", "middle", 20, kRed);
+    s.text({0.5 * (xMin + xl), top + 54}, "q = ν / δ^− < 1", "middle", 18);
+    s.text({0.5 * (xl + xu), top + 28}, "window", "middle", 20, kBsdf);
+    s.text({0.5 * (xl + xu), top + 54}, "q = 1", "middle", 18);
+    s.text({0.5 * (xu + xMax), top + 28}, "splitting", "middle", 20, kCamera);
+    s.text({0.5 * (xu + xMax), top + 54}, "q = ν / δ^+ > 1", "middle", 18);
+    s.text({0.5 * (at(0.01) + xMin), top + 28}, "q_{min}", "middle", 18);
+    s.text({0.5 * (xMax + at(100)), top + 28}, "q = q_{max}", "middle", 18);
+    for (double x : {xl, xu}) s.line({x, top}, {x, bottom + 10}, kInk, 2);
+    s.line({xc, top + 70}, {xc, bottom + 10}, kInk, 1.5, "6 5");
+    s.text({xl, bottom + 34}, "δ^−", "middle", 22, kInk, true);
+    s.text({xu, bottom + 34}, "δ^+", "middle", 22, kInk, true);
+    s.text({xc, bottom + 34}, "C_{ww}", "middle", 22, kInk, true);
+    // The axis: the path's weight nu in units of C_ww, on a log scale.
+    const double ay = bottom + 60;
+    s.arrow({at(0.01), ay}, {at(100) + 24, ay}, kInk, 2);
+    const char* decade[] = {"0.01", "0.1", "1", "10", "100"};
+    for (int d = 0; d < 5; ++d) {
+        const double x = at(std::pow(10.0, d - 2));
+        s.line({x, ay - 7}, {x, ay + 7}, kInk, 2);
+        s.text({x, ay + 28}, decade[d], "middle", 18);
+    }
+    s.text({at(100) + 24, ay + 54}, "ν / C_{ww}, log scale", "end", 18, kInk, true);
+    // One path below the window: roulette with q = 1/8, the survivor weighs delta^-.
+    const double nuLow = lower / 8, yLow = 215;
+    s.dot({at(nuLow), yLow}, kInk, 8);
+    s.text({at(nuLow), yLow + 30}, "ν", "middle", 20, kInk, true);
+    s.arrow({at(nuLow) + 10, yLow}, {xl - 4, yLow}, kInk, 2.5);
+    s.text({at(nuLow) + 60, yLow - 14}, "q = 1/8", "start", 18);
+    s.line({at(nuLow) - 8, yLow + 48}, {at(nuLow) + 8, yLow + 64}, kRed, 3.5);
+    s.line({at(nuLow) - 8, yLow + 64}, {at(nuLow) + 8, yLow + 48}, kRed, 3.5);
+    s.text({at(nuLow) + 16, yLow + 62}, "ends with 1 − q", "start", 18, kRed);
+    // One inside: unchanged.
+    s.dot({at(0.8), yLow}, kInk, 8);
+    s.text({at(0.8), yLow + 30}, "ν", "middle", 20, kInk, true);
+    // One above: split, E[n] = q = 3.5, each part weighs delta^+.
+    const double nuHigh = 3.5 * upper;
+    const P high{at(nuHigh), yLow};
+    s.dot(high, kInk, 8);
+    s.text(high + P{0, 30}, "ν", "middle", 20, kInk, true);
+    for (int k = 0; k < 4; ++k) {
+        P end{xu + 6, yLow - 45 + 30 * k};
+        s.arrow(high + 10 * normalize(end - high), end, kCamera, 2.5, k == 3 ? "6 5" : nullptr);
+    }
+    s.text({xu + 12, yLow + 76}, "q = 3.5: n = 3 or 4,", "start", 18);
+    s.text({xu + 12, yLow + 100}, "E[n] = q", "start", 18);
+    s.text({40, 40}, "a path of weight ν (10.5) meets the window: each continuation goes on with weight ν / q", "start",
+           18);
+    s.text({40, 66}, "(the survivor of the roulette with δ^−, each part of a split with δ^+)", "start", 18, kGrey);
+    s.text({40, 490}, "C_{ww} = Ĩ / ~{Ψ} (10.5),   δ^− = 2 C_{ww} / (1 + s),   δ^+ = s δ^−,   s = 5 (10.6)", "start",
+           18);
+    s.text({40, 520}, "q clamped to [q_{min}, q_{max}] = [0.05, 8] (10.7); n = ⌊q⌋ or ⌊q⌋ + 1 with E[n] = q (10.4)",
+           "start", 18);
+    s.text({40, 550}, "unbiased for any q > 0: E[n] · β/q = β (10.3)", "start", 18, kGrey);
+    return s;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -518,6 +844,13 @@ int main(int argc, char** argv) {
     figures.push_back({"05-light-tracing/light-splat.svg", lightSplat()});
     figures.push_back({"06-path-space/path-vertices.svg", pathVertices()});
     figures.push_back({"07-bidirectional/techniques-k3.svg", bptTechniques()});
+    if (!isHeapKdTree()) {
+        std::fprintf(stderr, "diagrams: kKdTree is not a kd-tree in heap order\n");
+        return 1;
+    }
+    figures.push_back({"08-photon-mapping/kdtree-query.svg", kdTreeQuery()});
+    figures.push_back({"09-metropolis/pss-chain.svg", metropolisChain()});
+    figures.push_back({"10-adrrs/weight-window.svg", weightWindow()});
     for (const Figure& f : figures) {
         std::string path = dir + "/" + f.path;
         std::error_code ec;

@@ -41,6 +41,38 @@ std::set<int> parseLessons(const std::string& s) {
     return wanted;
 }
 
+// One line for the table that says why a test failed: the pieces the test ran into that are still
+// TODO, then the test's own message (doctest's first "logged:" line: what it expected and what it
+// got; its next line too when the first ends in "got"), at most about two lines of a terminal.
+// The test's whole output stays in results.json.
+std::string whyFailed(const TestResult& r) {
+    const std::string& out = r.output;
+    auto line = [&](size_t from) { return out.substr(from, out.find('\n', from) - from); };
+    auto trim = [](std::string t) {
+        const size_t a = t.find_first_not_of(" \t"), b = t.find_last_not_of(" \t\r");
+        return a == std::string::npos ? std::string() : t.substr(a, b - a + 1);
+    };
+    std::string todo;
+    const std::string marker = "TODO not done yet: ";
+    for (size_t p = out.find(marker); p != std::string::npos; p = out.find(marker, p)) {
+        p += marker.size();
+        const std::string piece = trim(out.substr(p, out.find_first_of("(\n", p) - p));
+        if (!piece.empty() && todo.find(piece) == std::string::npos) todo += (todo.empty() ? "" : ", ") + piece;
+    }
+    std::string logged;
+    if (const size_t l = out.find("logged: "); l != std::string::npos) {
+        logged = trim(line(l + 8));
+        const size_t next = out.find('\n', l);
+        if (logged.size() >= 3 && logged.compare(logged.size() - 3, 3, "got") == 0 && next != std::string::npos)
+            logged += " " + trim(line(next + 1));
+    }
+    std::string why = todo.empty() ? "" : marker + todo;
+    if (!logged.empty()) why += (why.empty() ? "" : "; ") + logged;
+    if (why.empty()) return r.message;
+    constexpr size_t kMax = 220;
+    return why.size() > kMax ? why.substr(0, kMax - 3) + "..." : why;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -89,6 +121,7 @@ int main(int argc, char** argv) {
             r.lesson = lesson;
             r.name = name;
             r.points = pointsOf(name);
+            if (!r.passed) r.message = whyFailed(r);
             results.push_back(r);
         }
         if (missing) notes[lesson] = std::to_string(missing) + " graded test(s) did not run";
@@ -99,6 +132,7 @@ int main(int argc, char** argv) {
     double seconds = 0;  // execution_time: the time the tests took in the student's run
     for (const TestResult& r : results) seconds += r.seconds;
     writeReport(results, notes, out, false, seconds);
-    std::cout << "\nWhy a test failed: ctest -L lesson-NN -R 'part of its name' --output-on-failure (in build/)\n";
+    std::cout << "\nA test's whole message: ctest --test-dir build -L lesson-NN -R 'part of its name' "
+                 "--output-on-failure\n";
     return 0;
 }

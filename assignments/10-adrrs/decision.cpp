@@ -7,7 +7,8 @@
 namespace ps {
 
 namespace {
-float meanOf(const Color& c) { return (c.r + c.g + c.b) / 3.0f; }
+// The mean of the three channels (the skeleton does not call it yet: maybe unused).
+[[maybe_unused]] float meanOf(const Color& c) { return (c.r + c.g + c.b) / 3.0f; }
 }  // namespace
 
 float pixelEstimate(const AdjointCache& cache, const Scene& scene, const WalkVertex& x0) {
