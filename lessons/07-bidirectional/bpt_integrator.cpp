@@ -8,7 +8,8 @@
 // it), then every technique (s, t) (Eq. 7.2). t >= 2 goes to the pixel, t = 1 is splatted with
 // the factor 1 / (width * height) of lesson 5 (Eq. 5.4) into a SplatBuffer whose lists are
 // added in a fixed order: the image does not depend on the number of threads (the framework's
-// task loop, framework/tasks.h).
+// task loop, framework/tasks.h). With a thin-lens camera (lesson 11) the technique t = 0 is
+// splatted the same way (lessons/11-classics/lens_technique.cpp).
 //
 // Left out where the scene shows it cannot contribute (Eq. 7.12, exact): see bptLeftOut.
 #include <omp.h>
@@ -116,7 +117,7 @@ struct BptFull : BptBase {
 
 // Accumulation of the technique images for one task (a fixed block of pixels) of one iteration.
 // t >= 2 lands in the task's own pixels and is added at once (no other task writes there);
-// t = 1 lands anywhere and is kept in the task's list, added after the iteration in task order,
+// t = 1 (and t = 0) lands anywhere and is kept in the task's list, added after the iteration in task order,
 // so the images do not depend on the number of threads. NaN/Inf values are counted and left out.
 struct ImageRecorder : TechniqueRecorder {
     struct Splat {
