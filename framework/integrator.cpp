@@ -11,7 +11,7 @@ void PixelIntegrator::renderIteration(const Scene& scene, uint32_t iteration, ui
                                       SampleStats& stats) {
     renderPixelTasks(seed, iteration, out, stats, false, [&](int pixel, Rng& rng, Task&) {
         const Vec2 raster = jitteredRaster(pixel, out.width, rng);
-        return Li(scene, scene.camera.generateRay(raster), rng);
+        return Li(scene, cameraRay(scene.camera, raster, rng), rng);
     });
 }
 
@@ -42,7 +42,11 @@ std::vector<IntegratorInfo> integratorList() {
 
 std::unique_ptr<Integrator> makeIntegrator(const std::string& name) {
     for (const IntegratorInfo& i : registry())
-        if (i.name == name) return i.make();
+        if (i.name == name) {
+            std::unique_ptr<Integrator> made = i.make();
+            made->name = name;
+            return made;
+        }
     std::string known;
     for (const auto& i : integratorList()) known += (known.empty() ? "" : ", ") + i.name;
     throw InputError("unknown algorithm '" + name + "' (known: " + known + ")");

@@ -46,6 +46,11 @@ public:
     // batches of shooting steps). The render loop then keeps only the latest image instead of
     // averaging them (its variance of the mean is 0).
     virtual bool latestIterationIsImage() const { return false; }
+    // Whether it renders a thin-lens camera (lesson 11) correctly. render() refuses a lens scene
+    // otherwise (InputError), rather than render it as something else. False unless an
+    // integrator says so: PixelIntegrator does (the framework's pixel loop makes lens rays).
+    virtual bool rendersThinLens() const { return false; }
+    std::string name;  // the algorithm's name (makeIntegrator sets it), for messages
 };
 
 // An integrator that estimates the radiance along one camera ray per pixel per iteration.
@@ -55,6 +60,7 @@ public:
     virtual Color Li(const Scene& scene, const Ray& ray, Rng& rng) const = 0;
     void renderIteration(const Scene& scene, uint32_t iteration, uint64_t seed, Image& out,
                          SampleStats& stats) override;
+    bool rendersThinLens() const override { return true; }
 };
 
 struct IntegratorInfo {

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <ostream>
 #include <sstream>
+#include "errors.h"
 #include "metrics.h"
 
 namespace ps {
@@ -24,6 +25,26 @@ void drawProgress(int done, int total, double seconds, double budget) {
 
 }  // namespace
 
+void checkCamera(const Scene& scene, const Integrator& integrator) {
+    const Camera& camera = scene.camera;
+    if (camera.isPinhole()) return;
+    const std::string algo = integrator.name.empty() ? "this algorithm" : "'" + integrator.name + "'";
+    if (!integrator.rendersThinLens()) {
+        std::string can;
+        for (const IntegratorInfo& info : integratorList())
+            if (info.make()->rendersThinLens()) can += (can.empty() ? "" : ", ") + info.name;
+        char radius[32];
+        std::snprintf(radius, sizeof radius, "%g", double(camera.lensRadius()));
+        throw InputError(scene.path, camera.line,
+                         std::string("the camera has a thin lens (lens ") + radius + "), which " + algo +
+                             " cannot render (it assumes a pinhole camera); these can: " + can);
+    }
+    if (!Camera::lensRaysAvailable())
+        throw InputError(scene.path, camera.line,
+                         "the camera has a thin lens, but this program was built without lesson 11, whose "
+                         "pieces make its rays");
+}
+
 RenderResult render(const Scene& scene, Integrator& integrator, const RenderOptions& opt) {
     integrator.checkScene(scene);
     if (opt.threads > 0) omp_set_num_threads(opt.threads);
@@ -36,6 +57,7 @@ RenderResult render(const Scene& scene, Integrator& integrator, const RenderOpti
 
     double elapsed = 0.0, lastDraw = -1.0;
     int lastCheckpoint = 0;
+    checkCamera(scene, integrator);
     auto t0 = Clock::now();
     integrator.prepare(scene);
     elapsed += std::chrono::duration<double>(Clock::now() - t0).count();

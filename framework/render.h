@@ -32,6 +32,10 @@ struct RenderResult {
 // CSV header of the error log: one row per iteration.
 extern const char* const kErrorCsvHeader;
 
+// Throws InputError when the scene's camera has a thin lens and the integrator cannot render
+// one (Integrator::rendersThinLens), or the program lacks lesson 11's lens; render() calls it first.
+void checkCamera(const Scene& scene, const Integrator& integrator);
+
 RenderResult render(const Scene& scene, Integrator& integrator, const RenderOptions& opt);
 
 // "16 spp in 1.23 s (4.5 Mrays/s), 0 NaN, 0 Inf samples"

@@ -13,6 +13,7 @@
 #pragma once
 #include <cstdint>
 #include <functional>
+#include "camera.h"
 #include "film.h"
 #include "rng.h"
 
@@ -58,6 +59,12 @@ void renderLightPathTasks(uint64_t seed, uint32_t iteration, Image& out, SampleS
 // first two random numbers of the pixel's generator.
 inline Vec2 jitteredRaster(int pixel, int width, Rng& rng) {
     return Vec2(static_cast<float>(pixel % width) + rng.uniform(), static_cast<float>(pixel / width) + rng.uniform());
+}
+
+// The camera ray through raster position `raster`: the pinhole's (no random number drawn), or a
+// thin lens's through a lens point drawn with the next two numbers of rng (lesson 11).
+inline Ray cameraRay(const Camera& camera, const Vec2& raster, Rng& rng) {
+    return camera.isPinhole() ? camera.generateRay(raster) : camera.sampleRay(raster, rng.uniform2());
 }
 
 }  // namespace ps

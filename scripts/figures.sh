@@ -218,6 +218,27 @@ if wanted 11; then
   done_fig "$d/radiosity-shots.png, radiosity-ambient-shots.png, radiosity-elements.png, radiosity-elements.md, radiosity-elements.svg"
 fi
 
+# lesson 11 (lens): depth of field at two focal distances, distributed ray tracing next to the path
+# tracer at equal samples, and bpt's per-technique images with the technique t = 0 (the thin lens's
+# part of lessons/11-classics/README.md, "Expected output").
+if wanted 11; then
+  d="$(dest 11-classics)"; s="$(scene cornell-lens 128)"
+  sed 's/focus 900/focus 1280/' "$s" > "$work/11-back.scene"
+  for f in "front $s" "back $work/11-back.scene"; do
+    set -- $f
+    "$ps" render "$2" --algo pt --spp "$(t 1024 4)" --seed 1 --out "$work/11-$1.png" --no-progress >&2
+    cp "$work/11-$1.png" "$d/lens-dof-$1.png"
+  done
+  done_fig "$d/lens-dof-front.png, lens-dof-back.png"
+  r="$(reference pt "$(t 180 2)" "$s")"
+  converge "$s" "$r" "$work/11-drt" --algos drt,pt --spp "$(t 256 2)"
+  cp "$work/11-drt/equal-time.png" "$d/lens-drt.png"; done_fig "$d/lens-drt.png"
+  "$ps" pyramid "$s" --max-length 3 --spp "$(t 256 2)" --seed 1 --exposure 1 --out "$work/11-pyramid" > "$work/11-pyramid.log"
+  cp "$work/11-pyramid-unweighted.png" "$d/lens-pyramid-unweighted.png"
+  cp "$work/11-pyramid-weighted.png" "$d/lens-pyramid-weighted.png"
+  done_fig "$d/lens-pyramid-unweighted.png, lens-pyramid-weighted.png"
+fi
+
 # Every image a slide deck shows from a lesson folder must be one this script makes (so one command
 # remakes all of them); checked when every lesson was run, with the reference.
 if [ ${#only[@]} -eq 0 ] && [ "$handout" = 0 ]; then

@@ -117,7 +117,7 @@ int runPyramid(const std::vector<std::string>& args) {
         }
         std::cout << "\n";
     }
-    std::cout << "  black: the technique cannot sample (t = 0: the pinhole; s = 0 with point lights only; "
+    std::cout << "  black: the technique cannot sample (t = 0: a pinhole camera; s = 0 with point lights only; "
                  "a connection at a specular vertex) or found nothing at this spp\n";
     writePNG(out + "-unweighted.png", unweighted, exposure);
     writePNG(out + "-weighted.png", weighted, exposure);

@@ -12,9 +12,13 @@ double pdfTechnique(const Scene& scene, const Path& x, int s) {
     //          pdfA, pdfW (the background's x0 is a direction: pdfW; its x1 the disk point: pdfA |cos|);
     //          then pdfBSDF, or deltaLobe's pdfLight / pdfCamera at a specular vertex (Eq. 6.11).
     //          (with deltaTolerance of the vertex and its two neighbours, as in contribution).
+    //          The camera subpath starts with camera.pdfPoint() (1 for the pinhole) and
+    //          camera.pdfDirection(x_k, ...).
     //          Pitfalls: 0 for what cannot be sampled (Eq. 6.12: t < 1, s = 0 at a point light, a
     //          specular end of the joining edge, t = 1 with x_{k-1} the background); in double;
     //          pdfBSDF's first argument is the direction the walk arrived from; no Russian roulette.
+    //          (Lesson 11: t = 0 when x_k is a lens point, x[k].lens: the light subpath samples
+    //          every vertex, x_k included, and there is no joining edge.)
     (void)scene; (void)x; (void)s;
     return PS_TODO("lesson 06: pdfTechnique", 0.0);
 }

@@ -7,8 +7,10 @@
 namespace ps {
 
 void cameraSubpath(const Scene& scene, Rng& rng, const Vec2& raster, int maxDepth, Heuristic h, Subpath& path) {
-    // TODO(07) Eq. 7.1, 7.3: z_0 = cameraVertex (beta 1, pdfFwd 1: a delta position), then lesson
-    //          3's cameraWalk from camera.generateRay(raster) with a visitor that stores every
+    // TODO(07) Eq. 7.1, 7.3: z_0 = cameraVertex(scene, camera.samplePoint(rng)) (beta 1, pdfFwd
+    //          camera.pdfPoint(): 1 for the pinhole, a delta position; lesson 11: a lens point),
+    //          then lesson 3's cameraWalk from camera.generateRay(raster, z_0's position) with a
+    //          visitor that stores every
     //          vertex it is shown: a hit as a surfaceVertex, a miss as a backgroundVertex if there
     //          is a background (none: end the walk), each with the walk's beta, pdfFwd =
     //          pdfScatter Radiance, then z_{i-2}.pdfRev = pdfScatter Importance and

@@ -24,8 +24,9 @@ float pdfLightToward(const Scene& scene, const PathVertex& light, const PathVert
 
 float pdfScatter(const Scene& scene, const PathVertex* prev, const PathVertex& cur, const PathVertex& next,
                  Transport mode) {
-    // TODO(07) Eq. 7.3, 7.7a: the solid-angle density with which `cur` (the pinhole, or a surface
-    //          arrived at from prev) samples the direction to `next`, through pdfSolidAngleToArea.
+    // TODO(07) Eq. 7.3, 7.7a: the solid-angle density with which `cur` (the camera: isCamera(),
+    //          camera.pdfDirection(its position, direction); or a surface arrived at from prev)
+    //          samples the direction to `next`, through pdfSolidAngleToArea.
     //          A specular cur: deltaLobe's coefficient, pdfLight when walking with the light
     //          (Importance), pdfCamera against it (Radiance). Pitfalls: the delta's coefficient is
     //          not 0; use it even if lobe.valid is false (rounding on a very short segment).

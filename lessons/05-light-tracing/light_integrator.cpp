@@ -14,6 +14,10 @@
 
 namespace ps {
 
+CameraConnection connectToCamera(const Scene& scene, const SurfacePoint& y, bool onSurface) {
+    return connectToCamera(scene, y, onSurface, scene.camera.position());
+}
+
 namespace {
 
 struct LightTracer : Integrator {
@@ -32,6 +36,9 @@ struct LightTracer : Integrator {
             "light paths beyond the lights: every surface is specular or black, so no later vertex can be "
             "connected to the pinhole (lesson 5, Eq. 5.9)"};
     }
+
+    // A thin lens (lesson 11): traceLightPath connects each path to a point on the lens.
+    bool rendersThinLens() const override { return true; }
 
     void renderIteration(const Scene& scene, uint32_t iteration, uint64_t seed, Image& out,
                          SampleStats& stats) override {

@@ -33,14 +33,20 @@ LightPathStart startLightPath(const Scene& scene, float uLight, const Vec2& uPos
 struct CameraConnection {
     bool valid = false;       // the camera sees y: in front of it, inside the image, unoccluded
     Vec2 raster;              // where y lands on the image (camera.rasterPosition)
-    Vec3 wCam;                // unit direction from y towards the pinhole
-    float importance = 0.0f;  // W_e^(j)(e -> y) G(y, e): the pixel's sensor (lesson 4, Eq. 4.6)
-                              // times the geometry term cos(theta_e) |cos(theta_y)| / d^2;
-                              // without |cos(theta_y)| when y is not on a surface (a point light)
+    Vec3 wCam;                // unit direction from y towards the pinhole (the camera point z)
+    float importance = 0.0f;  // W_e^(j)(e -> y) G(y, e) / p(e): the pixel's sensor (lesson 4,
+                              // Eq. 4.6) times the geometry term cos(theta_e) |cos(theta_y)| / d^2,
+                              // without |cos(theta_y)| when y is not on a surface (a point light),
+                              // over the density of the camera point e, camera.pdfPoint() (1 for
+                              // the pinhole; a lens point's, lesson 11)
 };
 
-// Connects y to the camera (Eq. 5.5). onSurface: y lies on a surface with normal y.n (false for
-// a point light's position).
+// Connects y to the camera point z (Eq. 5.5): the pinhole camera.position(), or (lesson 11) a
+// point on a thin lens, for which camera.rasterPosition(z, ...) and camera.We(z, ...) hold the
+// lens's own raster position and importance (for the pinhole they are the one-point forms).
+// onSurface: y lies on a surface with normal y.n (false for a point light's position).
+CameraConnection connectToCamera(const Scene& scene, const SurfacePoint& y, bool onSurface, const Vec3& z);
+// The same for the pinhole, z = camera.position() (plumbing).
 CameraConnection connectToCamera(const Scene& scene, const SurfacePoint& y, bool onSurface);
 
 // The adjoint BSDF (Eq. 5.6-5.8): a particle arrived at a surface with normal n from wLight
@@ -81,7 +87,9 @@ void lightWalk(const Scene& scene, Rng& rng, int maxDepth, const LightWalkVisito
 
 // One light path (Eq. 5.1-5.4): the light walk, whose visitor connects y0 and every
 // non-specular vertex to the camera and adds each connection's contribution through
-// out.add(raster, value) (a SplatTarget, framework/film.h).
+// out.add(raster, value) (a SplatTarget, framework/film.h). Every connection goes to one camera
+// point z, drawn before the walk: the pinhole (no number drawn), or for a thin lens (lesson 11) a
+// point on the lens.
 void traceLightPath(const Scene& scene, Rng& rng, int maxDepth, const SplatTarget& out);
 
 }  // namespace ps

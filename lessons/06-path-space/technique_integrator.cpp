@@ -14,6 +14,7 @@ namespace {
 struct TechniqueIntegrator : Integrator {
     int k, s;  // k < 0: maxdepth + 1; s < 0: s = k (t = 1)
     TechniqueIntegrator(int k_, int s_) : k(k_), s(s_) {}
+    bool rendersThinLens() const override { return true; }  // sampleTechnique takes lens points
 
     void renderIteration(const Scene& scene, uint32_t iteration, uint64_t seed, Image& out,
                          SampleStats& stats) override {

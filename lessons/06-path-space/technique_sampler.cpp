@@ -1,5 +1,5 @@
 // Lesson 6 — plumbing (nothing to write here): sampling a path of length k with technique
-// (s, t = k + 1 - s) (Eq. 6.8), and the estimate f(x) / p_{s,t}(x) of one such path (Eq. 6.2),
+// (s, t = k + 1 - s) (Eq. 6.8; t = 0 only with a thin lens, lesson 11), and the estimate f(x) / p_{s,t}(x) of one such path (Eq. 6.2),
 // which uses your contribution and pdfTechnique. Interface: lessons/06-path-space/paths.h.
 #include "06-path-space/paths.h"
 
@@ -8,7 +8,9 @@ namespace ps {
 TechniqueSample sampleTechnique(const Scene& scene, int k, int s, Rng& rng) {
     TechniqueSample ts;
     const int t = k + 1 - s;
-    if (k < 1 || s < 0 || t < 1) return ts;  // t = 0: a ray cannot hit the pinhole
+    const Camera& camera = scene.camera;
+    if (k < 1 || s < 0 || t < 0) return ts;
+    if (t == 0 && camera.isPinhole()) return ts;  // a ray cannot hit the pinhole (a thin lens it can)
     Path& x = ts.x;
     x.resize(size_t(k) + 1);
     // The light subpath x0 ... x_{s-1}: a light chosen by power, a point and a direction on it,
@@ -21,7 +23,9 @@ TechniqueSample sampleTechnique(const Scene& scene, int k, int s, Rng& rng) {
         if (!(e.pdfA > 0.0f && e.pdfW > 0.0f)) return ts;
         x[0] = lightVertex(scene, l, e);
         Ray ray = x[0].infinite ? Ray(e.p, e.dir) : scene.spawnRay(x[0].sp, e.dir);
-        for (int i = 1; i <= s - 1; ++i) {
+        // t = 0: the light subpath's last vertex x_k is where its last ray meets the lens.
+        const int surfaces = t == 0 ? s - 2 : s - 1;
+        for (int i = 1; i <= surfaces; ++i) {
             SurfacePoint sp;
             if (!scene.intersect(ray, sp)) return ts;
             x[size_t(i)] = surfaceVertex(scene, sp);
@@ -32,14 +36,22 @@ TechniqueSample sampleTechnique(const Scene& scene, int k, int s, Rng& rng) {
                 return ts;
             ray = scene.spawnRay(sp, b.wi);
         }
+        if (t == 0) {  // visibility up to the lens is f's (visible())
+            float tz = 0.0f;
+            Vec3 z;
+            if (!camera.hitLens(ray, tz, z) || !camera.lensRasterOfDirection(z, -ray.d, ts.raster)) return ts;
+            x[size_t(k)] = cameraVertex(scene, z);
+            ts.valid = true;
+            return ts;
+        }
     }
-    // The camera subpath x_k ... x_s: the pinhole, a ray through a uniform raster position,
-    // then the BSDF in Radiance mode (the path tracer's directions, lesson 3).
-    x[size_t(k)] = cameraVertex(scene);
-    const Camera& camera = scene.camera;
+    // The camera subpath x_k ... x_s: the camera point (the pinhole, or a point on a thin lens), a
+    // ray through a uniform raster position, then the BSDF in Radiance mode (the path tracer's
+    // directions, lesson 3).
+    x[size_t(k)] = cameraVertex(scene, camera.samplePoint(rng));
     if (t >= 2) {
         ts.raster = Vec2(rng.uniform() * float(camera.width()), rng.uniform() * float(camera.height()));
-        Ray ray = camera.generateRay(ts.raster);
+        Ray ray = camera.generateRay(ts.raster, x[size_t(k)].p());
         for (int j = k - 1; j >= s; --j) {
             SurfacePoint sp;
             if (!scene.intersect(ray, sp)) {
@@ -58,7 +70,8 @@ TechniqueSample sampleTechnique(const Scene& scene, int k, int s, Rng& rng) {
         if (s == 0 && !x[0].onLight) return ts;  // the camera subpath must end on a light
     } else {
         // t = 1: the pixel is where x_{k-1} projects (lesson 5's splat).
-        if (x[size_t(k) - 1].infinite || !camera.rasterPosition(x[size_t(k) - 1].sp.p, ts.raster)) return ts;
+        if (x[size_t(k) - 1].infinite || !camera.rasterPosition(x[size_t(k)].p(), x[size_t(k) - 1].sp.p, ts.raster))
+            return ts;
     }
     ts.valid = true;
     return ts;

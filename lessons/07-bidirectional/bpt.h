@@ -22,6 +22,11 @@
 // sample a path carries each specular delta exactly once, so the coefficients are what (7.5)
 // compares. The pinhole is chosen with probability 1 and a point light with P(l) (delta
 // positions: coefficients again); a density that is 0 means "cannot be sampled this way".
+//
+// A thin lens (lesson 11): z_0 is a point on the lens (PathVertex::lens), sampled with
+// camera.pdfPoint() per unit area, and no longer a delta position: a light subpath can hit it,
+// which is the technique t = 0 (lessons/11-classics/thinlens.h; bptSample adds it). For a pinhole
+// camera.pdfPoint() is 1 and every camera function of z is the pinhole's.
 #pragma once
 #include <functional>
 #include <vector>
@@ -31,7 +36,8 @@
 
 namespace ps {
 
-// A subpath: y_0 (on a light) .. y_{s-1}, or z_0 (the pinhole) .. z_{t-1} (Eq. 7.1).
+// A subpath: y_0 (on a light) .. y_{s-1}, or z_0 (the camera: the pinhole, or a lens point) ..
+// z_{t-1} (Eq. 7.1).
 using Subpath = std::vector<PathVertex>;
 
 // ---- vertex pdfs (vertex_pdfs.cpp), one function for sampling and for MIS (Eq. 7.3) ----
@@ -48,8 +54,8 @@ float pdfLightOrigin(const Scene& scene, const PathVertex& v);
 // 1 / (pi R^2) * |cos theta_to| (the disk of sampleEmission, R = scene.radius).
 float pdfLightToward(const Scene& scene, const PathVertex& light, const PathVertex& to);
 
-// Area density with which `cur` samples `next` (Eq. 7.3, 7.7a): cur is the pinhole:
-// camera.pdfDirection; a surface: pdfBSDF(material, n, towards prev, towards next); prev may be null
+// Area density with which `cur` samples `next` (Eq. 7.3, 7.7a): cur is the camera (isCamera()):
+// camera.pdfDirection(cur's position, direction); a surface: pdfBSDF(material, n, towards prev, towards next); prev may be null
 // only for the camera. A specular cur: the coefficient of its delta, lesson 6's deltaLobe,
 // which depends on the direction of the walk: mode Importance (walking with the light, as the
 // light subpath: prev is on the light side) deltaLobe(m, n, towards prev, towards next).pdfLight;
@@ -67,7 +73,8 @@ float pdfScatter(const Scene& scene, const PathVertex* prev, const PathVertex& c
 // once y_i exists, the flags, and, after each vertex, updateMisSum(path, i, h). Clears path first.
 void lightSubpath(const Scene& scene, Rng& rng, int maxDepth, Heuristic h, Subpath& path);
 
-// The camera subpath through raster position `raster`: z_0 the pinhole, then lesson 3's
+// The camera subpath through raster position `raster`: z_0 the camera point (cameraVertex of
+// camera.samplePoint(rng): the pinhole, or a lens point drawn from rng), then lesson 3's
 // cameraWalk, whose visitor stores one vertex per intersection; at most maxDepth + 2 vertices; a
 // ray that leaves the scene ends it with a vertex at infinity if there is a background. Clears
 // path first.
@@ -104,9 +111,12 @@ struct Connection {
 // s = 0, t >= 2: z_{t-1} is on an emitter or at infinity: c = Le(z_{t-1} -> z_{t-2}).
 Connection connectEmitter(const Scene& scene, const PathVertex* z, int t);
 
-// t = 1, s >= 1: y_{s-1} joined to the pinhole by lesson 5's connectToCamera (c = f W_e G; for
-// s = 1 the light's own emission towards the camera); raster: where it lands. Not valid for a
-// background y_0 (a direction cannot be joined to the pinhole).
+// t = 1, s >= 1: y_{s-1} joined to the camera point z0 (the camera subpath's z_0: the pinhole, or
+// its point on a thin lens) by lesson 5's connectToCamera (c = f W_e G; for s = 1 the light's own
+// emission towards the camera); raster: where it lands. Not valid for a background y_0 (a
+// direction cannot be joined to the camera).
+Connection connectCamera(const Scene& scene, const PathVertex* y, int s, const PathVertex& z0);
+// The same joined to the pinhole's vertex cameraVertex(scene) (plumbing, techniques.cpp).
 Connection connectCamera(const Scene& scene, const PathVertex* y, int s);
 
 // s = 1, t >= 2: a new light vertex for z_{t-1} (next-event estimation, lesson 2: the light by
@@ -126,25 +136,30 @@ Connection connect(const Scene& scene, const Subpath& light, const Subpath& came
 // ---- MIS weights (mis_full.cpp, mis_recursive.cpp), Eq. 7.5-7.10 ----
 
 // Whether technique s' of a full path of n vertices x_0 .. x_{n-1} (x_0 on the light, x_{n-1}
-// the camera) can sample it (Eq. 7.7): t' = n - s' >= 1; s' = 0 needs x_0 not a point light;
-// otherwise x_{s'-1} and x_{s'} both non-specular, and not a background vertex joined straight to
-// the camera (s' = 1, t' = 1, x_0 infinite).
+// the camera) can sample it (Eq. 7.7): t' = n - s' >= 1, or t' = 0 when x_{n-1} is a point on a
+// thin lens (lesson 11: no joining edge then); s' = 0 needs x_0 not a point light; otherwise
+// x_{s'-1} and x_{s'} both non-specular, and not a background vertex joined straight to the
+// camera (s' = 1, t' = 1, x_0 infinite).
 bool techniqueSamples(const PathVertex* x, int n, int sPrime);
 
 // w_{s,t} from the full list p_0 .. p_n of the joined path's techniques (Eq. 7.5-7.7): build
 // x_0 .. x_{n-1} (y then z reversed), with pL[i] (density from the light side) and pE[i] (from
 // the camera side) from pdfFwd/pdfRev and the connection's rev; p_s' = prod_{i<s'} pL[i]
 // prod_{i>=s'} pE[i] (the stored numbers as they are: no 0 is replaced), and w = p_s^b / sum over sampling techniques of p_s'^b.
-// y: s vertices (s = 1: &c.sampledLight), z: t vertices.
+// y: s vertices (s = 1: &c.sampledLight), z: t vertices. t = 0 (a thin lens, lesson 11): y holds
+// the whole path, its last vertex on the lens; rev.lightEnd and rev.lightPrev are then the camera
+// side's densities of y_{s-1} (camera.pdfPoint()) and y_{s-2}.
 float misWeightFull(const PathVertex* y, int s, const PathVertex* z, int t, const ReversePdfs& rev, Heuristic h);
 
 // The recursive partial sum (Eq. 7.9) for vertex i of a subpath, once path[i-2].pdfRev is
 // known: B_0 = B_1 = 0, B_i = r_{i-2}^b (c_{i-2} + B_{i-1}), r_j = pdfRev/pdfFwd of path[j]
 // (0 if pdfFwd is 0), c_j whether the connection may sit just before path[j] (Eq. 7.10).
-// Light subpaths: c_0 = not a point light; camera subpaths: c_0 = 0. Stores it in path[i].misSum.
+// Light subpaths: c_0 = not a point light; camera subpaths: c_0 = 0 at a pinhole, 1 at a lens
+// point (t = 0, lesson 11). Stores it in path[i].misSum.
 void updateMisSum(Subpath& path, size_t i, Heuristic h);
 
-// The same weight as misWeightFull with O(1) work (Eq. 7.8-7.10), from the endpoints' misSum.
+// The same weight as misWeightFull with O(1) work (Eq. 7.8-7.10), from the endpoints' misSum
+// (t = 0: no camera subpath, z unused).
 float misWeightRecursive(const PathVertex* y, int s, const PathVertex* z, int t, const ReversePdfs& rev, Heuristic h);
 
 // ---- the integrator (plumbing, bpt_integrator.cpp) ----
@@ -162,13 +177,14 @@ struct BptOptions {
 // What one pixel sample's techniques gave, for per-technique images (Veach's pyramid).
 struct TechniqueRecorder {
     virtual ~TechniqueRecorder() = default;
-    // t >= 2: the pixel of the camera subpath; t = 1: raster is where it landed (already
+    // t >= 2: the pixel of the camera subpath; t = 0, 1: raster is where it landed (already
     // scaled by 1 / (width * height) like every light-tracing splat).
     virtual void add(int s, int t, const Vec2& raster, const Color& unweighted, const Color& weighted) = 0;
 };
 
 // One pixel sample: a camera subpath through `raster`, a light subpath, every (s, t). Returns
-// the t >= 2 estimate for the pixel; t = 1 contributions go to splat. recorder may be null.
+// the t >= 2 estimate for the pixel; t = 1 contributions go to splat, and so does t = 0 with a
+// thin lens (lesson 11's connectLens at every light vertex). recorder may be null.
 Color bptSample(const Scene& scene, const Vec2& raster, Rng& rng, const BptOptions& opt, const SplatTarget& splat,
                 TechniqueRecorder* recorder);
 

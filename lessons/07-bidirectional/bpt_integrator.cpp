@@ -8,11 +8,13 @@
 // it), then every technique (s, t) (Eq. 7.2). t >= 2 goes to the pixel, t = 1 is splatted with
 // the factor 1 / (width * height) of lesson 5 (Eq. 5.4) into a SplatBuffer whose lists are
 // added in a fixed order: the image does not depend on the number of threads (the framework's
-// task loop, framework/tasks.h).
+// task loop, framework/tasks.h). With a thin-lens camera (lesson 11) the technique t = 0 is
+// splatted the same way (lessons/11-classics/lens_technique.cpp).
 //
 // Left out where the scene shows it cannot contribute (Eq. 7.12, exact): see bptLeftOut.
 #include <omp.h>
 #include "07-bidirectional/bpt.h"
+#include "11-classics/thinlens.h"
 #include "tasks.h"
 
 namespace ps {
@@ -35,7 +37,8 @@ Pruning pruning(const Scene& scene, const BptOptions& opt) {
 std::vector<std::string> bptLeftOut(const Scene& scene, const BptOptions& opt) {
     if (!opt.prune || !scene.settings.prune) return {};
     std::vector<std::string> lines;
-    lines.push_back("t = 0 techniques: the pinhole is a delta position no ray can hit (Eq. 7.12)");
+    if (scene.camera.isPinhole())
+        lines.push_back("t = 0 techniques: the pinhole is a delta position no ray can hit (Eq. 7.12)");
     const Pruning p = pruning(scene, opt);
     if (p.s0) lines.push_back("s = 0 techniques: no light can be hit (point lights only) (Eq. 7.12)");
     if (scene.caps.hasDeltaBSDF())
@@ -85,6 +88,7 @@ Color bptSample(const Scene& scene, const Vec2& raster, Rng& rng, const BptOptio
             }
         }
     }
+    if (!scene.camera.isPinhole()) lensTechniques(scene, light, rng, opt, splat, recorder);
     return L;
 }
 
@@ -93,6 +97,7 @@ namespace {
 struct BptBase : Integrator {
     BptOptions opt;
     std::vector<std::string> leftOut(const Scene& scene) const override { return bptLeftOut(scene, opt); }
+    bool rendersThinLens() const override { return true; }  // t = 0 included (lesson 11)
 
     void renderIteration(const Scene& scene, uint32_t iteration, uint64_t seed, Image& out,
                          SampleStats& stats) override {
@@ -113,7 +118,7 @@ struct BptFull : BptBase {
 
 // Accumulation of the technique images for one task (a fixed block of pixels) of one iteration.
 // t >= 2 lands in the task's own pixels and is added at once (no other task writes there);
-// t = 1 lands anywhere and is kept in the task's list, added after the iteration in task order,
+// t = 1 (and t = 0) lands anywhere and is kept in the task's list, added after the iteration in task order,
 // so the images do not depend on the number of threads. NaN/Inf values are counted and left out.
 struct ImageRecorder : TechniqueRecorder {
     struct Splat {
@@ -134,7 +139,7 @@ struct ImageRecorder : TechniqueRecorder {
             checkSample(isFinite(unweighted) ? weighted : unweighted, *stats);
             return;
         }
-        if (t == 1) splats->push_back({i, x, y, unweighted, weighted});
+        if (t <= 1) splats->push_back({i, x, y, unweighted, weighted});
         else accumulate(*images, i, x, y, unweighted, weighted);
     }
     static void accumulate(TechniqueImages& images, size_t i, int x, int y, const Color& u, const Color& w) {

@@ -5,13 +5,17 @@
 
 namespace ps {
 
+Connection connectCamera(const Scene& scene, const PathVertex* y, int s) {
+    return connectCamera(scene, y, s, cameraVertex(scene));
+}
+
 Connection connect(const Scene& scene, const Subpath& light, const Subpath& camera, int s, int t, float uLight,
                    const Vec2& uPos) {
     Connection c;
     if (s == 0) c = connectEmitter(scene, camera.data(), t);
     else if (t == 1) {
-        c = connectCamera(scene, light.data(), s);
-        c.sampledLight = light[0];  // the MIS reads y_0 from here whenever s = 1
+        c = connectCamera(scene, light.data(), s, camera[0]);  // the camera subpath's z_0
+        c.sampledLight = light[0];                             // the MIS reads y_0 from here whenever s = 1
     } else if (s == 1) c = connectLight(scene, camera.data(), t, uLight, uPos);
     else c = connectVertices(scene, light.data(), s, camera.data(), t);
     if (c.valid) c.rev = connectionPdfs(scene, s == 1 ? &c.sampledLight : light.data(), s, camera.data(), t);

@@ -59,10 +59,15 @@ struct PhotonMapper : Integrator {
     static void renderPixels(const Scene& scene, uint32_t iteration, uint64_t seed, Image& out, const PhotonMaps& maps,
                              const PmOptions& opt, SampleStats& stats) {
         renderPixelTasks(seed, iteration, out, stats, false, [&](int pixel, Rng& rng, Task&) {
-            const Ray ray = scene.camera.generateRay(jitteredRaster(pixel, out.width, rng));
+            const Ray ray = cameraRay(scene.camera, jitteredRaster(pixel, out.width, rng), rng);
             return LiPhotonMap(scene, ray, rng, maps, opt);
         });
     }
+
+    // A thin lens (lesson 11): the camera rays go through it (tasks.h, cameraRay); the photon
+    // maps do not depend on the camera. (pm-ic's cache is filled from the pinhole's rays through
+    // the pixel centres; where a lens ray's point has no record it gathers as pm.)
+    bool rendersThinLens() const override { return true; }
 
     void renderIteration(const Scene& scene, uint32_t iteration, uint64_t seed, Image& out,
                          SampleStats& stats) override {

@@ -29,6 +29,7 @@ constexpr uint64_t kPpmSalt = 0x6A09E667F3BCC909ull;
 int photonsPerPass(const Image& out) { return std::max(kMinPhotons, 4 * out.width * out.height); }
 
 struct ProgressivePhotonMapper : Integrator {
+    bool rendersThinLens() const override { return true; }  // lens rays (tasks.h, cameraRay), lesson 11
     void renderIteration(const Scene& scene, uint32_t iteration, uint64_t seed, Image& out,
                          SampleStats& stats) override {
         const double r1 = double(kInitialRadius) * scene.radius;
@@ -37,7 +38,7 @@ struct ProgressivePhotonMapper : Integrator {
         const PhotonMap map =
             tracePhotonMap(scene, MapKind::Global, photonsPerPass(out), maxDepth, seed ^ kPpmSalt, iteration, stats);
         renderPixelTasks(seed, iteration, out, stats, false, [&](int pixel, Rng& rng, Task&) {
-            const Ray ray = scene.camera.generateRay(jitteredRaster(pixel, out.width, rng));
+            const Ray ray = cameraRay(scene.camera, jitteredRaster(pixel, out.width, rng), rng);
             return LiProgressive(scene, ray, rng, map, r2, maxDepth);
         });
     }

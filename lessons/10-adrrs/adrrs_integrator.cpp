@@ -52,7 +52,7 @@ AdjointCache ADRRSPathTracer::prePass(const Scene& scene, int paths, int resolut
     runTasks(paths, seed, 0, nullptr, 1.0f, stats, [&](int i, Rng& rng, Task& task) {
         const Vec2 raster = jitteredRaster(i % pixels, width, rng);
         std::vector<PrePassVertex> path;
-        cameraWalk(scene, scene.camera.generateRay(raster), rng, maxDepth, [&](const WalkVertex& v) {
+        cameraWalk(scene, cameraRay(scene.camera, raster, rng), rng, maxDepth, [&](const WalkVertex& v) {
             PrePassVertex x;
             x.beta = v.beta;
             if (v.hit && !scene.materials[v.sp.material].isDelta()) x.entry = cache.entry(v.sp.p, v.sp.n, v.wo);
@@ -132,7 +132,7 @@ void ADRRSPathTracer::renderIteration(const Scene& scene, uint32_t iteration, ui
     std::vector<PathCounts> taskCounts(size_t(taskCount(out.width * out.height)));
     renderPixelTasks(seed, iteration, out, stats, false, [&](int pixel, Rng& rng, Task& task) {
         const Vec2 raster = jitteredRaster(pixel, out.width, rng);
-        return Li(scene, scene.camera.generateRay(raster), rng, taskCounts[task.index]);
+        return Li(scene, cameraRay(scene.camera, raster, rng), rng, taskCounts[task.index]);
     });
     for (const PathCounts& c : taskCounts) counts_ += c;  // in task order
 }

@@ -12,16 +12,20 @@ double pdfTechnique(const Scene& scene, const Path& x, int s) {
     //!          pdfA, pdfW (the background's x0 is a direction: pdfW; its x1 the disk point: pdfA |cos|);
     //!          then pdfBSDF, or deltaLobe's pdfLight / pdfCamera at a specular vertex (Eq. 6.11).
     //!          (with deltaTolerance of the vertex and its two neighbours, as in contribution).
+    //!          The camera subpath starts with camera.pdfPoint() (1 for the pinhole) and
+    //!          camera.pdfDirection(x_k, ...).
     //!          Pitfalls: 0 for what cannot be sampled (Eq. 6.12: t < 1, s = 0 at a point light, a
     //!          specular end of the joining edge, t = 1 with x_{k-1} the background); in double;
     //!          pdfBSDF's first argument is the direction the walk arrived from; no Russian roulette.
+    //!          (Lesson 11: t = 0 when x_k is a lens point, x[k].lens: the light subpath samples
+    //!          every vertex, x_k included, and there is no joining edge.)
     //! STUB (void)scene; (void)x; (void)s;
     //! STUB return PS_TODO("lesson 06: pdfTechnique", 0.0);
     //! BEGIN
     const int k = int(x.size()) - 1, t = k + 1 - s;
-    if (k < 1 || s < 0 || t < 1) return 0.0;
+    if (k < 1 || s < 0 || t < 0 || (t == 0 && !x[size_t(k)].lens)) return 0.0;
     if (s == 0 && (!x[0].onLight || x[0].pointLight)) return 0.0;
-    if (s >= 1 && (x[size_t(s) - 1].specular || x[size_t(s)].specular)) return 0.0;
+    if (s >= 1 && t >= 1 && (x[size_t(s) - 1].specular || x[size_t(s)].specular)) return 0.0;
     if (t == 1 && x[size_t(k) - 1].infinite) return 0.0;  // the background joined straight to the pinhole
     double p = 1.0;
     // The light subpath x0 ... x_{s-1} (Eq. 6.8).
@@ -50,11 +54,12 @@ double pdfTechnique(const Scene& scene, const Path& x, int s) {
             p *= pdfSolidAngleToArea(pdfW, v, x[size_t(i) + 1]);
         }
     }
-    // The camera subpath x_k ... x_s (Eq. 6.9): the pinhole is a delta position.
+    // The camera subpath x_k ... x_s (Eq. 6.9): the pinhole is a delta position (pdfPoint 1).
+    const Camera& camera = scene.camera;
+    if (t >= 1) p *= camera.pdfPoint();
     if (t >= 2) {
-        const Camera& camera = scene.camera;
-        p *= pdfSolidAngleToArea(camera.pdfDirection(direction(x[size_t(k)], x[size_t(k) - 1])), x[size_t(k)],
-                                 x[size_t(k) - 1]);
+        p *= pdfSolidAngleToArea(camera.pdfDirection(x[size_t(k)].p(), direction(x[size_t(k)], x[size_t(k) - 1])),
+                                 x[size_t(k)], x[size_t(k) - 1]);
         for (int j = k - 1; j >= s + 1; --j) {
             const PathVertex& v = x[size_t(j)];
             const Material& m = scene.materials[size_t(v.sp.material)];

@@ -7,8 +7,10 @@
 namespace ps {
 
 void cameraSubpath(const Scene& scene, Rng& rng, const Vec2& raster, int maxDepth, Heuristic h, Subpath& path) {
-    //! TODO(07) Eq. 7.1, 7.3: z_0 = cameraVertex (beta 1, pdfFwd 1: a delta position), then lesson
-    //!          3's cameraWalk from camera.generateRay(raster) with a visitor that stores every
+    //! TODO(07) Eq. 7.1, 7.3: z_0 = cameraVertex(scene, camera.samplePoint(rng)) (beta 1, pdfFwd
+    //!          camera.pdfPoint(): 1 for the pinhole, a delta position; lesson 11: a lens point),
+    //!          then lesson 3's cameraWalk from camera.generateRay(raster, z_0's position) with a
+    //!          visitor that stores every
     //!          vertex it is shown: a hit as a surfaceVertex, a miss as a backgroundVertex if there
     //!          is a background (none: end the walk), each with the walk's beta, pdfFwd =
     //!          pdfScatter Radiance, then z_{i-2}.pdfRev = pdfScatter Importance and
@@ -20,13 +22,14 @@ void cameraSubpath(const Scene& scene, Rng& rng, const Vec2& raster, int maxDept
     //! STUB (void)PS_TODO("lesson 07: cameraSubpath", 0);
     //! BEGIN
     path.clear();
-    PathVertex z0 = cameraVertex(scene);
+    const Camera& camera = scene.camera;
+    PathVertex z0 = cameraVertex(scene, camera.samplePoint(rng));
     z0.beta = Color(1.0f);
-    z0.pdfFwd = 1.0f;
+    z0.pdfFwd = camera.pdfPoint();
     path.push_back(z0);
     updateMisSum(path, 0, h);
 
-    const Ray ray = scene.camera.generateRay(raster);
+    const Ray ray = camera.generateRay(raster, z0.p());
     cameraWalk(scene, ray, rng, maxDepth, [&](const WalkVertex& w) {
         if (!w.hit && scene.background < 0) return false;
         PathVertex v = w.hit ? surfaceVertex(scene, w.sp) : backgroundVertex(scene, -w.wo);

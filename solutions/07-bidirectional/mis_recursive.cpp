@@ -13,13 +13,14 @@ double heuristicPower(double r, Heuristic h) { return h == Heuristic::Power ? r 
 // c_j of Eq. 7.10 for vertex j of a subpath (camera subpaths start with the camera).
 [[maybe_unused]] double connectible(const PathVertex* path, int j) {
     //! TODO(07) Eq. 7.10: c_j = 1 if the connection may sit just before path[j], else 0.
-    //!          Pitfalls: a camera subpath (path[0].pinhole) has c_0 = 0 and c_1 = 0 at the
-    //!          background; a light subpath's c_0 = 0 at a point light; no edge at a specular vertex.
+    //!          Pitfalls: a camera subpath (path[0].isCamera()) has c_0 = 0 at the pinhole (1 at
+    //!          lesson 11's lens point: t = 0) and c_1 = 0 at the background; a light subpath's
+    //!          c_0 = 0 at a point light; no edge at a specular vertex.
     //! STUB (void)path; (void)j;
     //! STUB return PS_TODO("lesson 07: connectible", 0.0);
     //! BEGIN
-    const bool camera = path[0].pinhole;
-    if (j == 0) return camera || path[0].pointLight ? 0.0 : 1.0;
+    const bool camera = path[0].isCamera();
+    if (j == 0) return camera ? (path[0].lens ? 1.0 : 0.0) : (path[0].pointLight ? 0.0 : 1.0);
     if (camera && j == 1 && path[1].infinite) return 0.0;
     return path[j].specular || path[j - 1].specular ? 0.0 : 1.0;
     //! END
@@ -65,12 +66,13 @@ void updateMisSum(Subpath& path, size_t i, Heuristic h) {
 
 float misWeightRecursive(const PathVertex* y, int s, const PathVertex* z, int t, const ReversePdfs& rev, Heuristic h) {
     //! TODO(07) Eq. 7.8: w = 1 / (1 + light sum + camera sum), each sum from subpathSum at the
-    //!          subpath's endpoint. Pitfall: s = 0 has no light sum.
+    //!          subpath's endpoint. Pitfall: s = 0 has no light sum (and lesson 11's t = 0 no
+    //!          camera sum).
     //! STUB (void)y; (void)s; (void)z; (void)t; (void)rev; (void)h;
     //! STUB return PS_TODO("lesson 07: misWeightRecursive", 0.0f);
     //! BEGIN
     const double light = s >= 1 ? subpathSum(y, s - 1, rev.lightEnd, rev.lightPrev, h) : 0.0;
-    const double camera = subpathSum(z, t - 1, rev.cameraEnd, rev.cameraPrev, h);
+    const double camera = t >= 1 ? subpathSum(z, t - 1, rev.cameraEnd, rev.cameraPrev, h) : 0.0;
     return static_cast<float>(1.0 / (1.0 + light + camera));
     //! END
 }

@@ -35,8 +35,9 @@ float pdfLightToward(const Scene& scene, const PathVertex& light, const PathVert
 
 float pdfScatter(const Scene& scene, const PathVertex* prev, const PathVertex& cur, const PathVertex& next,
                  Transport mode) {
-    //! TODO(07) Eq. 7.3, 7.7a: the solid-angle density with which `cur` (the pinhole, or a surface
-    //!          arrived at from prev) samples the direction to `next`, through pdfSolidAngleToArea.
+    //! TODO(07) Eq. 7.3, 7.7a: the solid-angle density with which `cur` (the camera: isCamera(),
+    //!          camera.pdfDirection(its position, direction); or a surface arrived at from prev)
+    //!          samples the direction to `next`, through pdfSolidAngleToArea.
     //!          A specular cur: deltaLobe's coefficient, pdfLight when walking with the light
     //!          (Importance), pdfCamera against it (Radiance). Pitfalls: the delta's coefficient is
     //!          not 0; use it even if lobe.valid is false (rounding on a very short segment).
@@ -45,8 +46,8 @@ float pdfScatter(const Scene& scene, const PathVertex* prev, const PathVertex& c
     //! BEGIN
     const Vec3 wn = direction(cur, next);
     float pdfW = 0.0f;
-    if (cur.pinhole) {
-        pdfW = scene.camera.pdfDirection(wn);
+    if (cur.isCamera()) {
+        pdfW = scene.camera.pdfDirection(cur.p(), wn);
     } else {
         if (prev == nullptr) return 0.0f;
         const Material& m = scene.materials[size_t(cur.sp.material)];

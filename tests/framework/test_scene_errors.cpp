@@ -229,6 +229,35 @@ TEST_CASE("scene errors: bad resolution or field of view") {
     camera("fov 40 resolution 8 8 target 0 0 -5", {"option 'target' given twice"});
 }
 
+TEST_CASE("scene errors: a bad thin lens (lens RADIUS focus DISTANCE)") {
+    auto camera = [](const std::string& options, std::initializer_list<const char*> words) {
+        const std::string text =
+            "# a comment line\n\ncamera eye 0 0 -5  target 0 0 0  fov 40  resolution 8 8  " + options + "\n";
+        INFO("camera options: " << options);
+        const std::string msg = errorOf(text);
+        CHECK_MESSAGE(msg.rfind("test.scene:3: ", 0) == 0, msg);
+        checkMessage(msg, words);
+    };
+    camera("lens -0.1", {"'lens' (the lens radius) must not be negative", "got -0.1"});
+    camera("lens nan", {"'nan'", "'lens'", "not a finite number"});
+    camera("lens inf", {"'lens'"});
+    camera("lens 1e-30", {"'lens' radius 1e-30", "float's normal range"});
+    camera("lens 1e25", {"'lens' radius 1e25", "float's normal range"});
+    camera("lens 0.1 focus 0", {"'focus'", "must be positive"});
+    camera("lens 0.1 focus -2", {"'focus'", "must be positive"});
+    camera("lens 0.1 focus nan", {"'nan'", "'focus'", "not a finite number"});
+    camera("focus 2", {"'focus' without 'lens RADIUS'"});
+    camera("lens 0.1 0.2", {"'0.2'"});
+    // Accepted: radius 0 (the pinhole), focus defaulting to the target's distance.
+    const Scene pin = parseScene("camera eye 0 0 -5  target 0 0 0  fov 40  resolution 8 8  lens 0\n", "t.scene");
+    CHECK(pin.camera.isPinhole());
+    const Scene lens = parseScene("camera eye 0 0 -5  target 0 0 0  fov 40  resolution 8 8  lens 0.5\n", "t.scene");
+    CHECK(!lens.camera.isPinhole());
+    CHECK(lens.camera.lensRadius() == 0.5f);
+    CHECK(lens.camera.focusDistance() == 5.0f);
+    CHECK(lens.caps.describe().find("camera=lens") != std::string::npos);
+}
+
 TEST_CASE("scene errors: missing required option") {
     expectLine3("sphere center 0 0 0 material w", {"'sphere' needs the option 'radius'"});
     expectLine3("sphere radius 1 material w", {"'sphere' needs the option 'center'"});

@@ -49,6 +49,7 @@ std::string transformScene(const std::string& text, double s, double t, int res)
             if (k == "camera" && tok[i] == "resolution") tok[i + 1] = tok[i + 2] = std::to_string(res);
             if ((k == "sphere" && tok[i] == "center") || (k == "pointlight" && tok[i] == "position")) point(tok, i + 1);
             if (k == "sphere" && tok[i] == "radius") tok[i + 1] = num(s * std::stod(tok[i + 1]));
+            if (k == "camera" && (tok[i] == "lens" || tok[i] == "focus")) tok[i + 1] = num(s * std::stod(tok[i + 1]));
             if (k == "pointlight" && tok[i] == "intensity")
                 for (size_t c = i + 1; c < i + 4; ++c) tok[c] = num(s * s * std::stod(tok[c]));
         }

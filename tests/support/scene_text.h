@@ -21,9 +21,9 @@ std::string replaceLines(const std::string& text, const std::string& keyword, co
 std::string withResolution(const std::string& text, int width, int height);
 
 // The scene text with every point p replaced by s * p + t (camera eye and target, corners of
-// triangles and quads, sphere centres and radii, point light positions), point light
-// intensities multiplied by s^2 (the same irradiance at the scaled distances), and the
-// resolution set to res x res. Directions (the camera's up) and everything else stay, so the
+// triangles and quads, sphere centres and radii, point light positions; a thin lens's radius and
+// focus distance times s), point light intensities multiplied by s^2 (the same irradiance at the
+// scaled distances), and the resolution set to res x res. Directions (the camera's up) and everything else stay, so the
 // image is the same up to rounding.
 std::string transformScene(const std::string& text, double s, double t, int res);
 

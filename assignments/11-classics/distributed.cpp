@@ -1,0 +1,30 @@
+// Lesson 11 — distributed ray tracing: lens, area lights and glossy lobes sampled, mirrors and
+// glass followed, no diffuse interreflection. Interface: lessons/11-classics/distributed.h.
+// Equation numbers refer to lessons/11-classics/README.md.
+#include "11-classics/distributed.h"
+#include "todo.h"
+
+namespace ps {
+
+Color LiDistributed(const Scene& scene, const Ray& cameraRay, Rng& rng, int maxDepth) {
+    // TODO(11) Eq. 11.19: follow the ray for bounces = 0, 1, ..., with the throughput beta (1 at
+    //          first). At each step, in this order:
+    //          1. the emission the ray finds (the hit surface's light, or scene.background where it
+    //             leaves): beta Le w, w = 1 after the camera or a delta bounce, else the power
+    //             heuristic of the BSDF sample's pdf against pdfLightDirection from the previous
+    //             point (as lesson 3's LiMIS). Stop at a miss or at bounces == maxDepth.
+    //          2. at a non-delta surface, a light sample (sampleDirectLight(scene, sp, wo,
+    //             rng.uniform(), rng.uniform2()), lesson 2): beta d.value w, with w = 1 at a
+    //             diffuse surface (no BSDF sample competes there) and the power heuristic of
+    //             d.pdfLight against d.pdfBSDF at a glossy one.
+    //          3. a diffuse surface ends the path (no diffuse interreflection).
+    //          4. glossy, mirror, glass: sampleBSDF(m, n, wo, rng.uniform2(), rng.uniform(),
+    //             Transport::Radiance, b) (stop if it fails), beta *= b.weight, and go on from a
+    //             ray spawned along b.wi.
+    //          Pitfalls: b.weight is f |cos| / pdf: the lobe's pdf alone is not the glossy
+    //          reflection; a light sample MIS-weighted at a diffuse point loses light.
+    (void)scene; (void)cameraRay; (void)rng; (void)maxDepth;
+    return PS_TODO("lesson 11: LiDistributed", Color(0.0f));
+}
+
+}  // namespace ps

@@ -1,0 +1,23 @@
+// Lesson 11 — distributed ray tracing, the algorithm the render command knows as `drt` (plumbing:
+// read it, nothing to write here). One iteration: one camera ray per pixel through a jittered
+// point of the pixel and, for a thin-lens camera, a point of the lens (the framework's pixel
+// loop: PixelIntegrator, tasks.h's cameraRay), whose radiance LiDistributed estimates.
+#include "11-classics/distributed.h"
+
+namespace ps {
+
+namespace {
+
+struct DistributedRayTracer : PixelIntegrator {
+    Color Li(const Scene& scene, const Ray& ray, Rng& rng) const override {
+        return LiDistributed(scene, ray, rng, scene.settings.maxDepth);
+    }
+};
+
+}  // namespace
+
+PS_REGISTER_INTEGRATOR(DistributedRayTracer, "drt",
+                       "distributed ray tracing: lens, area lights and glossy lobes sampled, mirror and glass "
+                       "followed, no diffuse interreflection: paths L D? (G|S)* E (lesson 11)");
+
+}  // namespace ps

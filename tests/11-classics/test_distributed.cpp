@@ -1,0 +1,111 @@
+// Lesson 11, graded: distributed ray tracing, LiDistributed (Eq. 11.19). It carries the paths
+// L D? (G|S)* E (lessons/11-classics/distributed.h), so it must equal the path tracer wherever
+// those are all the paths there are, and carry no diffuse interreflection anywhere:
+//   - a table (diffuse, lit by an area lamp, a black square casting a soft shadow on it), and a
+//     glossy (Phong, exponent 20) and a mirror sphere beside it, BELOW the table's plane: the
+//     table's top cannot see them, they see the lamp, the background and each other. With at most
+//     2 bounces every path of the scene is L E, L D E, L G E, L S E, L G S E, L S G E, L D G E ...
+//     i.e. of DRT's class (no light reaches the table's top through a sphere; its underside,
+//     lit by the spheres, is seen only through them, 3 bounces): drt equals pt (z-test); and a
+//     glossy floor under a lamp (every path L G E, the light sample and the glossy ray MIS-weighted);
+//   - a closed diffuse box (albedo 0.7) under a lamp, maxdepth 5: drt equals direct illumination
+//     only, pt with maxdepth 1 (z-test), not pt with maxdepth 5 (which is 2.3 times brighter).
+// Reference images are rendered here by lesson 3's pt (the reference's, when lesson 11 is graded).
+#include "lens_support.h"
+
+using namespace lens11;
+
+namespace {
+
+const char* kTable = R"(
+camera eye 0 1.6 3.6  target 0 -0.2 0  fov 45  resolution 18 12
+material table diffuse albedo 0.7 0.7 0.7
+material shade diffuse albedo 0 0 0
+material gloss phong albedo 0.8 0.6 0.3 exponent 20
+material chrome mirror albedo 0.9 0.9 0.9
+quad -1 0 1  1 0 1  1 0 -1  -1 0 -1  material table
+quad -0.2 0.6 -0.2  0.2 0.6 -0.2  0.2 0.6 0.2  -0.2 0.6 0.2  material shade
+sphere center 1.5 -0.5 0  radius 0.4  material gloss
+sphere center -1.5 -0.5 0  radius 0.4  material chrome
+quad -0.3 2 -0.3  0.3 2 -0.3  0.3 2 0.3  -0.3 2 0.3  emission 12 12 12
+background radiance 0.1 0.1 0.12
+render maxdepth 2
+)";
+
+// A glossy floor (Phong, exponent 8) mirroring a lamp 0.8 above it: every path is L G E (the
+// floor cannot see itself), sampled both by the light sample and by the glossy ray that hits the
+// lamp; the two share it by the power heuristic (counted twice, the reflection is too bright).
+const char* kGlossyFloor = R"(
+camera eye 0 1 2.2  target 0 0 -0.3  fov 50  resolution 12 8
+material g phong albedo 0.8 0.8 0.8 exponent 8
+quad -2 0 2  2 0 2  2 0 -2  -2 0 -2  material g
+quad -0.4 0.8 -0.7  0.4 0.8 -0.7  0.4 0.8 0.1  -0.4 0.8 0.1  emission 6 6 6
+background radiance 0.05 0.05 0.05
+render maxdepth 3
+)";
+
+const char* kClosedBox = R"(
+camera eye 0.5 0.5 0.1  target 0.5 0.45 1  fov 70  resolution 8 8
+material w diffuse albedo 0.7 0.7 0.7
+quad 0 0 0  1 0 0  1 0 1  0 0 1  material w
+quad 0 1 0  0 1 1  1 1 1  1 1 0  material w
+quad 0 0 0  0 0 1  0 1 1  0 1 0  material w
+quad 1 0 0  1 1 0  1 1 1  1 0 1  material w
+quad 0 0 1  1 0 1  1 1 1  0 1 1  material w
+quad 0 0 0  0 1 0  1 1 0  1 0 0  material w
+quad 0.4 0.98 0.4  0.6 0.98 0.4  0.6 0.98 0.6  0.4 0.98 0.6  emission 20 20 20
+render maxdepth 5
+)";
+
+ps::testrender::Render renderAt(const char* text, const std::string& algo, int maxDepth, int spp, uint64_t seed) {
+    ps::Scene scene = ps::parseScene(text, algo + " test scene");
+    if (maxDepth >= 0) scene.settings.maxDepth = maxDepth;
+    return ps::testrender::render(scene, algo, spp, ps::testseed::seed(seed));
+}
+
+}  // namespace
+
+TEST_CASE(
+    "drt: equals pt where every path is one of DRT's, L D? (G|S)* E: soft shadow, glossy and mirror (z-test) [2 pts]") {
+    // Two comparisons, each at sidak(alpha(), 2): the table, and a glossy floor under a lamp.
+    const double level = ps::stats::sidak(alpha(), 2);
+    const ps::testrender::Render drt = renderAt(kTable, "drt", -1, 512, 1111);
+    const ps::testrender::Render pt = renderAt(kTable, "pt", -1, 2048, 1112);
+    CHECK_MESSAGE(drt.stats.bad() == 0, "drt: expected 0 NaN and 0 Inf samples, got " << drt.stats.nan << " NaN and "
+                                                                                      << drt.stats.inf << " Inf");
+    const ps::stats::ZTestResult z = ps::stats::zTestImages(drt.mean, drt.variance, pt.mean, pt.variance, level);
+    CHECK_MESSAGE(
+        z.passed,
+        "drt (a) against pt (b) on the table between a glossy and a mirror sphere (maxdepth 2; image totals "
+            << num(ps::testrender::total(drt.mean)) << " and " << num(ps::testrender::total(pt.mean)) << "):\n  "
+            << z.report
+            << "\n  Every path here is L D? (G|S)* E. A light sample is f Le |cos| / pdf (sampleDirectLight's "
+               "value), weight 1 at a diffuse point and the power heuristic at a glossy one; the glossy "
+               "ray's emission the power heuristic too, full after a mirror; the glossy sample's weight is "
+               "b.weight = f |cos| / pdf, not the lobe's pdf alone");
+    const ps::testrender::Render drtG = renderAt(kGlossyFloor, "drt", -1, 512, 1115);
+    const ps::testrender::Render ptG = renderAt(kGlossyFloor, "pt", -1, 1024, 1116);
+    const ps::stats::ZTestResult zG = ps::stats::zTestImages(drtG.mean, drtG.variance, ptG.mean, ptG.variance, level);
+    CHECK_MESSAGE(zG.passed,
+                  "drt (a) against pt (b) on a glossy floor (Phong, exponent 8) under a lamp, every path L G E "
+                  "(image totals "
+                      << num(ps::testrender::total(drtG.mean)) << " and " << num(ps::testrender::total(ptG.mean))
+                      << "):\n  " << zG.report
+                      << "\n  The light sample and the glossy ray that hits the lamp sample the same paths: "
+                         "each weighted by the power heuristic against the other (the ray's emission "
+                         "in full only after a delta bounce or from the camera)");
+}
+
+TEST_CASE(
+    "drt: no diffuse interreflection: in a closed diffuse box it equals direct light, pt with maxdepth 1 (z-test) [1 pt]") {
+    const ps::testrender::Render drt = renderAt(kClosedBox, "drt", -1, 256, 1113);
+    const ps::testrender::Render direct = renderAt(kClosedBox, "pt", 1, 1024, 1114);
+    const ps::stats::ZTestResult z =
+        ps::stats::zTestImages(drt.mean, drt.variance, direct.mean, direct.variance, alpha());
+    CHECK_MESSAGE(z.passed,
+                  "drt with maxdepth 5 (a) against pt with maxdepth 1 (b) in a closed box of albedo 0.7 (image "
+                  "totals "
+                      << num(ps::testrender::total(drt.mean)) << " and " << num(ps::testrender::total(direct.mean))
+                      << "):\n  " << z.report
+                      << "\n  A diffuse point ends the path: its light sample (weight 1) is all it adds");
+}
