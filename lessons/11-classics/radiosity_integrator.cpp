@@ -128,13 +128,13 @@ void RadiosityIntegrator::renderIteration(const Scene& scene, uint32_t, uint64_t
     shootSteps(scene, scene.settings.shots, seed, stats);
     if (ambient_ && solution_.unshot.size() == size_t(mesh_.size())) ambientTerm_ = ambientRadiosity(mesh_, solution_);
     constexpr int m = kRadiosityPixelSamples;
-    renderPixelTasks(seed, 0, out, stats, false, [&](int pixel, Rng&, Task&) {
+    renderPixelTasks(seed, 0, out, stats, false, [&](int pixel, Rng& rng, Task&) {
         Color sum(0.0f);
         for (int sy = 0; sy < m; ++sy)
             for (int sx = 0; sx < m; ++sx) {
                 const Vec2 raster(float(pixel % out.width) + (float(sx) + 0.5f) / m,
                                   float(pixel / out.width) + (float(sy) + 0.5f) / m);
-                Ray ray = scene.camera.generateRay(raster);
+                Ray ray = cameraRay(scene.camera, raster, rng);  // a pinhole draws no number
                 SurfacePoint hit;
                 if (scene.intersect(ray, hit)) sum += radiance(mesh_.elementAt(hit, ray.d));
             }

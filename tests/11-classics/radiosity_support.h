@@ -3,7 +3,7 @@
 // rectangles and of two perpendicular rectangles with a common edge (Howell's catalogue, C-11 and
 // C-14), each checked here against a numerical integration of the definition (Eq. 11.22).
 #pragma once
-#include "alpha.h"
+#include "lesson11.h"
 #include <doctest/doctest.h>
 #include <cmath>
 #include <functional>
@@ -37,8 +37,8 @@ using ps::testfiles::sourcePath;
 // m = 7; each runs at the Sidak level alpha' = 1 - (1 - a_L)^(1/m), where a_L is this lesson's
 // share of the whole graded suite's 1 % (tests/support/alpha.h; the lead sums the lesson's
 // counts of its three parts into one constant).
-constexpr int kStatisticalTestsRadiosity = 7;
-inline double alpha() { return ps::testalpha::perTest(kStatisticalTestsRadiosity); }
+using lesson11::kStatisticalTestsRadiosity;  // counted in lesson11.h
+using lesson11::alpha;  // the lesson's level: all 14 of its statistical tests
 
 // ---------------------------------------------------------------------------------------------
 // Closed forms (Howell, "A catalog of radiation heat transfer configuration factors").
