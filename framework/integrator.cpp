@@ -75,7 +75,11 @@ bool honoursPaths(const std::string& name) { return pathFilters().count(name) > 
 std::unique_ptr<Integrator> makeIntegrator(const std::string& name, const PathExpression* paths) {
     if (!paths) return makeIntegrator(name);
     const auto it = pathFilters().find(name);
-    if (it != pathFilters().end()) return it->second(*paths);
+    if (it != pathFilters().end()) {
+        std::unique_ptr<Integrator> made = it->second(*paths);
+        made->name = name;
+        return made;
+    }
     makeIntegrator(name);  // an unknown name says so first
     std::string can;
     for (const std::string& n : pathFilteredAlgorithms()) can += (can.empty() ? "" : ", ") + n;

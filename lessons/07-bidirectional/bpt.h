@@ -170,7 +170,9 @@ struct BptOptions {
     bool prune = true;      // leave out what the scene cannot use (Eq. 7.12)
     // Lesson 11's path expressions (`--paths`, 11-classics/path_filter.h): if set, technique (s, t)
     // adds its path only if pathTest(light, camera, s, t) says it matches. The random numbers of
-    // s = 1 are drawn before the test, so every technique meets the same numbers either way.
+    // s = 1 are drawn before the test, so every technique meets the same numbers either way. With
+    // a thin lens, t = 0 asks it too (s = m + 2, t = 0, camera empty: the lens point is the last
+    // vertex), after connectLens has drawn its step's numbers.
     std::function<bool(const Subpath& light, const Subpath& camera, int s, int t)> pathTest;
 };
 

@@ -18,6 +18,10 @@
 
 namespace ps {
 
+// Eq. 11.19 as a path expression (framework/path_expression.h): what `drt` says it carries
+// (Integrator::carriedPaths), and what `pt --paths` renders as its reference.
+inline constexpr const char* kDistributedPaths = "LD?(G|S)*E";
+
 // Radiance along the camera ray by distributed ray tracing (Eq. 11.19); maxDepth bounces at most.
 Color LiDistributed(const Scene& scene, const Ray& ray, Rng& rng, int maxDepth);
 

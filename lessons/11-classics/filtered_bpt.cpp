@@ -6,6 +6,10 @@
 // still add up to one: the filtered image is the integral over the matching paths (Eq. 11.5).
 // The subpaths and the random numbers of s = 1 are the same as without the filter; only the
 // connections of paths that do not match are skipped (with their shadow rays).
+//
+// A thin-lens camera (lesson 11): the camera subpath starts on the lens, and the technique t = 0
+// (lens_technique.cpp: a light subpath that reaches the lens) asks pathTest too, with the lens
+// point as the path's E (bptPathMatches with t = 0), after its step's random numbers are drawn.
 #include "11-classics/path_filter.h"
 #include "tasks.h"
 
@@ -29,6 +33,7 @@ struct FilteredBpt : Integrator {
         return lines;
     }
     std::string carriedPaths(const Scene&) const override { return paths.text(); }
+    bool rendersThinLens() const override { return true; }  // t = 0 included, filtered as the rest
 
     void renderIteration(const Scene& scene, uint32_t iteration, uint64_t seed, Image& out,
                          SampleStats& stats) override {

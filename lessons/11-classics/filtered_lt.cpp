@@ -6,6 +6,10 @@
 // later vertices are not joined, and when the expression bounds the number of bounces (`LDE`:
 // one) the subpath is traced no further: the walk's first vertices and their random numbers are
 // the same either way, and every light path has its own, so the image does not change.
+//
+// A thin-lens camera (lesson 11, thinlens.h): as lt (lesson 5's traceLightPath), each light path
+// draws one point z on the lens before its walk, and every vertex joins that z (connectCamera
+// divides by its density, camera.pdfPoint()); the string's E is z. A pinhole draws no number.
 #include <atomic>
 #include "11-classics/path_filter.h"
 #include "tasks.h"
@@ -36,6 +40,7 @@ struct FilteredLightTracer : Integrator {
         return lines;
     }
     std::string carriedPaths(const Scene&) const override { return paths.text(); }
+    bool rendersThinLens() const override { return true; }  // each path joins a lens point
 
     void renderIteration(const Scene& scene, uint32_t iteration, uint64_t seed, Image& out,
                          SampleStats& stats) override {
@@ -44,13 +49,14 @@ struct FilteredLightTracer : Integrator {
         const bool prune = scene.settings.prune;
         renderLightPathTasks(seed, iteration, out, stats, [&](int, Rng& rng, Task& task) {
             thread_local Subpath light;
+            const PathVertex z0 = cameraVertex(scene, scene.camera.samplePoint(rng));  // the pinhole, or a lens point
             lightSubpath(scene, rng, maxDepth, Heuristic::Power, light);
             PathExpression::State q = paths.start();
             for (int s = 1; s <= int(light.size()); ++s) {
                 q = paths.step(q, s == 1 ? VertexType::L : surfaceType(scene, light[size_t(s - 1)].sp));
                 if (prune && !paths.live(q)) break;
                 if (!paths.accepting(paths.step(q, VertexType::E))) continue;
-                const Connection c = connectCamera(scene, light.data(), s);
+                const Connection c = connectCamera(scene, light.data(), s, z0);
                 if (c.valid) task.splat.add(c.raster, c.value);
             }
         });

@@ -76,6 +76,9 @@ struct FilteredPhotonMapper : Integrator {
         return lines;
     }
     std::string carriedPaths(const Scene&) const override { return paths.text(); }
+    // A thin lens: the camera rays go through it (tasks.h, cameraRay), as pm's; the photon maps do
+    // not depend on the camera.
+    bool rendersThinLens() const override { return true; }
 
     // One photon path (pm's tracePhoton, Eq. 8.1-8.3), its photons tagged with their states.
     void tracePhotonPath(const Scene& scene, Rng& rng, int maxDepth, MapKind kind, int emitted,
@@ -207,7 +210,7 @@ struct FilteredPhotonMapper : Integrator {
         if (!scene.settings.prune || scene.caps.hasDeltaBSDF())
             caustic = traceMaps(scene, MapKind::Caustic, emitted, opt.maxDepth, seed ^ kCausticSalt, iteration, stats);
         renderPixelTasks(seed, iteration, out, stats, false, [&](int pixel, Rng& rng, Task&) {
-            const Ray ray = scene.camera.generateRay(jitteredRaster(pixel, out.width, rng));
+            const Ray ray = cameraRay(scene.camera, jitteredRaster(pixel, out.width, rng), rng);
             return Li(scene, ray, rng, caustic, global, opt);
         });
     }

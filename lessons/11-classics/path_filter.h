@@ -49,7 +49,8 @@ std::vector<std::string> pathFilterLeftOut(const PathExpression& paths, const Sc
 // Whether bpt's technique (s, t) joins the light subpath's first s vertices and the camera
 // subpath's first t into a path that matches (Eq. 11.5): y_0 (or, for s = 0, z_{t-1}) is L, the
 // camera z_0 (or, for t = 0, y_{s-1} on a lens) is E, the vertices between are typed by
-// surfaceType. Lesson 7's BptOptions::pathTest.
+// surfaceType. Lesson 7's BptOptions::pathTest. For t = 0 (lens_technique.cpp) camera is not read:
+// the path is y_0 .. y_{s-2} and the lens point, whose type is E.
 bool bptPathMatches(const PathExpression& paths, const Scene& scene, const Subpath& light, const Subpath& camera, int s,
                     int t);
 

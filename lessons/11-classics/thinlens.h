@@ -58,7 +58,9 @@ float lensMisWeight(const Scene& scene, const Subpath& light, int m, const LensC
                     bool recursive, Subpath* joined = nullptr);
 
 // What bptSample adds for t = 0 with a thin lens: connectLens at every light vertex y_m (m <=
-// maxDepth), each valid one splatted at its raster position with its weight (recorder: (m + 2, 0)).
+// maxDepth), each valid one splatted at its raster position with its weight (recorder: (m + 2, 0)),
+// unless opt.pathTest (`--paths`) says its path does not match: pathTest(light, {}, m + 2, 0).
+// An empty camera subpath: the lens vertex z is the path's E.
 void lensTechniques(const Scene& scene, const Subpath& light, Rng& rng, const BptOptions& opt, const SplatTarget& splat,
                     TechniqueRecorder* recorder);
 

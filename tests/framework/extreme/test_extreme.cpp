@@ -357,8 +357,9 @@ TEST_CASE(
     // References: pt for the full transport; lesson 6's path-s1 for its fixed-length
     // single-technique integrators (path-*); direct-light for lesson 2's direct-* integrators;
     // pt filtered to the expression of an integrator that carries only some paths (lesson 11's
-    // classics: whitted, Integrator::carriedPaths). BSDF sampling alone never hits a point light: pt-bsdf, direct-bsdf and path-s0 must be
-    // exactly black. Welch's t-test, two-sided, alpha = 0.01 with Sidak over every comparison;
+    // classics, Integrator::carriedPaths: whitted's L[DG]S*E|LS*E, drt's LD?(G|S)*E, which in this
+    // all-diffuse box is direct light). BSDF sampling alone never hits a point light: pt-bsdf,
+    // direct-bsdf and path-s0 must be exactly black. Welch's t-test, two-sided, alpha = 0.01 with Sidak over every comparison;
     // power: the standard error of the difference must be below 1.5 % of the reference mean
     // (4 % for path-*). Without the fix, at this size: lt -9 %, bpt +10 %, bpt-balance +8 %,
     // bpt-full -13 % against pt, path-s2 .. path-s4 and path-t1 -27 .. -29 % against path-s1,
@@ -389,9 +390,7 @@ TEST_CASE(
     const auto carried = [&](const std::string& algo) { return makeIntegrator(algo)->carriedPaths(scene); };
     const auto reference = [&](const std::string& algo) -> std::string {
         if (algo.rfind("path-", 0) == 0) return "path-s1";
-        // Distributed ray tracing (lesson 11) has no diffuse interreflection: in this all-diffuse
-        // box it is direct illumination.
-        if (algo.rfind("direct-", 0) == 0 || algo == "drt") return "direct-light";
+        if (algo.rfind("direct-", 0) == 0) return "direct-light";
         const std::string paths = carried(algo);
         if (paths != Integrator::kAllPaths && !paths.empty()) return "pt --paths " + paths;
         return "pt";
