@@ -10,7 +10,12 @@
 //     is specular and not 0 on the floor's caustic, in every algorithm; a scene without specular
 //     surfaces has no caustic at all (black);
 //   - Veach's pyramid under `LDE` holds paths of length 2 only;
-//   - every algorithm either honours an expression or refuses it.
+//   - every algorithm either honours an expression or refuses it;
+//   - through a thin lens (lesson 11, scenes/cornell-lens.scene) all of it holds too: pt's and bpt's
+//     images of a partition add up to their unfiltered images (bpt's technique t = 0, a light
+//     subpath that reaches the lens, is filtered with the lens point as its E), `L.*E` renders
+//     bpt and pm bit for bit and lt to float rounding, the pyramid's t = 0 cells keep only their
+//     matching length, and every filtered form renders a lens where its algorithm does.
 #include <doctest/doctest.h>
 #include <algorithm>
 #include <cmath>
@@ -24,6 +29,8 @@
 #include "lesson_files.h"
 #include "render.h"
 #include "render_helpers.h"
+#include "scene_loader.h"
+#include "scene_text.h"
 #include "seed.h"
 #include "statistics.h"
 
@@ -68,6 +75,35 @@ double total(const Image& img) {
 }
 
 Scene spheres(int res = 16) { return testfiles::loadSceneAt("scenes/cornell-spheres.scene", res, res); }
+
+// scenes/cornell-lens.scene: the Cornell box through a thin lens of radius 40 mm, with a glossy
+// (Phong), a mirror and a diffuse sphere (every vertex type).
+Scene lensBox(int res = 16) {
+    const Scene scene = testfiles::loadSceneAt("scenes/cornell-lens.scene", res, res);
+    REQUIRE_MESSAGE(!scene.camera.isPinhole(), "scenes/cornell-lens.scene has no thin lens any more");
+    return scene;
+}
+
+// The worst relative difference, per pixel channel, between the sum of parts and whole, as "pixel
+// P channel C: parts add to X, whole Y" (with the names given); worst gets the relative difference.
+std::string worstSum(const std::vector<Image>& parts, const Image& whole, double& worst,
+                     const std::string& partsName = "parts add to", const std::string& wholeName = "whole") {
+    worst = 0.0;
+    std::string where;
+    for (size_t i = 0; i < whole.pixels.size(); ++i)
+        for (int ch = 0; ch < 3; ++ch) {
+            double sum = 0.0;
+            for (const Image& r : parts) sum += double(r.pixels[i][ch]);
+            const double a = double(whole.pixels[i][ch]);
+            const double rel = std::abs(sum - a) / (std::abs(a) + 1e-6);
+            if (rel > worst) {
+                worst = rel;
+                where = "pixel " + std::to_string(i) + " channel " + std::to_string(ch) + ": " + partsName + " " +
+                        fmt::num(sum, 9) + ", " + wholeName + " " + fmt::num(a, 9);
+            }
+        }
+    return where;
+}
 
 // Every string L t_1 .. t_n E with n <= 7: whether the expressions partition them.
 void requirePartition(const std::vector<std::string>& parts) {
@@ -121,17 +157,76 @@ TEST_CASE("paths filter: pt's images of a partition of the paths add up to pt's 
     }
 }
 
-TEST_CASE("paths filter: an expression matching every path renders pt, bpt and pm bit for bit") {
-    const Scene scene = spheres();
-    for (const char* algo : {"pt", "bpt", "pm"})
-        for (const char* every : {"L.*E", "L(D|G|S)*E"}) {
-            const Result plain = renderWith(scene, algo, "", 2, 5, 2),
-                         filtered = renderWith(scene, algo, every, 2, 5, 2);
-            CHECK_MESSAGE(sameBits(plain.mean, filtered.mean), algo << " --paths '" << every << "' differs from "
-                                                                    << algo << " (image sums "
-                                                                    << fmt::num(total(filtered.mean), 12) << " and "
-                                                                    << fmt::num(total(plain.mean), 12) << ")");
+TEST_CASE(
+    "paths filter: through a thin lens, pt's and bpt's images of a partition add up to their images (bpt's t = 0 "
+    "included)") {
+    // scenes/cornell-lens.scene at 16 x 16, same seed: pt's camera rays and bpt's camera subpaths
+    // start at lens points, and bpt gains the technique t = 0 of lesson 11 (light subpaths that
+    // reach the lens), which the expression filters like every other technique, with the lens
+    // point as the path's E. Were t = 0 not filtered, every part would hold all of its paths and
+    // the parts would add up to more than bpt. The lens is widened to 200 mm here so that t = 0
+    // carries a visible share of bpt's image (at 40 mm it carries little, lesson 11's README).
+    std::string text = testfiles::readText(testfiles::sourcePath("scenes/cornell-lens.scene"));
+    const size_t at = text.find("lens 40");
+    REQUIRE_MESSAGE(at != std::string::npos, "scenes/cornell-lens.scene no longer says 'lens 40'");
+    text.replace(at, 7, "lens 200");
+    const Scene scene = parseScene(scenetext::withResolution(text, 16, 16), "cornell-lens-200.scene");
+    const std::vector<std::vector<std::string>> partitions = {{"LE", "LDE", "L(S|G|D.).*E"}, {"L[DS]*E", "L.*G.*E"}};
+    for (const char* algo : {"pt", "bpt"})
+        for (const std::vector<std::string>& parts : partitions) {
+            requirePartition(parts);
+            const int spp = std::string(algo) == "pt" ? 16 : 4;
+            const Result all = renderWith(scene, algo, "", spp, 3);
+            REQUIRE_MESSAGE(total(all.mean) > 0.0, algo << " renders the lens box black");
+            std::vector<Image> images;
+            std::string names;
+            for (const std::string& p : parts) {
+                images.push_back(renderWith(scene, algo, p, spp, 3).mean);
+                names += (names.empty() ? "'" : ", '") + p + "'";
+            }
+            double worst = 0.0;
+            const std::string where = worstSum(images, all.mean, worst);
+            // As for the pinhole (above): a few float epsilons, the terms added in another order.
+            CHECK_MESSAGE(worst < 5e-6, algo << " through the lens, parts " << names << ": the worst " << where
+                                             << " (relative " << worst << ")");
         }
+}
+
+TEST_CASE("paths filter: through a thin lens, lt --paths 'L.*E' is lt to float rounding (a lens point per path)") {
+    // lt joins every vertex of a light path to one lens point drawn before the walk (lesson 5's
+    // traceLightPath); its filtered form (lesson 7's light subpath, connectCamera) must draw the
+    // same point and join the same vertices: the same image but for float rounding. (The glossy
+    // sphere is made diffuse: a Phong lobe of exponent 40 turns the rounding of a direction that
+    // lesson 7 recomputes from the vertices' positions into relative differences of 1e-4.)
+    std::string text = testfiles::readText(testfiles::sourcePath("scenes/cornell-lens.scene"));
+    const std::string gloss = "material gloss  phong  albedo 0.8 0.7 0.5  exponent 40";
+    const size_t at = text.find(gloss);
+    REQUIRE_MESSAGE(at != std::string::npos, "scenes/cornell-lens.scene no longer says '" << gloss << "'");
+    text.replace(at, gloss.size(), "material gloss  diffuse  albedo 0.8 0.7 0.5");
+    const Scene scene = parseScene(scenetext::withResolution(text, 16, 16), "cornell-lens-diffuse.scene");
+    REQUIRE(!scene.camera.isPinhole());
+    const Result plain = renderWith(scene, "lt", "", 4, 5, 2), filtered = renderWith(scene, "lt", "L.*E", 4, 5, 2);
+    REQUIRE_MESSAGE(total(plain.mean) > 0.0, "lt renders the lens box black");
+    double worst = 0.0;
+    const std::string where = worstSum({filtered.mean}, plain.mean, worst, "lt --paths 'L.*E'", "lt");
+    CHECK_MESSAGE(worst < 5e-6, "lt --paths 'L.*E' against lt through the lens: the worst " << where << " (relative "
+                                                                                            << worst << ")");
+}
+
+TEST_CASE("paths filter: an expression matching every path renders pt, bpt and pm bit for bit (pinhole and lens)") {
+    // Through the lens, bpt's t = 0 (lesson 11) asks the expression too, with the lens point as E.
+    for (const Scene& scene : {spheres(), lensBox()})
+        for (const char* algo : {"pt", "bpt", "pm"})
+            for (const char* every : {"L.*E", "L(D|G|S)*E"}) {
+                const std::string cam = scene.camera.isPinhole() ? "pinhole" : "thin lens";
+                const Result plain = renderWith(scene, algo, "", 2, 5, 2),
+                             filtered = renderWith(scene, algo, every, 2, 5, 2);
+                CHECK_MESSAGE(sameBits(plain.mean, filtered.mean), cam << ": " << algo << " --paths '" << every
+                                                                       << "' differs from " << algo << " (image sums "
+                                                                       << fmt::num(total(filtered.mean), 12) << " and "
+                                                                       << fmt::num(total(plain.mean), 12) << ")");
+                CHECK_MESSAGE(total(plain.mean) > 0.0, cam << ": " << algo << " renders black");
+            }
 }
 
 TEST_CASE("paths filter: ending walks at dead states changes nothing (pt, lt, pm with and without --no-prune)") {
@@ -223,23 +318,33 @@ TEST_CASE(
     }
 }
 
-TEST_CASE("paths filter: Veach's pyramid under LDE holds the paths of length 2 only") {
-    const Scene scene = testfiles::loadSceneAt("scenes/cornell-box.scene", 8, 8);
-    const PathExpression e("LDE");
-    BptOptions opt;
-    opt.pathTest = [&](const Subpath& light, const Subpath& camera, int s, int t) {
-        return bptPathMatches(e, scene, light, camera, s, t);
-    };
-    const TechniqueImages t = renderTechniques(scene, 3, 16, 5, 1, opt);
-    for (int k = 1; k <= 3; ++k)
-        for (int s = 0; s <= k + 1; ++s) {
-            const double sum = total(t.unweighted[size_t(techniqueIndex(s, k))]);
-            if (k == 2 && s >= 0 && s <= 2)
-                CHECK_MESSAGE(sum > 0.0, "technique (" << s << ", " << k + 1 - s << ") of LDE is black");
-            else if (k != 2)
-                CHECK_MESSAGE(sum == 0.0, "technique (" << s << ", " << k + 1 - s << "), length " << k
-                                                        << ": LDE has length 2, expected black, got sum " << sum);
-        }
+TEST_CASE("paths filter: Veach's pyramid under LDE holds the paths of length 2 only (pinhole; lens: t = 0 too)") {
+    // Through a thin lens (scenes/cornell-lens.scene, its lens widened to 200 mm so that light
+    // subpaths reach it often) the row's last technique, t = 0, samples L D E as well.
+    std::string text = testfiles::readText(testfiles::sourcePath("scenes/cornell-lens.scene"));
+    const size_t at = text.find("lens 40");
+    REQUIRE_MESSAGE(at != std::string::npos, "scenes/cornell-lens.scene no longer says 'lens 40'");
+    text.replace(at, 7, "lens 200");
+    for (const Scene& scene : {testfiles::loadSceneAt("scenes/cornell-box.scene", 8, 8),
+                               parseScene(scenetext::withResolution(text, 8, 8), "cornell-lens-200.scene")}) {
+        const bool lens = !scene.camera.isPinhole();
+        CAPTURE(lens);
+        const PathExpression e("LDE");
+        BptOptions opt;
+        opt.pathTest = [&](const Subpath& light, const Subpath& camera, int s, int t) {
+            return bptPathMatches(e, scene, light, camera, s, t);
+        };
+        const TechniqueImages t = renderTechniques(scene, 3, 16, 5, 1, opt);
+        for (int k = 1; k <= 3; ++k)
+            for (int s = 0; s <= k + 1; ++s) {
+                const double sum = total(t.unweighted[size_t(techniqueIndex(s, k))]);
+                if (k == 2 && s >= 0 && s <= (lens ? 3 : 2))
+                    CHECK_MESSAGE(sum > 0.0, "technique (" << s << ", " << k + 1 - s << ") of LDE is black");
+                else if (k != 2)
+                    CHECK_MESSAGE(sum == 0.0, "technique (" << s << ", " << k + 1 - s << "), length " << k
+                                                            << ": LDE has length 2, expected black, got sum " << sum);
+            }
+    }
 }
 
 TEST_CASE("paths filter: every algorithm honours an expression or refuses it, never ignores it") {
@@ -252,6 +357,12 @@ TEST_CASE("paths filter: every algorithm honours an expression or refuses it, ne
             honoured.push_back(info.name);
             const std::unique_ptr<Integrator> i = makeIntegrator(info.name, &e);
             CHECK(i->carriedPaths(scene) == "LDE");
+            // A thin lens (lesson 11): the filtered form renders one where the algorithm does, so
+            // that a lens scene is never refused for --paths with an algorithm --paths offers.
+            CHECK_MESSAGE(i->rendersThinLens() == makeIntegrator(info.name)->rendersThinLens(),
+                          info.name << " --paths: renders a thin lens " << i->rendersThinLens() << ", " << info.name
+                                    << " alone " << makeIntegrator(info.name)->rendersThinLens());
+            CHECK_MESSAGE(i->name == info.name, "the filtered form's name is '" << i->name << "'");
         } else {
             bool refused = false;
             try {
