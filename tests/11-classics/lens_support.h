@@ -35,9 +35,12 @@ using DVec3 = glm::dvec3;
 //   bpt's t = 0 technique alone against s = 0 alone, per path length (image and total)   -> 1
 //   drt against pt where both carry the same paths; drt against direct light in a
 //   closed diffuse box                                                                     -> 2
-// m = 6; each runs at the Sidak level alpha' = 1 - (1 - a_L)^(1/m), a_L this lesson's share of
-// the whole graded suite's 1 % (tests/support/alpha.h). (The lead sums the lesson's branches.)
-using lesson11::alpha;                  // the lesson's level: all 14 of its statistical tests
+//   drt against the stored reference of pt filtered to L D? (G|S)* E (the Cornell box
+//   through the lens, where pt carries more paths)                                         -> 1
+// m = 7 of the lesson's 15; every statistical test of lesson 11 runs at the same Sidak level
+// alpha' = 1 - (1 - a_L)^(1/15), a_L this lesson's share of the whole graded suite's 1 %
+// (lesson11.h, tests/support/alpha.h).
+using lesson11::alpha;                  // the lesson's level: all 15 of its statistical tests
 using lesson11::kStatisticalTestsLens;  // counted in lesson11.h
 
 // A thin-lens camera as the tests build it, and its geometry in double from the same numbers.

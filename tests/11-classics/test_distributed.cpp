@@ -9,8 +9,13 @@
 //     lit by the spheres, is seen only through them, 3 bounces): drt equals pt (z-test); and a
 //     glossy floor under a lamp (every path L G E, the light sample and the glossy ray MIS-weighted);
 //   - a closed diffuse box (albedo 0.7) under a lamp, maxdepth 5: drt equals direct illumination
-//     only, pt with maxdepth 1 (z-test), not pt with maxdepth 5 (which is 2.3 times brighter).
-// Reference images are rendered here by lesson 3's pt (the reference's, when lesson 11 is graded).
+//     only, pt with maxdepth 1 (z-test), not pt with maxdepth 5 (which is 2.3 times brighter);
+//   - scenes/cornell-lens.scene, where pt carries many more paths than drt (the walls light each
+//     other, the glossy and mirror spheres throw caustics): drt equals pt filtered to exactly
+//     DRT's paths, `pt --paths 'LD?(G|S)*E'` (lesson 11's first part), stored as a reference.
+// Reference images of the first two are rendered here by lesson 3's pt (the reference's, when
+// lesson 11 is graded); the third is stored (tests/11-classics/data/, the README says how it was
+// made): its classification is the reference's, never yours.
 #include "lens_support.h"
 
 using namespace lens11;
@@ -108,4 +113,36 @@ TEST_CASE(
                       << num(ps::testrender::total(drt.mean)) << " and " << num(ps::testrender::total(direct.mean))
                       << "):\n  " << z.report
                       << "\n  A diffuse point ends the path: its light sample (weight 1) is all it adds");
+}
+
+TEST_CASE(
+    "drt: equals pt filtered to L D? (G|S)* E on the Cornell box through a lens, where pt carries more paths "
+    "(z-test against the stored reference) [2 pts]") {
+    // scenes/cornell-lens.scene at 24 x 24 (maxdepth 8, a lens of radius 40 mm focused on the
+    // glossy sphere, which stands under the lamp; a mirror and a diffuse sphere behind it). Here
+    // the full transport holds what drt must leave out: L D D+ E (the walls' light on each other),
+    // L G D E and L S D E (the spheres' caustics). The reference is pt restricted to Eq. 11.19's
+    // paths by Heckbert's expression, tests/11-classics/data/cornell-lens-24-drt.pfm and its
+    // variance (262144 spp). drt at 1024 spp, per-pixel z-test at alpha() (lens_support.h): each
+    // of the 1728 pixel channels at the Sidak level over the channels, 99.75 % must pass.
+    const ps::Scene scene = loadSceneAt("scenes/cornell-lens.scene", 24, 24);
+    REQUIRE(scene.settings.maxDepth == 8);
+    REQUIRE_MESSAGE(scene.camera.lensRadius() == 40.0f, "scenes/cornell-lens.scene's lens is no longer 40 mm: "
+                                                        "the stored reference is out of date");
+    const ps::Image ref = ps::readPFM(sourcePath("tests/11-classics/data/cornell-lens-24-drt.pfm"));
+    const ps::Image refVar = ps::readPFM(sourcePath("tests/11-classics/data/cornell-lens-24-drt-variance.pfm"));
+    const ps::testrender::Render drt = ps::testrender::render(scene, "drt", 1024, ps::testseed::seed(1117));
+    CHECK_MESSAGE(drt.stats.bad() == 0, "drt: expected 0 NaN and 0 Inf samples, got " << drt.stats.nan << " NaN and "
+                                                                                      << drt.stats.inf << " Inf");
+    const double total = ps::testrender::total(drt.mean), refTotal = ps::testrender::total(ref);
+    const ps::stats::ZTestResult z = ps::stats::zTestImages(drt.mean, drt.variance, ref, refVar, alpha());
+    CHECK_MESSAGE(z.passed,
+                  "drt (a, 1024 spp) against pt --paths '"
+                      << ps::kDistributedPaths << "' (b, the stored reference) on the Cornell box through the lens:\n  "
+                      << z.report << "\n  image sums: drt " << num(total) << ", reference " << num(refTotal)
+                      << " (ratio " << num(total / refTotal)
+                      << "). Brighter walls: a diffuse point must end the path, its light sample is all it adds "
+                         "(no L D D ... E); the glossy sphere wrong: its light sample and its glossy ray's "
+                         "emission are MIS-weighted (power heuristic) against each other, and the glossy ray "
+                         "carries b.weight = f |cos| / pdf");
 }

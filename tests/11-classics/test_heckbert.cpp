@@ -44,6 +44,12 @@ TEST_CASE("scatteringType: Lambertian D, Phong G (exponent 0: Lambertian, D), mi
 TEST_CASE("vertexType: x_0 is L whatever the light and its surface's material, the camera is E [2 pts]") {
     const ps::Scene scene = everyKind();
     const ps::PathVertex eye = ps::cameraVertex(scene), floor = surface(scene, "white", Vec3(0.3f, 0, 0.2f));
+    // A point on a thin lens (lesson 11's second part: lesson 6's PathVertex::lens, as
+    // cameraVertex(scene, z) makes it for a lens camera): no pinhole, no material, still the eye.
+    ps::PathVertex lensPoint;
+    lensPoint.sp.p = eye.sp.p + Vec3(0.03f, -0.02f, 0);
+    lensPoint.sp.n = eye.sp.n;
+    lensPoint.lens = true;
     const struct {
         const char* what;
         ps::PathVertex light;
@@ -64,6 +70,12 @@ TEST_CASE("vertexType: x_0 is L whatever the light and its surface's material, t
                       "x_2, the pinhole, of a path L D E: expected E (the eye, by its place), got " << letter(t2));
         const VertexType t1 = ps::vertexType(scene, x, 1);
         CHECK_MESSAGE(t1 == VertexType::D, "x_1 on the white floor: expected D, got " << letter(t1));
+        const ps::Path y = {l.light, floor, lensPoint};
+        const VertexType t2lens = ps::vertexType(scene, y, 2);
+        CHECK_MESSAGE(t2lens == VertexType::E,
+                      "x_2, a point on a thin lens (PathVertex::lens, not a pinhole), of a path L D E: expected E "
+                      "(the eye, by its place, not by the pinhole flag), got "
+                          << letter(t2lens));
     }
 }
 
