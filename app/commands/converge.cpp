@@ -114,6 +114,7 @@ int runConverge(const std::vector<std::string>& args) {
     scene.settings.prune = prune;
     for (const std::string& a : opt.algos)
         checkCamera(scene, *makeIntegrator(a, opt.paths));  // a thin lens it cannot render
+    if (reference.empty() && !refAlgo.empty()) checkCamera(scene, *makeIntegrator(refAlgo, opt.paths));  // the same
     for (const std::string& a : opt.algos) printLeftOut(a, *makeIntegrator(a, opt.paths), scene);
     const std::vector<PointLightPixel> leftOut = pointLightsInView(scene);
     for (const PointLightPixel& p : leftOut) std::cerr << "pathspace: " << describe(p) << "\n";
