@@ -37,8 +37,8 @@ using DVec3 = glm::dvec3;
 //   closed diffuse box                                                                     -> 2
 // m = 6; each runs at the Sidak level alpha' = 1 - (1 - a_L)^(1/m), a_L this lesson's share of
 // the whole graded suite's 1 % (tests/support/alpha.h). (The lead sums the lesson's branches.)
+using lesson11::alpha;                  // the lesson's level: all 14 of its statistical tests
 using lesson11::kStatisticalTestsLens;  // counted in lesson11.h
-using lesson11::alpha;  // the lesson's level: all 14 of its statistical tests
 
 // A thin-lens camera as the tests build it, and its geometry in double from the same numbers.
 struct LensCase {

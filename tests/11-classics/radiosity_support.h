@@ -37,8 +37,8 @@ using ps::testfiles::sourcePath;
 // m = 7; each runs at the Sidak level alpha' = 1 - (1 - a_L)^(1/m), where a_L is this lesson's
 // share of the whole graded suite's 1 % (tests/support/alpha.h; the lead sums the lesson's
 // counts of its three parts into one constant).
+using lesson11::alpha;                       // the lesson's level: all 14 of its statistical tests
 using lesson11::kStatisticalTestsRadiosity;  // counted in lesson11.h
-using lesson11::alpha;  // the lesson's level: all 14 of its statistical tests
 
 // ---------------------------------------------------------------------------------------------
 // Closed forms (Howell, "A catalog of radiation heat transfer configuration factors").
