@@ -21,8 +21,8 @@ double diskFormFactorByQuadrature(double R, double h) {
             const double phi = 2.0 * pi * (k + 0.5) / m;
             const double y[3] = {rho * std::cos(phi), rho * std::sin(phi), h};  // the point on the disk
             const double r2 = y[0] * y[0] + y[1] * y[1] + y[2] * y[2], r = std::sqrt(r2);
-            const double cosX = y[2] / r;   // n_x = (0, 0, 1), towards y
-            const double cosY = y[2] / r;   // n_y = (0, 0, -1), towards x = -y
+            const double cosX = y[2] / r;  // n_x = (0, 0, 1), towards y
+            const double cosY = y[2] / r;  // n_y = (0, 0, -1), towards x = -y
             sum += cosX * cosY / (pi * r2);
         }
         return sum * (2.0 * pi / m) * rho;
@@ -36,7 +36,7 @@ double diskFormFactorByQuadrature(double R, double h) {
 }  // namespace
 
 TEST_CASE("exercise: the form factor from a point to a parallel coaxial disk (Eq. 11.E1) [1 pt]") {
-    const std::pair<double, double> cases[] = {{1.0, 1.0},  {0.5, 2.0},   {2.0, 0.5}, {1.0, 0.05},
+    const std::pair<double, double> cases[] = {{1.0, 1.0},  {0.5, 2.0},  {2.0, 0.5}, {1.0, 0.05},
                                                {0.01, 1.0}, {30.0, 1.0}, {3.0, 4.0}};
     for (const auto& [R, h] : cases) {
         const double expected = diskFormFactorByQuadrature(R, h), got = ps::diskFormFactor(R, h);
