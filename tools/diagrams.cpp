@@ -850,15 +850,21 @@ Svg familyTree() {
     s.text({500, 34}, "which paths each classic carries (Heckbert's notation, 11.1)", "middle", 20);
     s.text({500, 60}, "a box carries a part of the paths of the box above it; the arrows say which part", "middle", 18,
            kGrey);
-    const FamilyNode all{{500, 140}, 600, "pt, lt, bpt, pm (1986-1996)", "L (D|G|S)* E: every path",
+    const FamilyNode all{{500, 140},
+                         600,
+                         "pt, lt, bpt, pm (1986-1996)",
+                         "L (D|G|S)* E: every path",
                          "each with blind spots of its own (section 1.17)"};
-    const FamilyNode drt{{260, 330}, 460, "distributed ray tracing, drt (1984)", "L D? (G|S)* E",
+    const FamilyNode drt{{260, 330},
+                         460,
+                         "distributed ray tracing, drt (1984)",
+                         "L D? (G|S)* E",
                          "light samples at D and G; walks on at G, S"};
     const FamilyNode rad{{760, 330}, 420, "radiosity (1984, 1988)", "L D* E", "diffuse quads, constant on elements"};
-    const FamilyNode whitted{{260, 510}, 460, "Whitted (1980)", "L [DG] S* E | L S* E",
-                             "point lights only; walks on at S only"};
-    const FamilyNode common{{510, 660}, 620, "common to all of them", "L D? E",
-                            "the lamps seen, and direct light on D"};
+    const FamilyNode whitted{
+        {260, 510}, 460, "Whitted (1980)", "L [DG] S* E | L S* E", "point lights only; walks on at S only"};
+    const FamilyNode common{
+        {510, 660}, 620, "common to all of them", "L D? E", "the lamps seen, and direct light on D"};
     familyEdge(s, all, drt, "D only next to L", "end", {-24, -10});
     familyEdge(s, all, rad, "only D", "start", {24, -10});
     familyEdge(s, drt, whitted, "G only next to L", "start", {14, 6});
@@ -867,8 +873,8 @@ Svg familyTree() {
     for (const FamilyNode* n : {&whitted, &rad}) {
         const P from = n->centre + P{0, 48};
         s.arrow(from, {from.x, top}, kInk, 2);
-        s.text({from.x + 14, 0.5 * (from.y + top) + 6}, n == &whitted ? "no G, no S" : "one D at most", "start", 18, kRed,
-               true);
+        s.text({from.x + 14, 0.5 * (from.y + top) + 6}, n == &whitted ? "no G, no S" : "one D at most", "start", 18,
+               kRed, true);
     }
     for (const FamilyNode* n : {&all, &drt, &rad, &whitted, &common}) familyBox(s, *n);
     return s;
