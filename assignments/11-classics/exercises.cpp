@@ -1,5 +1,6 @@
 // Lesson 11 — the pen-and-paper exercise. Interface: lessons/11-classics/exercises.h.
 // Equation numbers refer to lessons/11-classics/README.md ("Exercise (pen and paper)").
+#include <cmath>
 #include "11-classics/exercises.h"
 #include "todo.h"
 
