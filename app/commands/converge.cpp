@@ -112,7 +112,8 @@ int runConverge(const std::vector<std::string>& args) {
         } catch (const InputError& e) { throw InputError(scenePath, 0, e.what()); }
     }
     scene.settings.prune = prune;
-    for (const std::string& a : opt.algos) checkCamera(scene, *makeIntegrator(a, opt.paths));  // a thin lens it cannot render
+    for (const std::string& a : opt.algos)
+        checkCamera(scene, *makeIntegrator(a, opt.paths));  // a thin lens it cannot render
     for (const std::string& a : opt.algos) printLeftOut(a, *makeIntegrator(a, opt.paths), scene);
     const std::vector<PointLightPixel> leftOut = pointLightsInView(scene);
     for (const PointLightPixel& p : leftOut) std::cerr << "pathspace: " << describe(p) << "\n";

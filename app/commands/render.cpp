@@ -111,7 +111,7 @@ int runRender(const std::vector<std::string>& args) {
     if (paths) integrator = makeIntegrator(algo, &*paths);
     else if (!integrator) integrator = makeIntegrator(algo);
     if (spp == 0 && seconds == 0.0) spp = scene.settings.spp;
-    integrator->checkScene(scene);  // a refusal (InputError) before anything is printed
+    integrator->checkScene(scene);    // a refusal (InputError) before anything is printed
     checkCamera(scene, *integrator);  // a thin lens it cannot render: one error line, before anything else
 
     Image ref;
