@@ -35,8 +35,8 @@ using DVec3 = glm::dvec3;
 //   bpt's t = 0 technique alone against s = 0 alone, per path length (image and total)   -> 1
 //   drt against pt where both carry the same paths; drt against direct light in a
 //   closed diffuse box                                                                     -> 2
-// m = 6; each runs at the Sidak level alpha' = 1 - (1 - a_L)^(1/m), a_L this lesson's share of
-// the whole graded suite's 1 % (tests/support/alpha.h). (The lead sums the lesson's branches.)
+// 6 of lesson 11's m = 14 (lesson11.h); each runs at the Sidak level alpha' = 1 - (1 - a_L)^(1/14)
+// ~ 6.0e-5, a_L ~ 8.37e-4 the lesson's share of the whole graded suite's 1 % (tests/support/alpha.h).
 using lesson11::alpha;                  // the lesson's level: all 14 of its statistical tests
 using lesson11::kStatisticalTestsLens;  // counted in lesson11.h
 

@@ -9,7 +9,7 @@ namespace lesson11 {
 //   paths (Whitted against pt filtered to its expression)                 1
 //   lens (pt, lt, bpt through the lens; t = 0 against s = 0; drt)         6
 //   radiosity (form factors against closed forms; sums to 1)              7
-// m = 14; each runs at alpha' = 1 - (1 - a_L)^(1/14), where a_L = 1 - 0.99^(1/12) ~ 8.4e-4 is this
+// m = 14; each runs at alpha' = 1 - (1 - a_L)^(1/14), where a_L = 1 - 0.99^(1/12) ~ 8.37e-4 is this
 // lesson's share of the whole graded suite's 1 % (tests/support/alpha.h).
 constexpr int kStatisticalTestsPaths = 1, kStatisticalTestsLens = 6, kStatisticalTestsRadiosity = 7;
 constexpr int kStatisticalTests = kStatisticalTestsPaths + kStatisticalTestsLens + kStatisticalTestsRadiosity;
