@@ -181,9 +181,8 @@ if wanted 10; then
 fi
 
 # lesson 11 (paths): pt split by Heckbert's path expressions on the Cornell spheres (LE, LDE, LD+DE
-# and L.*S.*E add up to every path, L.*E; LS+DE, the caustics, is part of the last), and Whitted
-# beside pt filtered to what Whitted carries and pt with every path, on the Cornell box lit by
-# point lights (lessons/11-classics README, "Expected output"; tools/strip.cpp labels them).
+# and L.*S.*E add up to every path, L.*E; LS+DE, the caustics, is part of the last)
+# (lessons/11-classics README, "Expected output"; tools/strip.cpp labels them).
 if wanted 11; then
   d="$(dest 11-classics)"; s="$(scene cornell-spheres 128)"
   cmake --build "$build" --target strip >/dev/null
@@ -195,22 +194,49 @@ if wanted 11; then
   done
   "$build/strip" "$d/pt-split.png" "${cells[@]}"
   done_fig "$d/pt-split.png"
-  s="$(scene cornell-whitted 128)"
-  "$ps" render "$s" --algo whitted --spp "$(t 64 2)" --seed 1 --out "$work/11-whitted.pfm" --no-progress >/dev/null 2>&1
-  "$ps" render "$s" --algo pt --paths 'L[DG]S*E' --spp "$(t 2048 4)" --seed 1 --out "$work/11-pt-whitted.pfm" \
-    --no-progress >/dev/null 2>&1
-  "$ps" render "$s" --algo pt --spp "$(t 2048 4)" --seed 1 --out "$work/11-pt.pfm" --no-progress >/dev/null 2>&1
-  "$build/strip" "$d/whitted-vs-pt.png" "whitted=$work/11-whitted.pfm" "pt L[DG]S*E=$work/11-pt-whitted.pfm" \
-    "pt L.*E=$work/11-pt.pfm"
-  done_fig "$d/whitted-vs-pt.png"
+fi
+
+# lesson 11 (family tree): each classic beside the path tracer filtered to the paths it carries
+# (lessons/11-classics README, section 1.17 and "Expected output"). No scene suits all three:
+# radiosity takes only diffuse quads lit by quads, and Whitted lights surfaces only with point
+# lights. So two scenes at 128 x 128: the Cornell box (radiosity, drt, and Whitted, which shows its
+# lamp and nothing the lamp lights) and the Cornell box with point lights, a mirror, glass and
+# Phong (Whitted, drt; pt and bpt with every path: pt cannot sample the point lights' caustics,
+# bpt can). About 2 minutes on 2 cores.
+if wanted 11; then
+  d="$(dest 11-classics)"
+  cmake --build "$build" --target strip >/dev/null
+  # cell ALGO SPP LABEL [ARGS...]: render the current scene $s into the next cell of $cells.
+  cell() {
+    local f="$work/11-family-${#cells[@]}.pfm" algo="$1" spp="$2" label="$3"; shift 3
+    "$ps" render "$s" --algo "$algo" --spp "$spp" --seed 1 --out "$f" --no-progress "$@" >/dev/null 2>&1
+    cells+=("$label=$f")
+  }
+  s="$(scene cornell-box 128)"; cells=()
+  cell radiosity 1 radiosity --shots 100000 --elements "$(t 8 4)"
+  cell pt "$(t 1024 4)" 'pt LD*E' --paths 'LD*E'
+  cell drt "$(t 1024 4)" drt
+  cell pt "$(t 1024 4)" 'pt LD?[GS]*E' --paths 'LD?[GS]*E'
+  cell whitted "$(t 64 2)" whitted
+  cell pt "$(t 64 2)" 'pt LS*E' --paths 'LS*E'
+  "$build/strip" "$d/family-cornell-box.png" "${cells[@]}"
+  s="$(scene cornell-whitted 128)"; cells=()
+  cell whitted "$(t 64 2)" whitted
+  cell pt "$(t 1024 4)" 'pt L[DG]S*E|LS*E' --paths 'L[DG]S*E|LS*E'
+  cell drt "$(t 1024 4)" drt
+  cell pt "$(t 1024 4)" 'pt LD?[GS]*E' --paths 'LD?[GS]*E'
+  cell pt "$(t 1024 4)" 'pt L.*E'
+  cell bpt "$(t 256 2)" 'bpt L.*E'
+  "$build/strip" "$d/family-cornell-whitted.png" "${cells[@]}"
+  done_fig "$d/family-cornell-box.png, family-cornell-whitted.png"
 fi
 
 # lesson 11 (radiosity)
 # The Cornell box by radiosity (8 x 8 elements a quad) after 1, 10, 100, 1000 shots and converged,
 # next to pt; the same shots with the ambient term; converged with 2 x 2 to 16 x 16 elements; and
 # the patch averages' error against pt's for each element size (tools/radiosity_figures.cpp,
-# lessons/11-classics/drafts/radiosity.md, section 5). About 4 minutes on 2 cores, most of it
-# the 16 x 16 elements' form factors.
+# lessons/11-classics/README.md, "Expected output"). About 4 minutes on 2 cores, most of it the
+# 16 x 16 elements' form factors.
 if wanted 11; then
   d="$(dest 11-classics)"
   cmake --build "$build" --target radiosity_figures >/dev/null
@@ -219,8 +245,8 @@ if wanted 11; then
 fi
 
 # lesson 11 (lens): depth of field at two focal distances, distributed ray tracing next to the path
-# tracer at equal samples, and bpt's per-technique images with the technique t = 0 (the thin lens's
-# part of lessons/11-classics/README.md, "Expected output").
+# tracer at equal samples, and bpt's per-technique images with the technique t = 0
+# (lessons/11-classics/README.md, "Expected output").
 if wanted 11; then
   d="$(dest 11-classics)"; s="$(scene cornell-lens 128)"
   sed 's/focus 900/focus 1280/' "$s" > "$work/11-back.scene"

@@ -823,6 +823,63 @@ Svg weightWindow() {
     return s;
 }
 
+// Lesson 11: the family tree of the classics in Heckbert's notation (11.1): each box carries a
+// subset of the paths of the box it hangs from; the edges say what was taken away.
+struct FamilyNode {
+    P centre;
+    double width;
+    const char* name;
+    const char* paths;
+    const char* note;
+};
+void familyBox(Svg& s, const FamilyNode& n) {
+    const double h = 96, l = n.centre.x - n.width / 2, t = n.centre.y - h / 2;
+    s.rect({l, t}, {l + n.width, t + h}, "#f4f4f4", kInk, 1, 2);
+    s.text({n.centre.x, t + 27}, n.name, "middle", 19);
+    s.text({n.centre.x, t + 57}, n.paths, "middle", 22, kBsdf);
+    s.text({n.centre.x, t + 84}, n.note, "middle", 18, kGrey);
+}
+// An edge from the bottom of box a to the top of box b, with its label beside its middle.
+void familyEdge(Svg& s, const FamilyNode& a, const FamilyNode& b, const char* label, const char* anchor, P offset) {
+    const P from = a.centre + P{0, 48}, to = b.centre - P{0, 48};
+    s.arrow(from, to, kInk, 2);
+    s.text(lerp(from, to, 0.5) + offset, label, anchor, 18, kRed, true);
+}
+Svg familyTree() {
+    Svg s(1000, 720);
+    s.text({500, 34}, "which paths each classic carries (Heckbert's notation, 11.1)", "middle", 20);
+    s.text({500, 60}, "a box carries a part of the paths of the box above it; the arrows say which part", "middle", 18,
+           kGrey);
+    const FamilyNode all{{500, 140},
+                         600,
+                         "pt, lt, bpt, pm (1986-1996)",
+                         "L (D|G|S)* E: every path",
+                         "each with blind spots of its own (section 1.17)"};
+    const FamilyNode drt{{260, 330},
+                         460,
+                         "distributed ray tracing, drt (1984)",
+                         "L D? (G|S)* E",
+                         "light samples at D and G; walks on at G, S"};
+    const FamilyNode rad{{760, 330}, 420, "radiosity (1984, 1988)", "L D* E", "diffuse quads, constant on elements"};
+    const FamilyNode whitted{
+        {260, 510}, 460, "Whitted (1980)", "L [DG] S* E | L S* E", "point lights only; walks on at S only"};
+    const FamilyNode common{
+        {510, 660}, 620, "common to all of them", "L D? E", "the lamps seen, and direct light on D"};
+    familyEdge(s, all, drt, "D only next to L", "end", {-24, -10});
+    familyEdge(s, all, rad, "only D", "start", {24, -10});
+    familyEdge(s, drt, whitted, "G only next to L", "start", {14, 6});
+    // Whitted's and radiosity's arrows go straight down onto the common box's top.
+    const double top = common.centre.y - 48;
+    for (const FamilyNode* n : {&whitted, &rad}) {
+        const P from = n->centre + P{0, 48};
+        s.arrow(from, {from.x, top}, kInk, 2);
+        s.text({from.x + 14, 0.5 * (from.y + top) + 6}, n == &whitted ? "no G, no S" : "one D at most", "start", 18,
+               kRed, true);
+    }
+    for (const FamilyNode* n : {&all, &drt, &rad, &whitted, &common}) familyBox(s, *n);
+    return s;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -851,6 +908,7 @@ int main(int argc, char** argv) {
     figures.push_back({"08-photon-mapping/kdtree-query.svg", kdTreeQuery()});
     figures.push_back({"09-metropolis/pss-chain.svg", metropolisChain()});
     figures.push_back({"10-adrrs/weight-window.svg", weightWindow()});
+    figures.push_back({"11-classics/family-tree.svg", familyTree()});
     for (const Figure& f : figures) {
         std::string path = dir + "/" + f.path;
         std::error_code ec;

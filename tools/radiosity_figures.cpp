@@ -1,5 +1,5 @@
 // radiosity_figures: lesson 11's radiosity figures (scripts/figures.sh runs it;
-// lessons/11-classics/drafts/radiosity.md shows them), and the path-traced patch averages its
+// lessons/11-classics/README.md shows them), and the path-traced patch averages its
 // graded test compares with.
 //
 //   radiosity_figures OUTDIR [--quick] [--scenes DIR] [--patches FILE]

@@ -5,7 +5,7 @@
 // ray casting; and the shooting (Southwell) iteration sends each element's unshot power to every
 // other element, the element with the most first. Implemented in solutions/11-classics/
 // {form_factor,shooting,ambient}.cpp (reference) or assignments/11-classics/ (yours);
-// lessons/11-classics/drafts/radiosity.md derives every formula (Eq. 11.20-11.29).
+// lessons/11-classics/README.md derives every formula (Eq. 11.20-11.29).
 //
 // What radiosity needs of a scene: quads (Scene::quads) with diffuse materials, lit by quads with
 // emission. Anything else (spheres, triangles and meshes, Phong, mirrors, glass, point lights, a

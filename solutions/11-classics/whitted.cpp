@@ -20,9 +20,8 @@ Color LiWhitted(const Scene& scene, const Ray& ray, int bounces, const WhittedOp
     //! STUB (void)scene; (void)ray; (void)bounces; (void)opt;
     //! STUB return PS_TODO("lesson 11: LiWhitted", Color(0.0f));
     //! BEGIN
-    Ray r = ray;
     SurfacePoint sp;
-    if (!scene.intersect(r, sp)) return scene.backgroundRadiance();
+    if (Ray r = ray; !scene.intersect(r, sp)) return scene.backgroundRadiance();  // a miss
     const Vec3 wo = -ray.d;
     Color L(0.0f);
     if (sp.light >= 0) L += emittedRadiance(scene.lights[size_t(sp.light)], sp.n, wo);

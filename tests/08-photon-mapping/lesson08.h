@@ -39,7 +39,7 @@ using ps::fmt::str;
 //   a new cache record's E and R at five points (Welch t-tests, Bonferroni inside)      -> 1
 //   ppm on the Cornell box: the lamp's pixels (a bound plus the noise at this level)    -> 1
 //   pm's caustic on the Cornell spheres' floor (a bound plus the noise at this level)   -> 1
-// m = 12; each runs at the Sidak level alpha' = 1 - (1 - a_L)^(1/12) ~ 7.6e-05, where a_L is the
+// m = 12; each runs at the Sidak level alpha' = 1 - (1 - a_L)^(1/12) ~ 7.0e-05, where a_L is the
 // lesson's share of the whole course's 1 % (tests/support/alpha.h).
 constexpr int kStatisticalTests = 12;
 inline double alpha() { return ps::testalpha::perTest(kStatisticalTests); }

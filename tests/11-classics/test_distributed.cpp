@@ -93,6 +93,9 @@ TEST_CASE(
     const ps::testrender::Render pt = renderAt(kTable, "pt", -1, 2048, 1112);
     CHECK_MESSAGE(drt.stats.bad() == 0, "drt: expected 0 NaN and 0 Inf samples, got " << drt.stats.nan << " NaN and "
                                                                                       << drt.stats.inf << " Inf");
+    // Both images black would pass the z-test: the lamp lights the table, so drt must not be.
+    REQUIRE_MESSAGE(ps::testrender::total(drt.mean) > 0.0,
+                    "drt renders the table under its lamp black: LiDistributed returns nothing yet");
     const ps::stats::ZTestResult z = ps::stats::zTestImages(drt.mean, drt.variance, pt.mean, pt.variance, level);
     CHECK_MESSAGE(
         z.passed,
@@ -120,6 +123,8 @@ TEST_CASE(
     "drt: no diffuse interreflection: in a closed diffuse box it equals direct light, pt with maxdepth 1 (z-test) [1 pt]") {
     const ps::testrender::Render drt = renderAt(kClosedBox, "drt", -1, 256, 1113);
     const ps::testrender::Render direct = renderAt(kClosedBox, "pt", 1, 1024, 1114);
+    REQUIRE_MESSAGE(ps::testrender::total(drt.mean) > 0.0,
+                    "drt renders the lit box black: LiDistributed returns nothing yet");
     const ps::stats::ZTestResult z =
         ps::stats::zTestImages(drt.mean, drt.variance, direct.mean, direct.variance, alpha());
     CHECK_MESSAGE(z.passed,
@@ -152,6 +157,8 @@ TEST_CASE(
     const ps::testrender::Render drt = ps::testrender::render(scene, "drt", kSpp, ps::testseed::seed(1117));
     CHECK_MESSAGE(drt.stats.bad() == 0, "drt: expected 0 NaN and 0 Inf samples, got " << drt.stats.nan << " NaN and "
                                                                                       << drt.stats.inf << " Inf");
+    REQUIRE_MESSAGE(ps::testrender::total(drt.mean) > 0.0,
+                    "drt renders the Cornell box black: LiDistributed returns nothing yet");
     const double total = ps::testrender::total(drt.mean), refTotal = ps::testrender::total(ref);
     const ps::stats::ZTestResult z =
         ps::stats::zTestImages(drt.mean, judgedVariance(drt.variance, kSpp, refVar, kRefSpp), ref, refVar, alpha());
