@@ -47,14 +47,17 @@ struct alignas(64) WideNode {
     }
 };
 
-// What the slab test needs of a ray, computed once per ray: the origin and 1/d (+-inf along an
-// axis-parallel direction; d + 0 turns a -0 into +0, so such an axis always gives +inf).
+// What the slab test needs of a ray, computed once per ray: the origin, 1/d (+-inf along an
+// axis-parallel direction; d + 0 turns a -0 into +0, so such an axis always gives +inf) and,
+// per axis, which plane of a slab the ray meets first (the lower one when d >= 0).
 struct BoxRay {
     float org[3], inv[3];
+    bool negative[3];
     explicit BoxRay(const Ray& r) {
         for (int a = 0; a < 3; ++a) {
             org[a] = r.o[a];
             inv[a] = 1.0f / (r.d[a] + 0.0f);
+            negative[a] = inv[a] < 0.0f;
         }
     }
 };
@@ -110,12 +113,16 @@ private:
 // NaN, which leaves t0 and t1 as they were. t0 only grows and t1 only shrinks: one test at the end.
 inline BoxHits intersectBoxes(const WideNode& n, const BoxRay& r, float tMax) {
     constexpr float kGrow = 1.0f + 2.0f * 3.0f * 0x1p-24f / (1.0f - 3.0f * 0x1p-24f);
+    const float *near[3], *far[3];
+    for (int a = 0; a < 3; ++a) {
+        near[a] = r.negative[a] ? n.hi[a] : n.lo[a];
+        far[a] = r.negative[a] ? n.lo[a] : n.hi[a];
+    }
     BoxHits h;
     for (int c = 0; c < WideNode::kWidth; ++c) {
         float t0 = 0.0f, t1 = tMax;
         for (int a = 0; a < 3; ++a) {
-            const float tA = (n.lo[a][c] - r.org[a]) * r.inv[a], tB = (n.hi[a][c] - r.org[a]) * r.inv[a];
-            const float tNear = tA > tB ? tB : tA, tFar = (tA > tB ? tA : tB) * kGrow;
+            const float tNear = (near[a][c] - r.org[a]) * r.inv[a], tFar = (far[a][c] - r.org[a]) * r.inv[a] * kGrow;
             t0 = tNear > t0 ? tNear : t0;
             t1 = tFar < t1 ? tFar : t1;
         }
