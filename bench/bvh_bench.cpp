@@ -15,6 +15,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <exception>
 #include <fstream>
 #include <stdexcept>
@@ -39,6 +40,14 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double secondsSince(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
+// The CPU time of the whole process (all threads), for --cpu-time: on a machine that other jobs
+// keep busy, wall-clock time also counts the time slices the system gave to them.
+double processCpuSeconds() {
+    timespec ts;
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+    return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
+}
+
 const char* const kBunny = "/usr/share/glmark2/models/bunny.obj";
 const char* const kMotorbike = "/usr/share/doc/openfoam-examples/examples/resources/geometry/motorBike.obj.gz";
 
@@ -50,6 +59,7 @@ struct Options {
     std::string sets;            // ray sets to run, comma-separated (empty: all)
     std::string tracer = "both";  // ours | embree | both; one tracer alone: no checks (profiling)
     int res = 1024;               // primary rays res^2; the other sets as many
+    bool cpuTime = false;         // time the tracing passes in process CPU seconds, not wall-clock
     std::string scenesDir = PATHSPACE_SOURCE_DIR "/scenes";
 };
 
@@ -322,6 +332,8 @@ void usage(std::FILE* out) {
                  "  --threads L   thread counts, comma-separated (default 1,2)\n"
                  "  --sets L      ray sets, comma-separated (primary,incoherent,shadow; default all)\n"
                  "  --res R       R x R primary rays, R^2 rays in the other sets (default 1024)\n"
+                 "  --cpu-time    Mrays per CPU second of the process instead of per wall-clock second\n"
+                 "                (steadier on a loaded machine; with 2 threads, their CPU time added up)\n"
                  "  --tracer T    ours, embree or both (default); one alone runs no checks: for profiling,\n"
                  "                e.g. valgrind --tool=callgrind --toggle-collect='*traceOurs*'\n"
                  "Real meshes, when installed: %s (apt-get install glmark2-data),\n"
@@ -351,6 +363,7 @@ int main(int argc, char** argv) {
                 c = *end ? end + 1 : end;
             }
         } else if (a == "--sets" && i + 1 < argc) opt.sets = argv[++i];
+        else if (a == "--cpu-time") opt.cpuTime = true;
         else if (a == "--res" && i + 1 < argc) opt.res = std::max(8, std::atoi(argv[++i]));
         else if (a == "--tracer" && i + 1 < argc && (std::string(argv[i + 1]) == "ours" ||
                                                        std::string(argv[i + 1]) == "embree" ||
@@ -410,8 +423,8 @@ int main(int argc, char** argv) {
     for (const std::string& m : missing)
         std::printf("not found: %s (apt-get install %s)\n", m.c_str(),
                     m == kBunny ? "glmark2-data" : "openfoam-examples");
-    std::printf("%d ray(s) per set; Mrays/s: median of %d passes (ratio: median and range of the per-pass ratios)\n\n",
-                int(n), opt.passes);
+    std::printf("%d ray(s) per set; Mrays/s%s: median of %d passes (ratio: median and range of the per-pass ratios)\n\n",
+                int(n), opt.cpuTime ? " (per CPU second)" : "", opt.passes);
     std::printf("%-13s %8s %18s %3s %-10s %9s %9s %18s\n", "scene", "tris", "build ms ours/Emb", "thr", "rays", "ours",
                 "Embree", "ratio");
     std::fflush(stdout);
@@ -436,7 +449,7 @@ int main(int argc, char** argv) {
             oursBuild = std::min(oursBuild, secondsSince(t0));
         }
 #ifdef PATHSPACE_HAVE_EMBREE
-        Embree embree("threads=1");  // build on one thread, like ours; tracing runs on our threads
+        Embree embree(getenv("PS_EMBREE_CONFIG") ? getenv("PS_EMBREE_CONFIG") : "threads=1");  // build on one thread, like ours; tracing runs on our threads
         if (runEmbree) embreeBuild = 1e300;
         for (int r = 0; r < buildRuns && runEmbree; ++r) {
             const auto t0 = Clock::now();
@@ -472,12 +485,15 @@ int main(int argc, char** argv) {
                     for (int k = 0; k < 2; ++k) {
                         const bool oursNow = (k == 0) == (p % 2 == 0);
                         const auto t0 = Clock::now();
+                        const double c0 = processCpuSeconds();
                         if (oursNow && runOurs) traceOurs(s, set, ours);
 #ifdef PATHSPACE_HAVE_EMBREE
                         else if (!oursNow && runEmbree) embree.trace(set, theirs);
 #endif
                         else continue;
-                        if (p >= 0) (oursNow ? tOurs : tTheirs).push_back(secondsSince(t0));
+                        if (p >= 0)
+                            (oursNow ? tOurs : tTheirs)
+                                .push_back(opt.cpuTime ? processCpuSeconds() - c0 : secondsSince(t0));
                     }
                     if (p >= 0 && !tTheirs.empty() && !tOurs.empty())
                         ratio.push_back(tTheirs.back() / tOurs.back());
