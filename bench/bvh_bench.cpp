@@ -56,7 +56,7 @@ struct Options {
     int passes = 5;    // timed passes per tracer, ray set and thread count
     std::string only;  // one scene by name (empty: all)
     std::vector<int> threads = {1, 2};
-    std::string sets;            // ray sets to run, comma-separated (empty: all)
+    std::string sets;             // ray sets to run, comma-separated (empty: all)
     std::string tracer = "both";  // ours | embree | both; one tracer alone: no checks (profiling)
     int res = 1024;               // primary rays res^2; the other sets as many
     bool cpuTime = false;         // time the tracing passes in process CPU seconds, not wall-clock
@@ -365,9 +365,9 @@ int main(int argc, char** argv) {
         } else if (a == "--sets" && i + 1 < argc) opt.sets = argv[++i];
         else if (a == "--cpu-time") opt.cpuTime = true;
         else if (a == "--res" && i + 1 < argc) opt.res = std::max(8, std::atoi(argv[++i]));
-        else if (a == "--tracer" && i + 1 < argc && (std::string(argv[i + 1]) == "ours" ||
-                                                       std::string(argv[i + 1]) == "embree" ||
-                                                       std::string(argv[i + 1]) == "both"))
+        else if (a == "--tracer" && i + 1 < argc &&
+                 (std::string(argv[i + 1]) == "ours" || std::string(argv[i + 1]) == "embree" ||
+                  std::string(argv[i + 1]) == "both"))
             opt.tracer = argv[++i];
         else {
             std::fprintf(stderr, "bvh_bench: unknown or incomplete option '%s'\n", a.c_str());
@@ -423,8 +423,9 @@ int main(int argc, char** argv) {
     for (const std::string& m : missing)
         std::printf("not found: %s (apt-get install %s)\n", m.c_str(),
                     m == kBunny ? "glmark2-data" : "openfoam-examples");
-    std::printf("%d ray(s) per set; Mrays/s%s: median of %d passes (ratio: median and range of the per-pass ratios)\n\n",
-                int(n), opt.cpuTime ? " (per CPU second)" : "", opt.passes);
+    std::printf(
+        "%d ray(s) per set; Mrays/s%s: median of %d passes (ratio: median and range of the per-pass ratios)\n\n",
+        int(n), opt.cpuTime ? " (per CPU second)" : "", opt.passes);
     std::printf("%-13s %8s %18s %3s %-10s %9s %9s %18s\n", "scene", "tris", "build ms ours/Emb", "thr", "rays", "ours",
                 "Embree", "ratio");
     std::fflush(stdout);
@@ -449,7 +450,9 @@ int main(int argc, char** argv) {
             oursBuild = std::min(oursBuild, secondsSince(t0));
         }
 #ifdef PATHSPACE_HAVE_EMBREE
-        Embree embree(getenv("PS_EMBREE_CONFIG") ? getenv("PS_EMBREE_CONFIG") : "threads=1");  // build on one thread, like ours; tracing runs on our threads
+        Embree embree(getenv("PS_EMBREE_CONFIG")
+                          ? getenv("PS_EMBREE_CONFIG")
+                          : "threads=1");  // build on one thread, like ours; tracing runs on our threads
         if (runEmbree) embreeBuild = 1e300;
         for (int r = 0; r < buildRuns && runEmbree; ++r) {
             const auto t0 = Clock::now();
@@ -495,8 +498,7 @@ int main(int argc, char** argv) {
                             (oursNow ? tOurs : tTheirs)
                                 .push_back(opt.cpuTime ? processCpuSeconds() - c0 : secondsSince(t0));
                     }
-                    if (p >= 0 && !tTheirs.empty() && !tOurs.empty())
-                        ratio.push_back(tTheirs.back() / tOurs.back());
+                    if (p >= 0 && !tTheirs.empty() && !tOurs.empty()) ratio.push_back(tTheirs.back() / tOurs.back());
                 }
                 char oursText[16] = "-", theirsText[16] = "-", ratioText[32] = "-";
                 if (!tOurs.empty())

@@ -91,13 +91,13 @@ public:
 private:
     struct BinaryNode {
         AABB box;
-        uint32_t first = 0;  // inner node: left child (right = first + 1); leaf: first item
-        uint32_t count = 0;  // 0 for an inner node, else the number of items
+        uint32_t begin = 0, end = 0;  // its items: [begin, end)
+        uint32_t left = 0;            // inner node: its children left and left + 1; leaf: 0
     };
     void buildBinary(uint32_t node, std::vector<BinaryNode>& bin, std::vector<AABB>& boxes,
                      std::vector<Vec3>& centroids, uint32_t begin, uint32_t end, int depth);
     uint32_t collapse(const std::vector<BinaryNode>& bin, uint32_t node, int depth);
-    static void setChild(WideNode& w, int k, const BinaryNode* c, uint32_t inner);
+    static void setChild(WideNode& w, int k, const AABB& box, uint32_t child, uint32_t count);
     std::vector<WideNode> nodes_;
     std::vector<uint32_t> order_;
     AABB bounds_;
@@ -170,6 +170,7 @@ bool BVH::traverse(Ray& ray, bool anyHit, HitItem&& hitItem) const {
             }
             continue;
         }
+#pragma GCC unroll 8
         for (int c = 0; c < WideNode::kWidth; ++c) {
             if (!h.hit[c]) continue;
             int j = top++;
