@@ -1,4 +1,5 @@
 #include "scene.h"
+#include <optional>
 #include "errors.h"
 #include <algorithm>
 #include <cstdio>
@@ -233,7 +234,7 @@ SurfacePoint Scene::surfacePoint(uint32_t prim, const Vec3& p) const {
 
 bool Scene::intersect(Ray& ray, SurfacePoint& sp) const {
     ++tlsRays;
-    const WatertightRay wr(ray);
+    std::optional<WatertightRay> wr;  // built at the first triangle the ray reaches (many reach none)
     uint32_t hitItem = kNoPrimitive;
     float hb1 = 0.0f, hb2 = 0.0f;
     bvh.traverse(ray, false, [&](uint32_t i, Ray& r) {
@@ -241,7 +242,8 @@ bool Scene::intersect(Ray& ray, SurfacePoint& sp) const {
         float t, b1 = 0.0f, b2 = 0.0f;
         if (it.prim == r.ignorePrim) return false;
         if (it.sphere == kNoPrimitive) {
-            if (!intersectTriangle(r, wr, it.tri, t, b1, b2)) return false;
+            if (!wr) wr.emplace(r);
+            if (!intersectTriangle(r, *wr, it.tri, t, b1, b2)) return false;
         } else if (!intersectSphere(r, spheres[it.sphere], t)) {
             return false;
         }
@@ -273,13 +275,14 @@ bool Scene::intersect(Ray& ray, SurfacePoint& sp) const {
 
 bool Scene::occluded(const Ray& ray) const {
     ++tlsRays;
-    const WatertightRay wr(ray);
+    std::optional<WatertightRay> wr;
     Ray r = ray;
     return bvh.traverse(r, true, [&](uint32_t i, Ray& rr) {  // stops at the first hit
         const Item& it = items_[i];
         float t, b1, b2;
         if (it.prim == rr.ignorePrim) return false;
-        return it.sphere == kNoPrimitive ? intersectTriangle(rr, wr, it.tri, t, b1, b2)
+        if (it.sphere == kNoPrimitive && !wr) wr.emplace(rr);
+        return it.sphere == kNoPrimitive ? intersectTriangle(rr, *wr, it.tri, t, b1, b2)
                                          : intersectSphere(rr, spheres[it.sphere], t);
     });
 }
