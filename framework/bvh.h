@@ -107,10 +107,12 @@ private:
 // The slab test of one ray against all of a node's boxes at once: GCC (-O3, the Release default;
 // `-fopt-info-vec` reports "loop vectorized" for this line) and Clang turn the loop over the
 // children into 4-wide SIMD instructions, each line of its body one instruction per four boxes.
-// No early exit, no branch: every child is tested, the unused ones too. The far distance is multiplied by 1 + 2 gamma(3) so that float rounding never misses a
-// box (Ize 2013). NaN-safe: a slab gives NaN only for a ray lying in one of its planes (0 * inf),
-// and NaN compares false, so tNear or tFar is then the other plane's (the ray is in the slab) or
-// NaN, which leaves t0 and t1 as they were. t0 only grows and t1 only shrinks: one test at the end.
+// No early exit, no branch: every child is tested, the unused ones too. Along each axis the ray
+// meets the near plane first (the lower one when d >= 0), so no min/max of the two is needed.
+// The far distance is multiplied by 1 + 2 gamma(3) so that float rounding never misses a box
+// (Ize 2013). NaN-safe: a slab gives NaN only for a ray lying in one of its planes (0 * inf,
+// d = +0 after BoxRay), and NaN compares false, so that plane leaves t0 or t1 as it was (the
+// ray is in the slab). t0 only grows and t1 only shrinks: one test at the end.
 inline BoxHits intersectBoxes(const WideNode& n, const BoxRay& r, float tMax) {
     constexpr float kGrow = 1.0f + 2.0f * 3.0f * 0x1p-24f / (1.0f - 3.0f * 0x1p-24f);
     const float *near[3], *far[3];
@@ -122,7 +124,8 @@ inline BoxHits intersectBoxes(const WideNode& n, const BoxRay& r, float tMax) {
     for (int c = 0; c < WideNode::kWidth; ++c) {
         float t0 = 0.0f, t1 = tMax;
         for (int a = 0; a < 3; ++a) {
-            const float tNear = (near[a][c] - r.org[a]) * r.inv[a], tFar = (far[a][c] - r.org[a]) * r.inv[a] * kGrow;
+            const float tNear = (near[a][c] - r.org[a]) * r.inv[a];
+            const float tFar = (far[a][c] - r.org[a]) * r.inv[a] * kGrow;
             t0 = tNear > t0 ? tNear : t0;
             t1 = tFar < t1 ? tFar : t1;
         }
@@ -161,7 +164,9 @@ bool BVH::traverse(Ray& ray, bool anyHit, HitItem&& hitItem) const {
         const BoxHits h = intersectBoxes(n, boxRay, ray.tMax);
         // Push the children the ray enters. Any hit: in any order, each child written and kept
         // only if hit (no branch per child, which incoherent rays would mispredict). Closest
-        // hit: sorted by entry distance, the nearest on top, so that it is visited next.
+        // hit: sorted by entry distance, the nearest on top, so that it is visited next; the
+        // loop unrolled (GCC and Clang read the pragma, others ignore it): eight branches of
+        // their own predict better than one, and primary rays got 6 % faster (bench/README.md).
         const int bottom = top;
         if (anyHit) {
             for (int c = 0; c < WideNode::kWidth; ++c) {
