@@ -52,6 +52,8 @@ void Scene::finalize() {
         const uint32_t p = bvh.order()[i];
         const Primitive& pr = prims[p];
         items_[i].prim = p;
+        items_[i].material = pr.material;
+        items_[i].light = pr.light;
         if (pr.shape == ShapeKind::Triangle) items_[i].tri = triangles[pr.index];
         else items_[i].sphere = pr.index;
     }
@@ -262,14 +264,13 @@ bool Scene::intersect(Ray& ray, SurfacePoint& sp) const {
     }
     // surfacePoint(), from the item's copy of the triangle. Barycentric interpolation is more
     // accurate than o + t d far from the origin.
-    const Primitive& pr = prims[it.prim];
     sp = SurfacePoint();
     sp.p = (1.0f - hb1 - hb2) * it.tri.p0 + hb1 * it.tri.p1 + hb2 * it.tri.p2;
     sp.n = it.tri.normal();
     sp.errScale = it.tri.errScale();
     sp.prim = it.prim;
-    sp.material = pr.material;
-    sp.light = pr.light;
+    sp.material = it.material;
+    sp.light = it.light;
     return true;
 }
 
