@@ -150,7 +150,9 @@ bool BVH::traverse(Ray& ray, bool anyHit, HitItem&& hitItem) const {
     bool hit = false;
     while (top > 0) {
         const Entry e = stack[--top];
-        if (e.enter > ray.tMax) continue;  // beyond the closest hit found since it was pushed
+        // Beyond the closest hit found since it was pushed (any hit: tMax never changes, and the
+        // box test has already left out boxes beyond it).
+        if (!anyHit && e.enter > ray.tMax) continue;
         if (e.count != WideNode::kInner) {
             for (uint32_t i = e.child; i < e.child + e.count; ++i) {
                 if (hitItem(i, ray)) {
@@ -170,7 +172,7 @@ bool BVH::traverse(Ray& ray, bool anyHit, HitItem&& hitItem) const {
         const int bottom = top;
         if (anyHit) {
             for (int c = 0; c < WideNode::kWidth; ++c) {
-                stack[top] = {n.child[c], n.count[c], h.enter[c]};
+                stack[top] = {n.child[c], n.count[c], 0.0f};  // (enter unused)
                 top += h.hit[c];
             }
             continue;
