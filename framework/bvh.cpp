@@ -40,8 +40,7 @@ void BVH::setChild(WideNode& w, int k, const AABB& box, uint32_t child, uint32_t
         w.lo[a][k] = box.empty() ? kInf : box.lo[a];
         w.hi[a][k] = box.empty() ? kInf : box.hi[a];
     }
-    w.child[k] = child;
-    w.count[k] = count;
+    w.slot[k] = {child, count};
 }
 
 // Builds the binary subtree over items [begin, end) into bin[self], which the caller allocated.

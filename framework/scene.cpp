@@ -160,9 +160,9 @@ void Scene::findSurfacePointLights() {
                 bool inside = true;
                 for (int a = 0; a < 3; ++a) inside = inside && p[a] >= b.lo[a] - grow && p[a] <= b.hi[a] + grow;
                 if (!inside) continue;
-                if (node.count[k] == WideNode::kInner) stack.push_back(node.child[k]);
+                if (node.slot[k].count == WideNode::kInner) stack.push_back(node.slot[k].child);
                 else
-                    for (uint32_t j = node.child[k]; j < node.child[k] + node.count[k]; ++j)
+                    for (uint32_t j = node.slot[k].child; j < node.slot[k].child + node.slot[k].count; ++j)
                         near.push_back(bvh.order()[j]);
             }
         }
