@@ -34,6 +34,7 @@ for t in pathspace image_compare; do
 done
 mkdir -p "$OUT"; cd "$OUT"
 now() { date +%s.%N; }
+calc() { awk "BEGIN { print $1 }"; }  # floating-point arithmetic (awk is in every Debian)
 if [[ ! -f reference.pfm ]]; then
   echo "reference: pathspace bpt for $((8 * SECONDS_EACH)) s ..."
   "$BUILD/pathspace" render "$SCENE" --algo bpt --time $((8 * SECONDS_EACH)) --threads "$THREADS" \
@@ -49,24 +50,24 @@ for a in pt lt bpt; do
            --out ours-$a.pfm --no-progress 2>&1 | grep ' spp in ')
   e=$(now)
   spp=$(sed -E 's/.*: ([0-9]+) spp in.*/\1/' <<<"$line")
-  wall=$(echo "$e - $s" | bc -l)
+  wall=$(calc "$e - $s")
   # SmallVCM: 2 x THREADS iterations to measure its rate, then enough to fill SECONDS_EACH.
   n0=$((2 * THREADS)); s=$(now)
   OMP_NUM_THREADS=$THREADS "$SVCM" -s $SID -a $a -i $n0 -o svcm-probe.hdr >/dev/null
   e=$(now)
-  n=$(echo "x = $SECONDS_EACH * $n0 / ($e - $s); scale = 0; (x + $THREADS / 2) / $THREADS * $THREADS" | bc -l)
+  n=$(calc "int($SECONDS_EACH * $n0 / ($e - $s) / $THREADS + 0.5) * $THREADS")
   [[ $n -ge $THREADS ]] || n=$THREADS
   s=$(now)
   OMP_NUM_THREADS=$THREADS "$SVCM" -s $SID -a $a -i $n -o svcm-$a.hdr >/dev/null
   e=$(now)
-  swall=$(echo "$e - $s" | bc -l)
+  swall=$(calc "$e - $s")
   for r in ours svcm; do
     if [[ $r == ours ]]; then img=ours-$a.pfm; k=$spp; w=$wall; name=pathspace; else img=svcm-$a.hdr; k=$n; w=$swall; name=SmallVCM; fi
-    m=$("$BUILD/image_compare" "$img" reference.pfm)
+    m=$("$BUILD/image_compare" "$img" reference.pfm --scene "$SCENE")
     rel=$(awk '$1 == "MSE" {print $4}' <<<"$m"); trim=$(awk '$1 == "MSE" {print $7}' <<<"$m")
     ratio=$(sed -nE 's/^mean ratio (.*)/\1/p' <<<"$m")
     printf '%-5s %-10s %6d %8.2f %12.0f %10.4g %10.4g %10.4g   (mean / reference: %s)\n' $a $name $k $w \
-      "$(echo "$k * 512 * 512 / $w" | bc -l)" "$rel" "$trim" "$(echo "1 / ($rel * $w)" | bc -l)" "$ratio"
+      "$(calc "$k * 512 * 512 / $w")" "$rel" "$trim" "$(calc "1 / ($rel * $w)")" "$ratio"
   done
 done
 echo "load average at the end: $(cut -d' ' -f1-3 /proc/loadavg)"
