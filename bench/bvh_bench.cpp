@@ -15,6 +15,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <exception>
 #include <fstream>
 #include <stdexcept>
@@ -39,6 +40,14 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double secondsSince(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
+// The CPU time of the whole process (all threads), for --cpu-time: on a machine that other jobs
+// keep busy, wall-clock time also counts the time slices the system gave to them.
+double processCpuSeconds() {
+    timespec ts;
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+    return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
+}
+
 const char* const kBunny = "/usr/share/glmark2/models/bunny.obj";
 const char* const kMotorbike = "/usr/share/doc/openfoam-examples/examples/resources/geometry/motorBike.obj.gz";
 
@@ -46,6 +55,11 @@ struct Options {
     bool quick = false;
     int passes = 5;    // timed passes per tracer, ray set and thread count
     std::string only;  // one scene by name (empty: all)
+    std::vector<int> threads = {1, 2};
+    std::string sets;             // ray sets to run, comma-separated (empty: all)
+    std::string tracer = "both";  // ours | embree | both; one tracer alone: no checks (profiling)
+    int res = 1024;               // primary rays res^2; the other sets as many
+    bool cpuTime = false;         // time the tracing passes in process CPU seconds, not wall-clock
     std::string scenesDir = PATHSPACE_SOURCE_DIR "/scenes";
 };
 
@@ -315,6 +329,13 @@ void usage(std::FILE* out) {
                  "  --passes N    timed passes per tracer, ray set and thread count (default 5)\n"
                  "  --scenes DIR  where cornell-box.scene is (default: %s)\n"
                  "  --only NAME   only that scene (cornell-box, noisy-sphere, bunny, motorbike)\n"
+                 "  --threads L   thread counts, comma-separated (default 1,2)\n"
+                 "  --sets L      ray sets, comma-separated (primary,incoherent,shadow; default all)\n"
+                 "  --res R       R x R primary rays, R^2 rays in the other sets (default 1024)\n"
+                 "  --cpu-time    Mrays per CPU second of the process instead of per wall-clock second\n"
+                 "                (steadier on a loaded machine; with 2 threads, their CPU time added up)\n"
+                 "  --tracer T    ours, embree or both (default); one alone runs no checks: for profiling,\n"
+                 "                e.g. valgrind --tool=callgrind --toggle-collect='*traceOurs*'\n"
                  "Real meshes, when installed: %s (apt-get install glmark2-data),\n"
                  "  %s (apt-get install openfoam-examples)\n",
                  PATHSPACE_SOURCE_DIR "/scenes", kBunny, kMotorbike);
@@ -334,6 +355,20 @@ int main(int argc, char** argv) {
         else if (a == "--passes" && i + 1 < argc) opt.passes = std::max(1, std::atoi(argv[++i]));
         else if (a == "--scenes" && i + 1 < argc) opt.scenesDir = argv[++i];
         else if (a == "--only" && i + 1 < argc) opt.only = argv[++i];
+        else if (a == "--threads" && i + 1 < argc) {
+            opt.threads.clear();
+            for (const char* c = argv[++i]; *c;) {
+                char* end;
+                opt.threads.push_back(std::max(1, int(std::strtol(c, &end, 10))));
+                c = *end ? end + 1 : end;
+            }
+        } else if (a == "--sets" && i + 1 < argc) opt.sets = argv[++i];
+        else if (a == "--cpu-time") opt.cpuTime = true;
+        else if (a == "--res" && i + 1 < argc) opt.res = std::max(8, std::atoi(argv[++i]));
+        else if (a == "--tracer" && i + 1 < argc &&
+                 (std::string(argv[i + 1]) == "ours" || std::string(argv[i + 1]) == "embree" ||
+                  std::string(argv[i + 1]) == "both"))
+            opt.tracer = argv[++i];
         else {
             std::fprintf(stderr, "bvh_bench: unknown or incomplete option '%s'\n", a.c_str());
             usage(stderr);
@@ -341,7 +376,7 @@ int main(int argc, char** argv) {
         }
     }
     if (opt.quick) opt.passes = 1;
-    const int res = opt.quick ? 128 : 1024;  // primary rays: res^2; the other sets as many
+    const int res = opt.quick ? 128 : opt.res;  // primary rays: res^2; the other sets as many
     const size_t n = size_t(res) * res;
 
     struct Bench {
@@ -351,14 +386,19 @@ int main(int argc, char** argv) {
     std::vector<Bench> benches;
     std::vector<std::string> missing;
     try {
-        const Scene cornell = loadScene(opt.scenesDir + "/cornell-box.scene");
-        benches.push_back({"cornell-box", meshScene("cornell-box", cornell.triangles, Vec3(0, 0, -1), res)});
-        benches.push_back(
-            {"noisy-sphere", meshScene("noisy-sphere", opt.quick ? noisySphere(40, 80) : noisySphere(200, 400),
-                                       Vec3(0.0f, 0.3f, -1.0f), res)});
+        auto wanted = [&](const char* name) { return opt.only.empty() || opt.only == name; };
+        if (wanted("cornell-box")) {
+            const Scene cornell = loadScene(opt.scenesDir + "/cornell-box.scene");
+            benches.push_back({"cornell-box", meshScene("cornell-box", cornell.triangles, Vec3(0, 0, -1), res)});
+        }
+        if (wanted("noisy-sphere"))
+            benches.push_back(
+                {"noisy-sphere", meshScene("noisy-sphere", opt.quick ? noisySphere(40, 80) : noisySphere(200, 400),
+                                           Vec3(0.0f, 0.3f, -1.0f), res)});
         if (!opt.quick) {
             for (const auto& [name, path, from] : {std::tuple{"bunny", kBunny, Vec3(0, 0, 1)},
                                                    std::tuple{"motorbike", kMotorbike, Vec3(-1, 0.3f, -0.6f)}}) {
+                if (!wanted(name)) continue;
                 if (!std::ifstream(path)) {
                     missing.push_back(path);
                     continue;
@@ -383,8 +423,9 @@ int main(int argc, char** argv) {
     for (const std::string& m : missing)
         std::printf("not found: %s (apt-get install %s)\n", m.c_str(),
                     m == kBunny ? "glmark2-data" : "openfoam-examples");
-    std::printf("%d ray(s) per set; Mrays/s: median of %d passes (ratio: median and range of the per-pass ratios)\n\n",
-                int(n), opt.passes);
+    std::printf(
+        "%d ray(s) per set; Mrays/s%s: median of %d passes (ratio: median and range of the per-pass ratios)\n\n",
+        int(n), opt.cpuTime ? " (per CPU second)" : "", opt.passes);
     std::printf("%-13s %8s %18s %3s %-10s %9s %9s %18s\n", "scene", "tris", "build ms ours/Emb", "thr", "rays", "ours",
                 "Embree", "ratio");
     std::fflush(stdout);
@@ -396,72 +437,89 @@ int main(int argc, char** argv) {
         const Scene& s = b.scene;
         std::vector<AABB> boxes(s.triangles.size());
         for (size_t i = 0; i < boxes.size(); ++i) boxes[i] = s.triangles[i].bounds();
-        const int buildRuns = opt.quick ? 1 : 5;
+        const bool runOurs = opt.tracer != "embree", checks = opt.tracer == "both";
+#ifdef PATHSPACE_HAVE_EMBREE
+        const bool runEmbree = opt.tracer != "ours";
+#endif
+        const int buildRuns = opt.quick || !checks ? 1 : 5;
         double oursBuild = 1e300, embreeBuild = 0.0;
-        for (int r = 0; r < buildRuns; ++r) {
+        for (int r = 0; r < buildRuns && runOurs; ++r) {
             BVH bvh;
             const auto t0 = Clock::now();
             bvh.build(boxes);
             oursBuild = std::min(oursBuild, secondsSince(t0));
         }
 #ifdef PATHSPACE_HAVE_EMBREE
-        Embree embree("threads=1");  // build on one thread, like ours; tracing runs on our threads
-        embreeBuild = 1e300;
-        for (int r = 0; r < buildRuns; ++r) {
+        Embree embree(getenv("PS_EMBREE_CONFIG")
+                          ? getenv("PS_EMBREE_CONFIG")
+                          : "threads=1");  // build on one thread, like ours; tracing runs on our threads
+        if (runEmbree) embreeBuild = 1e300;
+        for (int r = 0; r < buildRuns && runEmbree; ++r) {
             const auto t0 = Clock::now();
             embree.build(s.triangles);
             embreeBuild = std::min(embreeBuild, secondsSince(t0));
         }
 #endif
-        char build[32];
-        std::snprintf(build, sizeof build, embreeBuild > 0 ? "%.1f / %.1f" : "%.1f / -", oursBuild * 1e3,
-                      embreeBuild * 1e3);
+        char oursB[16] = "-", embreeB[16] = "-", build[40];
+        if (runOurs) std::snprintf(oursB, sizeof oursB, "%.1f", oursBuild * 1e3);
+        if (embreeBuild > 0) std::snprintf(embreeB, sizeof embreeB, "%.1f", embreeBuild * 1e3);
+        std::snprintf(build, sizeof build, "%s / %s", oursB, embreeB);
 
-        const std::vector<RaySet> sets = makeRays(s, n);
+        std::vector<RaySet> sets = makeRays(s, n);
+        if (!opt.sets.empty())
+            sets.erase(std::remove_if(sets.begin(), sets.end(),
+                                      [&](const RaySet& r) {
+                                          return ("," + opt.sets + ",").find("," + std::string(r.name) + ",") ==
+                                                 std::string::npos;
+                                      }),
+                       sets.end());
         CheckCount check;
-        std::vector<std::vector<Hit>> oneThread(sets.size());
-        for (int threads : {1, 2}) {
+        std::vector<std::vector<Hit>> firstRun(sets.size());
+        for (size_t ti = 0; ti < opt.threads.size(); ++ti) {
+            const int threads = opt.threads[ti];
             omp_set_num_threads(threads);
             for (size_t si = 0; si < sets.size(); ++si) {
                 const RaySet& set = sets[si];
                 std::vector<Hit> ours(set.rays.size()), theirs(set.rays.size());
                 std::vector<double> tOurs, tTheirs, ratio;
-                traceOurs(s, set, ours);  // warm-up
-#ifdef PATHSPACE_HAVE_EMBREE
-                embree.trace(set, theirs);
-#endif
-                for (int p = 0; p < opt.passes; ++p) {
-                    // Alternate which tracer goes first, so that neither always gets the warmer machine.
+                // Warm-up, then the timed passes. Alternate which tracer goes first, so that
+                // neither always gets the warmer machine.
+                for (int p = -1; p < opt.passes; ++p) {
                     for (int k = 0; k < 2; ++k) {
                         const bool oursNow = (k == 0) == (p % 2 == 0);
                         const auto t0 = Clock::now();
-                        if (oursNow) traceOurs(s, set, ours);
+                        const double c0 = processCpuSeconds();
+                        if (oursNow && runOurs) traceOurs(s, set, ours);
 #ifdef PATHSPACE_HAVE_EMBREE
-                        else embree.trace(set, theirs);
-#else
-                        else continue;
+                        else if (!oursNow && runEmbree) embree.trace(set, theirs);
 #endif
-                        (oursNow ? tOurs : tTheirs).push_back(secondsSince(t0));
+                        else continue;
+                        if (p >= 0)
+                            (oursNow ? tOurs : tTheirs)
+                                .push_back(opt.cpuTime ? processCpuSeconds() - c0 : secondsSince(t0));
                     }
-                    if (!tTheirs.empty()) ratio.push_back(tTheirs.back() / tOurs.back());
+                    if (p >= 0 && !tTheirs.empty() && !tOurs.empty()) ratio.push_back(tTheirs.back() / tOurs.back());
                 }
-                char theirsText[16] = "-", ratioText[32] = "-";
-                if (!ratio.empty()) {
+                char oursText[16] = "-", theirsText[16] = "-", ratioText[32] = "-";
+                if (!tOurs.empty())
+                    std::snprintf(oursText, sizeof oursText, "%.2f", set.rays.size() / median(tOurs) * 1e-6);
+                if (!tTheirs.empty())
                     std::snprintf(theirsText, sizeof theirsText, "%.2f", set.rays.size() / median(tTheirs) * 1e-6);
+                if (!ratio.empty())
                     std::snprintf(ratioText, sizeof ratioText, "%.2f (%.2f-%.2f)", median(ratio),
                                   *std::min_element(ratio.begin(), ratio.end()),
                                   *std::max_element(ratio.begin(), ratio.end()));
-                }
-                std::printf("%-13s %8zu %18s %3d %-10s %9.2f %9s %18s\n", b.name.c_str(), s.triangles.size(), build,
-                            threads, set.name, set.rays.size() / median(tOurs) * 1e-6, theirsText, ratioText);
+                std::printf("%-13s %8zu %18s %3d %-10s %9s %9s %18s\n", b.name.c_str(), s.triangles.size(), build,
+                            threads, set.name, oursText, theirsText, ratioText);
                 std::fflush(stdout);
-                if (threads != 1) {
+                if (!checks) continue;
+                if (ti > 0) {
                     for (size_t i = 0; i < ours.size(); ++i)
-                        if (ours[i].prim != oneThread[si][i].prim || ours[i].t != oneThread[si][i].t)
+                        if (ours[i].prim != firstRun[si][i].prim || ours[i].t != firstRun[si][i].t)
                             ++check.threadsDiffer;
                     continue;
                 }
-                oneThread[si] = ours;
+                firstRun[si] = ours;
                 // Checks, once per set: every ray against Embree, a sample against brute force.
                 const size_t sample = std::min(
                     set.rays.size(), std::max<size_t>(64, (size_t(1) << (opt.quick ? 20 : 27)) / s.triangles.size()));
@@ -483,6 +541,10 @@ int main(int argc, char** argv) {
                     }
                 }
             }
+        }
+        if (!checks) {
+            std::printf("%-13s checks: none (--tracer %s)\n", "", opt.tracer.c_str());
+            continue;
         }
         std::printf(
             "%-13s checks: %llu rays against Embree (%llu differ), %llu against brute force (%llu wrong), "

@@ -38,13 +38,13 @@ void SplatBuffer::splat(size_t task, const Vec2& raster, const Color& c, SampleS
     if (!(raster.x >= 0.0f && raster.x <= width_ && raster.y >= 0.0f && raster.y <= height_)) return;
     const int x = std::min(width_ - 1, static_cast<int>(raster.x));
     const int y = std::min(height_ - 1, static_cast<int>(raster.y));
-    lists_[task].emplace_back(static_cast<uint32_t>(y * width_ + x), v);
+    lists_[task].splats.emplace_back(static_cast<uint32_t>(y * width_ + x), v);
 }
 
 void SplatBuffer::resolve(Image& img) {
-    for (auto& list : lists_) {
-        for (const auto& [pixel, c] : list) img.pixels[pixel] += c;
-        list.clear();
+    for (List& list : lists_) {
+        for (const auto& [pixel, c] : list.splats) img.pixels[pixel] += c;
+        list.splats.clear();
     }
 }
 

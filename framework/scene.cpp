@@ -1,4 +1,5 @@
 #include "scene.h"
+#include <optional>
 #include "errors.h"
 #include <algorithm>
 #include <cstdio>
@@ -51,6 +52,8 @@ void Scene::finalize() {
         const uint32_t p = bvh.order()[i];
         const Primitive& pr = prims[p];
         items_[i].prim = p;
+        items_[i].material = pr.material;
+        items_[i].light = pr.light;
         if (pr.shape == ShapeKind::Triangle) items_[i].tri = triangles[pr.index];
         else items_[i].sphere = pr.index;
     }
@@ -157,9 +160,9 @@ void Scene::findSurfacePointLights() {
                 bool inside = true;
                 for (int a = 0; a < 3; ++a) inside = inside && p[a] >= b.lo[a] - grow && p[a] <= b.hi[a] + grow;
                 if (!inside) continue;
-                if (node.count[k] == WideNode::kInner) stack.push_back(node.child[k]);
+                if (node.slot[k].count == WideNode::kInner) stack.push_back(node.slot[k].child);
                 else
-                    for (uint32_t j = node.child[k]; j < node.child[k] + node.count[k]; ++j)
+                    for (uint32_t j = node.slot[k].child; j < node.slot[k].child + node.slot[k].count; ++j)
                         near.push_back(bvh.order()[j]);
             }
         }
@@ -233,7 +236,7 @@ SurfacePoint Scene::surfacePoint(uint32_t prim, const Vec3& p) const {
 
 bool Scene::intersect(Ray& ray, SurfacePoint& sp) const {
     ++tlsRays;
-    const WatertightRay wr(ray);
+    std::optional<WatertightRay> wr;  // built at the first triangle the ray reaches (many reach none)
     uint32_t hitItem = kNoPrimitive;
     float hb1 = 0.0f, hb2 = 0.0f;
     bvh.traverse(ray, false, [&](uint32_t i, Ray& r) {
@@ -241,7 +244,8 @@ bool Scene::intersect(Ray& ray, SurfacePoint& sp) const {
         float t, b1 = 0.0f, b2 = 0.0f;
         if (it.prim == r.ignorePrim) return false;
         if (it.sphere == kNoPrimitive) {
-            if (!intersectTriangle(r, wr, it.tri, t, b1, b2)) return false;
+            if (!wr) wr.emplace(r);
+            if (!intersectTriangle(r, *wr, it.tri, t, b1, b2)) return false;
         } else if (!intersectSphere(r, spheres[it.sphere], t)) {
             return false;
         }
@@ -260,26 +264,26 @@ bool Scene::intersect(Ray& ray, SurfacePoint& sp) const {
     }
     // surfacePoint(), from the item's copy of the triangle. Barycentric interpolation is more
     // accurate than o + t d far from the origin.
-    const Primitive& pr = prims[it.prim];
     sp = SurfacePoint();
     sp.p = (1.0f - hb1 - hb2) * it.tri.p0 + hb1 * it.tri.p1 + hb2 * it.tri.p2;
     sp.n = it.tri.normal();
     sp.errScale = it.tri.errScale();
     sp.prim = it.prim;
-    sp.material = pr.material;
-    sp.light = pr.light;
+    sp.material = it.material;
+    sp.light = it.light;
     return true;
 }
 
 bool Scene::occluded(const Ray& ray) const {
     ++tlsRays;
-    const WatertightRay wr(ray);
+    std::optional<WatertightRay> wr;
     Ray r = ray;
     return bvh.traverse(r, true, [&](uint32_t i, Ray& rr) {  // stops at the first hit
         const Item& it = items_[i];
         float t, b1, b2;
         if (it.prim == rr.ignorePrim) return false;
-        return it.sphere == kNoPrimitive ? intersectTriangle(rr, wr, it.tri, t, b1, b2)
+        if (it.sphere == kNoPrimitive && !wr) wr.emplace(rr);
+        return it.sphere == kNoPrimitive ? intersectTriangle(rr, *wr, it.tri, t, b1, b2)
                                          : intersectSphere(rr, spheres[it.sphere], t);
     });
 }

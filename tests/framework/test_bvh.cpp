@@ -156,19 +156,19 @@ void checkStructure(const Scene& s) {
     for (const WideNode& n : bvh.nodes()) {
         for (int k = 0; k < WideNode::kWidth; ++k) {
             const AABB box = n.box(k);
-            if (n.count[k] == WideNode::kInner) {
-                if (n.child[k] == 0 || n.child[k] >= bvh.nodes().size()) {
+            if (n.slot[k].count == WideNode::kInner) {
+                if (n.slot[k].child == 0 || n.slot[k].child >= bvh.nodes().size()) {
                     ++badSlots;
                     continue;
                 }
-                ++parents[n.child[k]];
-                const WideNode& c = bvh.nodes()[n.child[k]];
+                ++parents[n.slot[k].child];
+                const WideNode& c = bvh.nodes()[n.slot[k].child];
                 for (int j = 0; j < WideNode::kWidth; ++j)
-                    if (!(c.count[j] == 0 && c.lo[0][j] == kInf)) badBoxes += !contains(box, c.box(j));
-            } else if (n.count[k] == 0) {
+                    if (!(c.slot[j].count == 0 && c.lo[0][j] == kInf)) badBoxes += !contains(box, c.box(j));
+            } else if (n.slot[k].count == 0) {
                 badSlots += !(box.lo == Vec3(kInf) && box.hi == Vec3(kInf));
             } else {
-                for (uint32_t i = n.child[k]; i < n.child[k] + n.count[k]; ++i) {
+                for (uint32_t i = n.slot[k].child; i < n.slot[k].child + n.slot[k].count; ++i) {
                     const uint32_t p = bvh.order()[i];
                     ++seen[p];
                     const Primitive& pr = s.prims[p];
@@ -384,8 +384,8 @@ TEST_CASE("bvh: one triangle is a root with one leaf") {
     checkStructure(s);
     REQUIRE(s.bvh.nodes().size() == 1);
     CHECK(s.bvh.depth() == 1);
-    CHECK(s.bvh.nodes()[0].count[0] == 1);
-    for (int k = 1; k < WideNode::kWidth; ++k) CHECK(s.bvh.nodes()[0].count[k] == 0);
+    CHECK(s.bvh.nodes()[0].slot[0].count == 1);
+    for (int k = 1; k < WideNode::kWidth; ++k) CHECK(s.bvh.nodes()[0].slot[k].count == 0);
     Rng rng(505);
     std::vector<Ray> rays = makeRays(s, 2000, rng);
     for (float x : {-0.5f, 0.0f, 0.25f, 0.5f, 1.0f}) {  // through corners and edges, both ways
