@@ -35,11 +35,12 @@ int main(int argc, char** argv) {
     const bool help = argc == 2 && !std::strcmp(argv[1], "--help");
     const bool withScene = argc == 5 && !std::strcmp(argv[3], "--scene");
     if (help || (argc != 3 && !withScene)) {
-        std::fprintf(help ? stdout : stderr,
-                     "usage: image_compare IMAGE REFERENCE [--scene FILE]\n"
-                     "Prints the mean colour of both (.pfm or .hdr) and IMAGE's MSE, relMSE and trimmed relMSE\n"
-                     "against REFERENCE, as pathspace converge computes them (framework/metrics.h). With --scene,\n"
-                     "the pixels in which one of the scene's point lights is seen directly are left out, as in converge.\n");
+        std::fprintf(
+            help ? stdout : stderr,
+            "usage: image_compare IMAGE REFERENCE [--scene FILE]\n"
+            "Prints the mean colour of both (.pfm or .hdr) and IMAGE's MSE, relMSE and trimmed relMSE\n"
+            "against REFERENCE, as pathspace converge computes them (framework/metrics.h). With --scene,\n"
+            "the pixels in which one of the scene's point lights is seen directly are left out, as in converge.\n");
         return help ? 0 : 2;
     }
     try {

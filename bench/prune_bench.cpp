@@ -9,37 +9,17 @@
 #include <cstdint>
 #include <cstdio>
 #include <exception>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 #include "integrator.h"
 #include "render.h"
-#include "scene_loader.h"
+#include "scene_at.h"
 
 #ifndef PATHSPACE_SOURCE_DIR
 #define PATHSPACE_SOURCE_DIR "."
 #endif
 
 namespace {
-
-ps::Scene loadAt(const std::string& dir, const std::string& name, int res) {
-    const std::string path = dir + "/" + name + ".scene";
-    std::ifstream in(path);
-    if (!in) throw std::runtime_error("cannot open " + path);
-    std::ostringstream s;
-    s << in.rdbuf();
-    // The camera's "resolution W H" set to res x res.
-    std::string text = s.str();
-    const size_t at = text.find("resolution");
-    if (at == std::string::npos) throw std::runtime_error(path + ": no resolution");
-    std::istringstream rest(text.substr(at + 10));
-    int w = 0, h = 0;
-    if (!(rest >> w >> h)) throw std::runtime_error(path + ": bad resolution");
-    text.replace(at, 10 + static_cast<size_t>(rest.tellg()),
-                 "resolution " + std::to_string(res) + " " + std::to_string(res));
-    return ps::parseScene(text, path);
-}
 
 // Best wall time of `repeats` renders; rays: the rays traced (the same in every run).
 double timeBpt(const ps::Scene& scene, int spp, int threads, int repeats, uint64_t& rays) {
@@ -84,7 +64,7 @@ int main(int argc, char** argv) {
         std::printf("%-20s %9s %11s %10s %9s %11s %10s %7s %7s  %s\n", "scene", "pruned s", "samples/s", "Mrays",
                     "full s", "samples/s", "Mrays", "time", "rays", "left out");
         for (const std::string name : {"cornell-box", "cornell-point-light", "cornell-spheres", "glass-lamp"}) {
-            ps::Scene pruned = loadAt(dir, name, res);
+            ps::Scene pruned = bench::loadSceneAt(dir + "/" + name + ".scene", res);
             ps::Scene full = pruned;
             full.settings.prune = false;
             uint64_t rp = 0, rf = 0;

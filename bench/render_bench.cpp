@@ -15,13 +15,12 @@
 #include <ctime>
 #include <exception>
 #include <fstream>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
 #include "integrator.h"
 #include "render.h"
-#include "scene_loader.h"
+#include "scene_at.h"
 
 #ifndef PATHSPACE_SOURCE_DIR
 #define PATHSPACE_SOURCE_DIR "."
@@ -45,24 +44,6 @@ std::string loadAverage() {
 double median(std::vector<double> v) {
     std::sort(v.begin(), v.end());
     return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
-}
-
-// The scene file, with its camera's resolution set to res x res when res > 0.
-ps::Scene loadAt(const std::string& path, int res) {
-    std::ifstream in(path);
-    if (!in) throw std::runtime_error("cannot open " + path);
-    std::ostringstream s;
-    s << in.rdbuf();
-    std::string text = s.str();
-    const size_t at = text.find("resolution");
-    if (res > 0 && at != std::string::npos) {
-        std::istringstream rest(text.substr(at + 10));
-        int w = 0, h = 0;
-        if (!(rest >> w >> h)) throw std::runtime_error(path + ": bad resolution");
-        text.replace(at, 10 + static_cast<size_t>(rest.tellg()),
-                     "resolution " + std::to_string(res) + " " + std::to_string(res));
-    }
-    return ps::parseScene(text, path);
 }
 
 struct Run {
@@ -111,7 +92,7 @@ int main(int argc, char** argv) {
             spp = 2;
             rounds = 1;
         }
-        const ps::Scene scene = loadAt(scenePath, quick ? 32 : 0);
+        const ps::Scene scene = bench::loadSceneAt(scenePath, quick ? 32 : 0);
         std::printf("render_bench: %s at %d x %d, %d iterations, %d round(s); %d logical CPUs; load average %s\n",
                     scenePath.c_str(), scene.camera.width(), scene.camera.height(), spp, rounds, omp_get_num_procs(),
                     loadAverage().c_str());
