@@ -53,12 +53,14 @@ struct alignas(64) WideNode {
 // axis-parallel direction; d + 0 turns a -0 into +0, so such an axis always gives +inf) and,
 // per axis, which plane of a slab the ray meets first (the lower one when d >= 0).
 struct BoxRay {
-    float org[3], inv[3];
+    float org[3], inv[3], invFar[3];
     bool negative[3];
     explicit BoxRay(const Ray& r) {
+        constexpr float kGrow = 1.0f + 2.0f * 4.0f * 0x1p-24f / (1.0f - 4.0f * 0x1p-24f);
         for (int a = 0; a < 3; ++a) {
             org[a] = r.o[a];
             inv[a] = 1.0f / (r.d[a] + 0.0f);
+            invFar[a] = inv[a] * kGrow;
             negative[a] = inv[a] < 0.0f;
         }
     }
@@ -116,7 +118,6 @@ private:
 // d = +0 after BoxRay), and NaN compares false, so that plane leaves t0 or t1 as it was (the
 // ray is in the slab). t0 only grows and t1 only shrinks: one test at the end.
 inline BoxHits intersectBoxes(const WideNode& n, const BoxRay& r, float tMax) {
-    constexpr float kGrow = 1.0f + 2.0f * 3.0f * 0x1p-24f / (1.0f - 3.0f * 0x1p-24f);
     const float *near[3], *far[3];
     for (int a = 0; a < 3; ++a) {
         near[a] = r.negative[a] ? n.hi[a] : n.lo[a];
@@ -127,7 +128,7 @@ inline BoxHits intersectBoxes(const WideNode& n, const BoxRay& r, float tMax) {
         float t0 = 0.0f, t1 = tMax;
         for (int a = 0; a < 3; ++a) {
             const float tNear = (near[a][c] - r.org[a]) * r.inv[a];
-            const float tFar = (far[a][c] - r.org[a]) * r.inv[a] * kGrow;
+            const float tFar = (far[a][c] - r.org[a]) * r.invFar[a];
             t0 = tNear > t0 ? tNear : t0;
             t1 = tFar < t1 ? tFar : t1;
         }
