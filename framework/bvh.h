@@ -50,8 +50,9 @@ struct alignas(64) WideNode {
 };
 
 // What the slab test needs of a ray, computed once per ray: the origin, 1/d (+-inf along an
-// axis-parallel direction; d + 0 turns a -0 into +0, so such an axis always gives +inf) and,
-// per axis, which plane of a slab the ray meets first (the lower one when d >= 0).
+// axis-parallel direction; d + 0 turns a -0 into +0, so such an axis always gives +inf), 1/d
+// grown by 1 + 2 gamma(4) for the far planes (see intersectBoxes) and, per axis, which plane of
+// a slab the ray meets first (the lower one when d >= 0).
 struct BoxRay {
     float org[3], inv[3], invFar[3];
     bool negative[3];
@@ -113,8 +114,9 @@ private:
 // children into 4-wide SIMD instructions, each line of its body one instruction per four boxes.
 // No early exit, no branch: every child is tested, the unused ones too. Along each axis the ray
 // meets the near plane first (the lower one when d >= 0), so no min/max of the two is needed.
-// The far distance is multiplied by 1 + 2 gamma(3) so that float rounding never misses a box
-// (Ize 2013). NaN-safe: a slab gives NaN only for a ray lying in one of its planes (0 * inf,
+// The far distance is computed with 1/d grown by 1 + 2 gamma(4) (four roundings: the reciprocal,
+// the growth, the subtraction, the product), so that float rounding never misses a box (Ize 2013,
+// who grows the far distance itself by 1 + 2 gamma(3)). NaN-safe: a slab gives NaN only for a ray lying in one of its planes (0 * inf,
 // d = +0 after BoxRay), and NaN compares false, so that plane leaves t0 or t1 as it was (the
 // ray is in the slab). t0 only grows and t1 only shrinks: one test at the end.
 inline BoxHits intersectBoxes(const WideNode& n, const BoxRay& r, float tMax) {
