@@ -318,7 +318,11 @@ Vec3 rayOrigin(const Scene& s, const SurfacePoint& sp, const Vec3& w) {
             const glm::dvec3& a = v[i];
             const glm::dvec3 e = v[(i + 1) % 3] - a;
             glm::dvec3 m = glm::cross(n, e);  // in the plane, towards the inside (counter-clockwise corners)
-            const double len = glm::length(m);
+            // Far from this edge (nearly every hit): decided without a square root or a division,
+            // proj = dist * |m| > near * |m| squared.
+            const double len2 = glm::dot(m, m), proj = glm::dot(glm::dvec3(sp.p) - a, m);
+            if (proj > 0.0 && proj * proj > near * near * len2 * (1.0 + 0x1p-40)) continue;
+            const double len = std::sqrt(len2);
             if (!(len > 0.0)) continue;
             m /= len;
             const double dist = glm::dot(glm::dvec3(sp.p) - a, m);
