@@ -132,10 +132,11 @@ void BVH::buildBinary(uint32_t self, std::vector<BinaryNode>& bin, std::vector<A
 // Stage 2: the wide node of the binary inner node bin[self]. It starts with that node's two
 // children and opens the inner child of largest surface area (replacing it by its own two
 // children) until it has kWidth children or only leaves. Then each inner child becomes a wide
-// node in turn, but for one of at most kMaxLeafSize items, which becomes a leaf: a wide node of
-// its own would cost a visit (four cache lines) to test two or three boxes (measured with
-// bench/bvh_bench: half as many nodes, incoherent and shadow rays 8-10 % faster). Leaves keep
-// their items, so the items' leaf order stays the binary tree's.
+// node in turn, but for one of at most kMaxWideLeafSize items, which becomes a leaf: a wide node
+// of its own would cost a visit (four cache lines) to test two or three boxes (measured with
+// bench/bvh_bench: up to 4 items, half as many nodes and incoherent and shadow rays 8-10 %
+// faster than none; up to 6, about 4 % more; up to 8, more for those and 2 % less for primary
+// rays). Leaves keep their items, so the items' leaf order stays the binary tree's.
 uint32_t BVH::collapse(const std::vector<BinaryNode>& bin, uint32_t self, int depth) {
     depth_ = std::max(depth_, depth);
     uint32_t kids[WideNode::kWidth] = {bin[self].left, bin[self].left + 1};
@@ -164,7 +165,7 @@ uint32_t BVH::collapse(const std::vector<BinaryNode>& bin, uint32_t self, int de
         }
         const BinaryNode& c = bin[kids[k]];
         const uint32_t count = c.end - c.begin;
-        if (c.left == 0 || count <= kMaxLeafSize) setChild(nodes_[index], k, c.box, c.begin, count);
+        if (c.left == 0 || count <= kMaxWideLeafSize) setChild(nodes_[index], k, c.box, c.begin, count);
         else setChild(nodes_[index], k, c.box, collapse(bin, kids[k], depth + 1), WideNode::kInner);
     }
     return index;

@@ -76,8 +76,9 @@ struct BoxHits {
 class BVH {
 public:
     static constexpr int kBins = 16;
-    static constexpr int kMaxLeafSize = 4;
-    static constexpr int kMaxDepth = 100;  // deeper subtrees become leaves; bounds the stack
+    static constexpr int kMaxLeafSize = 4;      // items in a leaf of the binary tree
+    static constexpr int kMaxWideLeafSize = 6;  // a subtree of at most this many becomes one leaf
+    static constexpr int kMaxDepth = 100;       // deeper subtrees become leaves; bounds the stack
 
     // Builds over the primitives' boxes; primitive i of the caller is reported as i.
     void build(const std::vector<AABB>& primBoxes);
