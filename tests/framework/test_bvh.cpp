@@ -436,7 +436,8 @@ TEST_CASE("bvh: traverse visits each leaf item at most once, nearest box first")
     std::sort(sorted.begin(), sorted.end());
     CHECK_MESSAGE(std::unique(sorted.begin(), sorted.end()) == sorted.end(), "an item was visited twice");
     CHECK(visited.size() == 64);
-    // Leaves hold up to 4 items in any order, but leaf by leaf the row is walked from x = 0 on.
+    // A binary leaf holds up to kMaxLeafSize (4) items in any order (a leaf of the wide tree is
+    // one or more binary leaves, in order), but leaf by leaf the row is walked from x = 0 on.
     int outOfOrder = 0;
     for (size_t i = 4; i < visited.size(); ++i) outOfOrder += 63 - int(visited[i]) < 63 - int(visited[i - 4]);
     CHECK_MESSAGE(outOfOrder == 0, "expected the nearest boxes first, got " << outOfOrder << " items out of order");
