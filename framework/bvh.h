@@ -117,9 +117,10 @@ private:
 // meets the near plane first (the lower one when d >= 0), so no min/max of the two is needed.
 // The far distance is computed with 1/d grown by 1 + 2 gamma(4) (four roundings: the reciprocal,
 // the growth, the subtraction, the product), so that float rounding never misses a box (Ize 2013,
-// who grows the far distance itself by 1 + 2 gamma(3)). NaN-safe: a slab gives NaN only for a ray lying in one of its planes (0 * inf,
-// d = +0 after BoxRay), and NaN compares false, so that plane leaves t0 or t1 as it was (the
-// ray is in the slab). t0 only grows and t1 only shrinks: one test at the end.
+// who grows the far distance itself by 1 + 2 gamma(3)). NaN-safe: a slab gives NaN only for a
+// ray lying in one of its planes (0 * inf, d = +0 after BoxRay), and NaN compares false, so that
+// plane leaves t0 or t1 as it was (the ray is in the slab). t0 only grows and t1 only shrinks:
+// one test at the end.
 inline BoxHits intersectBoxes(const WideNode& n, const BoxRay& r, float tMax) {
     const float *near[3], *far[3];
     for (int a = 0; a < 3; ++a) {

@@ -1,7 +1,7 @@
 #include "scene.h"
-#include <optional>
 #include "errors.h"
 #include <algorithm>
+#include <optional>
 #include <cstdio>
 #include <sstream>
 
@@ -282,9 +282,9 @@ bool Scene::occluded(const Ray& ray) const {
         const Item& it = items_[i];
         float t, b1, b2;
         if (it.prim == rr.ignorePrim) return false;
-        if (it.sphere == kNoPrimitive && !wr) wr.emplace(rr);
-        return it.sphere == kNoPrimitive ? intersectTriangle(rr, *wr, it.tri, t, b1, b2)
-                                         : intersectSphere(rr, spheres[it.sphere], t);
+        if (it.sphere != kNoPrimitive) return intersectSphere(rr, spheres[it.sphere], t);
+        if (!wr) wr.emplace(rr);
+        return intersectTriangle(rr, *wr, it.tri, t, b1, b2);
     });
 }
 
@@ -320,12 +320,13 @@ Vec3 rayOrigin(const Scene& s, const SurfacePoint& sp, const Vec3& w) {
             glm::dvec3 m = glm::cross(n, e);  // in the plane, towards the inside (counter-clockwise corners)
             // Far from this edge (nearly every hit): decided without a square root or a division,
             // proj = dist * |m| > near * |m| squared.
-            const double len2 = glm::dot(m, m), proj = glm::dot(glm::dvec3(sp.p) - a, m);
+            const glm::dvec3 pa = glm::dvec3(sp.p) - a;
+            const double len2 = glm::dot(m, m), proj = glm::dot(pa, m);
             if (proj > 0.0 && proj * proj > near * near * len2 * (1.0 + 0x1p-40)) continue;
             const double len = std::sqrt(len2);
             if (!(len > 0.0)) continue;
             m /= len;
-            const double dist = glm::dot(glm::dvec3(sp.p) - a, m);
+            const double dist = glm::dot(pa, m);
             if (dist > near) continue;
             if (glm::dot(v[(i + 2) % 3] - a, m) <= 2.0 * eps) continue;  // too thin
             q += (eps - dist) * m;

@@ -126,7 +126,7 @@ public:
 private:
     // What the primitive test reads, in the BVH's item order (a leaf's primitives are adjacent):
     // the triangle itself, no lookup through prims and triangles; and what the surface point of
-    // a hit needs, so that no ray looks up prims (48 bytes: reading prims[] for the material cost
+    // a hit needs, so that no ray looks up prims (52 bytes: reading prims[] for the material cost
     // a cache miss per hit, 8-13 % of the speed of incoherent rays, bench/README.md).
     struct Item {
         Triangle tri;                    // the triangle (unused for a sphere)
