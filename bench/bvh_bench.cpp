@@ -22,6 +22,7 @@
 #include <string>
 #include <tuple>
 #include <vector>
+#include "bench_common.h"
 #include "rng.h"
 #include "scene.h"
 #include "scene_loader.h"
@@ -39,14 +40,9 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 double secondsSince(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
-
-// The CPU time of the whole process (all threads), for --cpu-time: on a machine that other jobs
-// keep busy, wall-clock time also counts the time slices the system gave to them.
-double processCpuSeconds() {
-    timespec ts;
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-    return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
-}
+using bench::loadAverage;
+using bench::median;
+using bench::processCpuSeconds;  // for --cpu-time
 
 const char* const kBunny = "/usr/share/glmark2/models/bunny.obj";
 const char* const kMotorbike = "/usr/share/doc/openfoam-examples/examples/resources/geometry/motorBike.obj.gz";
@@ -299,18 +295,6 @@ struct CheckCount {
 };
 
 // ---- measuring --------------------------------------------------------------------------------
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
-}
-
-std::string loadAverage() {
-    std::ifstream in("/proc/loadavg");
-    std::string a, b, c;
-    in >> a >> b >> c;
-    return a.empty() ? "unknown" : a + " " + b + " " + c;
-}
 
 std::string cpuModel() {
     std::ifstream in("/proc/cpuinfo");

@@ -13,7 +13,7 @@
 #include <vector>
 #include "integrator.h"
 #include "render.h"
-#include "scene_at.h"
+#include "bench_common.h"
 
 #ifndef PATHSPACE_SOURCE_DIR
 #define PATHSPACE_SOURCE_DIR "."

@@ -20,7 +20,7 @@
 #include <vector>
 #include "integrator.h"
 #include "render.h"
-#include "scene_at.h"
+#include "bench_common.h"
 
 #ifndef PATHSPACE_SOURCE_DIR
 #define PATHSPACE_SOURCE_DIR "."
@@ -28,23 +28,9 @@
 
 namespace {
 
-double processCpuSeconds() {
-    timespec ts;
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-    return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
-}
-
-std::string loadAverage() {
-    std::ifstream in("/proc/loadavg");
-    std::string a, b, c;
-    in >> a >> b >> c;
-    return a.empty() ? "unknown" : a + " " + b + " " + c;
-}
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
-}
+using bench::loadAverage;
+using bench::median;
+using bench::processCpuSeconds;
 
 struct Run {
     double wall = 0.0;  // the render loop's wall time (RenderResult::seconds)
