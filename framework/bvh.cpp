@@ -37,8 +37,8 @@ void BVH::build(const std::vector<AABB>& primBoxes) {
 // for an empty box) no ray reaches.
 void BVH::setChild(WideNode& w, int k, const AABB& box, uint32_t child, uint32_t count) {
     for (int a = 0; a < 3; ++a) {
-        w.lo[a][k] = box.empty() ? kInf : box.lo[a];
-        w.hi[a][k] = box.empty() ? kInf : box.hi[a];
+        w.corner[0][a][k] = box.empty() ? kInf : box.lo[a];
+        w.corner[1][a][k] = box.empty() ? kInf : box.hi[a];
     }
     w.slot[k] = {child, count};
 }

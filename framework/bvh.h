@@ -7,10 +7,10 @@
 //
 // One wide node (256 bytes, four cache lines), children c0..c7:
 //
-//      lo[0] = x  | c0 | c1 | c2 | c3 | c4 | c5 | c6 | c7 |   the boxes, structure of arrays:
-//      lo[1] = y  | c0 | c1 | c2 | c3 | c4 | c5 | c6 | c7 |   lo[axis][child]
-//      lo[2] = z  | c0 | c1 | c2 | c3 | c4 | c5 | c6 | c7 |
-//      hi[0..2]   |      the same for the upper corners      |
+//   corner[0][0] = x  | c0 | c1 | c2 | c3 | c4 | c5 | c6 | c7 |   the boxes, structure of arrays:
+//   corner[0][1] = y  | c0 | c1 | c2 | c3 | c4 | c5 | c6 | c7 |   corner[side][axis][child], side 0
+//   corner[0][2] = z  | c0 | c1 | c2 | c3 | c4 | c5 | c6 | c7 |   the lower corners, 1 the upper
+//   corner[1][0..2]   |      the same for the upper corners      |
 //      slot       | c0 | c1 | c2 | c3 | c4 | c5 | c6 | c7 |   (child, count) of each: inner child:
 //                                                             its index in nodes(), count = kInner;
 //                                                             leaf: its first item and its number
@@ -31,20 +31,21 @@
 #include <cstdint>
 #include <vector>
 #include "geometry.h"
+#include "large_pages.h"
 
 namespace ps {
 
 struct alignas(64) WideNode {
     static constexpr int kWidth = 8;
     static constexpr uint32_t kInner = 0xffffffffu;  // count of an inner child
-    float lo[3][kWidth], hi[3][kWidth];
+    float corner[2][3][kWidth];
     struct Slot {
         uint32_t child, count;
     } slot[kWidth];
     AABB box(int c) const {
         AABB b;
-        b.lo = Vec3(lo[0][c], lo[1][c], lo[2][c]);
-        b.hi = Vec3(hi[0][c], hi[1][c], hi[2][c]);
+        b.lo = Vec3(corner[0][0][c], corner[0][1][c], corner[0][2][c]);
+        b.hi = Vec3(corner[1][0][c], corner[1][1][c], corner[1][2][c]);
         return b;
     }
 };
@@ -55,14 +56,14 @@ struct alignas(64) WideNode {
 // a slab the ray meets first (the lower one when d >= 0).
 struct BoxRay {
     float org[3], inv[3], invFar[3];
-    bool negative[3];
+    int nearSide[3];  // the corner (0 lower, 1 upper) whose plane the ray meets first, per axis
     explicit BoxRay(const Ray& r) {
         constexpr float kGrow = 1.0f + 2.0f * 4.0f * 0x1p-24f / (1.0f - 4.0f * 0x1p-24f);
         for (int a = 0; a < 3; ++a) {
             org[a] = r.o[a];
             inv[a] = 1.0f / (r.d[a] + 0.0f);
             invFar[a] = inv[a] * kGrow;
-            negative[a] = inv[a] < 0.0f;
+            nearSide[a] = inv[a] < 0.0f;
         }
     }
 };
@@ -83,7 +84,8 @@ public:
     // Builds over the primitives' boxes; primitive i of the caller is reported as i.
     void build(const std::vector<AABB>& primBoxes);
 
-    const std::vector<WideNode>& nodes() const { return nodes_; }
+    using WideNodes = std::vector<WideNode, LargePageAllocator<WideNode>>;  // on 2 MB pages when large
+    const WideNodes& nodes() const { return nodes_; }
     const std::vector<uint32_t>& order() const { return order_; }  // item -> primitive
     AABB bounds() const { return bounds_; }
     int depth() const { return depth_; }  // levels of wide nodes (root = 1; 0 when empty)
@@ -104,7 +106,7 @@ private:
                      std::vector<Vec3>& centroids, uint32_t begin, uint32_t end, int depth);
     uint32_t collapse(const std::vector<BinaryNode>& bin, uint32_t node, int depth);
     static void setChild(WideNode& w, int k, const AABB& box, uint32_t child, uint32_t count);
-    std::vector<WideNode> nodes_;
+    WideNodes nodes_;
     std::vector<uint32_t> order_;
     AABB bounds_;
     int depth_ = 0;
@@ -124,8 +126,8 @@ private:
 inline BoxHits intersectBoxes(const WideNode& n, const BoxRay& r, float tMax) {
     const float *near[3], *far[3];
     for (int a = 0; a < 3; ++a) {
-        near[a] = r.negative[a] ? n.hi[a] : n.lo[a];
-        far[a] = r.negative[a] ? n.lo[a] : n.hi[a];
+        near[a] = n.corner[r.nearSide[a]][a];  // (an index, not a branch, per node)
+        far[a] = n.corner[1 - r.nearSide[a]][a];
     }
     BoxHits h;
     for (int c = 0; c < WideNode::kWidth; ++c) {
@@ -156,12 +158,14 @@ bool BVH::traverse(Ray& ray, bool anyHit, HitItem&& hitItem) const {
     stack[top++] = {{0, WideNode::kInner}, 0.0f};
     bool hit = false;
     while (top > 0) {
-        const Entry e = stack[--top];
+        --top;
         // Beyond the closest hit found since it was pushed (any hit: tMax never changes, and the
         // box test has already left out boxes beyond it).
-        if (!anyHit && e.enter > ray.tMax) continue;
-        if (e.slot.count != WideNode::kInner) {
-            for (uint32_t i = e.slot.child; i < e.slot.child + e.slot.count; ++i) {
+        if (!anyHit && stack[top].enter > ray.tMax) continue;
+        // (Read field by field: a copy of the whole entry went through memory, 6 % of the time.)
+        const uint32_t child = stack[top].slot.child, count = stack[top].slot.count;
+        if (count != WideNode::kInner) {
+            for (uint32_t i = child; i < child + count; ++i) {
                 if (hitItem(i, ray)) {
                     hit = true;
                     if (anyHit) return true;
@@ -169,7 +173,7 @@ bool BVH::traverse(Ray& ray, bool anyHit, HitItem&& hitItem) const {
             }
             continue;
         }
-        const WideNode& n = nodes_[e.slot.child];
+        const WideNode& n = nodes_[child];
         const BoxHits h = intersectBoxes(n, boxRay, ray.tMax);
         // Push the children the ray enters. Any hit: in any order, each child written and kept
         // only if hit (no branch per child, which incoherent rays would mispredict). Closest

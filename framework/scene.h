@@ -134,7 +134,13 @@ private:
         uint32_t sphere = kNoPrimitive;  // index into spheres, kNoPrimitive for a triangle
         int material = -1, light = -1;   // prims[prim]'s, for the surface point of a hit
     };
-    std::vector<Item> items_;
+    std::vector<Item, LargePageAllocator<Item>> items_;
+    // intersect() and occluded() run one of two copies of the same code: for AVX2, when the CPU
+    // has it, or for the x86-64 baseline (scene.cpp; useAvx2Tracing).
+    bool closestHit(Ray& ray, SurfacePoint& sp) const;
+    bool anyHit(const Ray& ray) const;
+    bool closestHitAvx2(Ray& ray, SurfacePoint& sp) const;
+    bool anyHitAvx2(const Ray& ray) const;
     // sp itself, or for a point light lying on a surface the point rays leave it from.
     const SurfacePoint& rayEnd(const SurfacePoint& sp, SurfacePoint& storage) const;
     void findSurfacePointLights();
@@ -142,5 +148,11 @@ private:
 
 // Rays traced by this thread since the last call (for rays/s in render summaries).
 uint64_t takeRayCount();
+
+// Whether Scene::intersect and occluded run their AVX2 copy (x86-64 CPUs that have AVX2; the
+// default unless PATHSPACE_NO_AVX2 is set in the environment) or the baseline one. Both give the
+// same bits; tests switch between them (not while rays are traced). Returns the new setting:
+// false where there is no AVX2 copy or CPU support for it.
+bool useAvx2Tracing(bool on);
 
 }  // namespace ps

@@ -47,9 +47,12 @@ bool intersectTriangle(const Ray& ray, const WatertightRay& wr, const Triangle& 
     //! BEGIN
     // Vertices relative to the ray origin, sheared so the ray is the +z axis (Eq. 0.3).
     const Vec3 A = tri.p0 - ray.o, B = tri.p1 - ray.o, C = tri.p2 - ray.o;
-    const float Ax = A[wr.kx] - wr.Sx * A[wr.kz], Ay = A[wr.ky] - wr.Sy * A[wr.kz];
-    const float Bx = B[wr.kx] - wr.Sx * B[wr.kz], By = B[wr.ky] - wr.Sy * B[wr.kz];
-    const float Cx = C[wr.kx] - wr.Sx * C[wr.kz], Cy = C[wr.ky] - wr.Sy * C[wr.kz];
+    // (glm's v[i] is a switch over i, three branches per use; a pointer to the components, as
+    // glm::value_ptr gives, reads component i with one load.)
+    const float *a = &A.x, *b = &B.x, *c = &C.x;
+    const float Ax = a[wr.kx] - wr.Sx * a[wr.kz], Ay = a[wr.ky] - wr.Sy * a[wr.kz];
+    const float Bx = b[wr.kx] - wr.Sx * b[wr.kz], By = b[wr.ky] - wr.Sy * b[wr.kz];
+    const float Cx = c[wr.kx] - wr.Sx * c[wr.kz], Cy = c[wr.ky] - wr.Sy * c[wr.kz];
     // Scaled barycentric coordinates: 2D edge functions (Eq. 0.4).
     float U = Cx * By - Cy * Bx;
     float V = Ax * Cy - Ay * Cx;
@@ -65,7 +68,7 @@ bool intersectTriangle(const Ray& ray, const WatertightRay& wr, const Triangle& 
     const float det = U + V + W;
     if (det == 0.0f) return false;
     // Scaled hit distance, compared with (0, tMax) without a division (Eq. 0.6).
-    const float Az = wr.Sz * A[wr.kz], Bz = wr.Sz * B[wr.kz], Cz = wr.Sz * C[wr.kz];
+    const float Az = wr.Sz * a[wr.kz], Bz = wr.Sz * b[wr.kz], Cz = wr.Sz * c[wr.kz];
     const float T = U * Az + V * Bz + W * Cz;
     if (det < 0.0f ? (T >= 0.0f || T < ray.tMax * det) : (T <= 0.0f || T > ray.tMax * det)) return false;
     const float invDet = 1.0f / det;

@@ -2,6 +2,8 @@
 // exactly what a brute-force loop over all primitives returns.
 #include <doctest/doctest.h>
 #include <cmath>
+#include <cstdlib>
+#include <cstring>
 #include <algorithm>
 #include <numeric>
 #include <string>
@@ -164,7 +166,7 @@ void checkStructure(const Scene& s) {
                 ++parents[n.slot[k].child];
                 const WideNode& c = bvh.nodes()[n.slot[k].child];
                 for (int j = 0; j < WideNode::kWidth; ++j)
-                    if (!(c.slot[j].count == 0 && c.lo[0][j] == kInf)) badBoxes += !contains(box, c.box(j));
+                    if (!(c.slot[j].count == 0 && c.corner[0][0][j] == kInf)) badBoxes += !contains(box, c.box(j));
             } else if (n.slot[k].count == 0) {
                 badSlots += !(box.lo == Vec3(kInf) && box.hi == Vec3(kInf));
             } else {
@@ -444,4 +446,63 @@ TEST_CASE("bvh: traverse visits each leaf item at most once, nearest box first")
     int calls = 0;
     CHECK(bvh.traverse(ray, true, [&](uint32_t, Ray&) { return ++calls > 0; }));
     CHECK(calls == 1);
+}
+
+TEST_CASE("bvh: the AVX2 copy and the baseline copy of intersect and occluded give the same bits") {
+    // Scene::intersect and occluded run a copy of their code compiled for AVX2 when the CPU has
+    // it, else the x86-64 baseline copy (scene.cpp). Images must not depend on which: every bit
+    // of every result must agree. (The ctest entry framework-bvh-baseline runs the brute-force
+    // tests above with the baseline copy: PATHSPACE_NO_AVX2=1.)
+    const bool before = std::getenv("PATHSPACE_NO_AVX2") == nullptr;
+    if (!useAvx2Tracing(true)) {
+        MESSAGE("no AVX2 copy on this build or CPU: one copy only, nothing to compare");
+        return;
+    }
+    Rng rng(404);
+    std::vector<Sphere> spheres;
+    for (int i = 0; i < 100; ++i) spheres.push_back({randomIn(rng, Vec3(-10), Vec3(10)), 0.05f + 1.5f * rng.uniform()});
+    const Scene s = makeScene(randomSoup(20000, 0.5f, rng), spheres);
+    const std::vector<Ray> rays = makeRays(s, 20000, rng);
+    auto bits = [](float f) {
+        uint32_t u;
+        std::memcpy(&u, &f, sizeof u);
+        return u;
+    };
+    auto trace = [&](bool avx2) {
+        useAvx2Tracing(avx2);
+        std::vector<uint32_t> out;  // per ray: hit, t, p, n, prim, occluded
+        for (const Ray& ray : rays) {
+            Ray r = ray;
+            SurfacePoint sp;
+            out.push_back(s.intersect(r, sp));
+            for (float f : {r.tMax, sp.p.x, sp.p.y, sp.p.z, sp.n.x, sp.n.y, sp.n.z}) out.push_back(bits(f));
+            out.push_back(sp.prim);
+            out.push_back(s.occluded(ray));
+        }
+        return out;
+    };
+    const std::vector<uint32_t> avx2 = trace(true), baseline = trace(false);
+    useAvx2Tracing(before);
+    size_t differ = 0;
+    for (size_t i = 0; i < avx2.size(); ++i) differ += avx2[i] != baseline[i];
+    CHECK_MESSAGE(differ == 0, "expected the AVX2 and the baseline copy to give the same bits, got "
+                                   << differ << " of " << avx2.size() << " numbers different");
+}
+
+TEST_CASE("bvh: large arrays start on 2 MB boundaries, small ones on cache lines") {
+    // LargePageAllocator (framework/large_pages.h): the BVH's nodes and the scene's leaf-ordered
+    // triangles, when 2 MB or more, start on a 2 MB boundary (so that 2 MB pages can back them);
+    // smaller arrays on a 64-byte cache line. Contents survive the vector's growth.
+    auto address = [](const void* p) { return reinterpret_cast<uintptr_t>(p); };
+    std::vector<int, LargePageAllocator<int>> small(100), large;
+    CHECK(address(small.data()) % 64 == 0);
+    for (int i = 0; i < (3 << 20) / int(sizeof(int)); ++i) large.push_back(i);  // grows past 2 MB
+    CHECK_MESSAGE(address(large.data()) % (2u << 20) == 0, "expected a 3 MB array on a 2 MB boundary");
+    bool intact = true;
+    for (int i = 0; i < int(large.size()); ++i) intact &= large[size_t(i)] == i;
+    CHECK(intact);
+    Rng rng(505);
+    const Scene s = makeScene(randomSoup(250000, 0.05f, rng), {});
+    REQUIRE(s.bvh.nodes().size() * sizeof(WideNode) >= (2u << 20));
+    CHECK(address(s.bvh.nodes().data()) % (2u << 20) == 0);
 }
