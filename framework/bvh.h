@@ -3,7 +3,9 @@
 //   2. that tree collapsed into 8-wide nodes, which keep the boxes of their (up to) eight
 //      children side by side, so that one plain loop tests a ray against all eight boxes: the
 //      compiler turns each line of it into SIMD instructions for several children at once (two
-//      4-wide SSE instructions on any x86-64, NEON on ARM64; no intrinsics, no special flags).
+//      4-wide SSE instructions on any x86-64, NEON on ARM64; no intrinsics, no special flags;
+//      Scene compiles a second copy of the traversal for AVX2, one 8-wide instruction, which
+//      x86-64 CPUs that have it run: scene.cpp).
 //
 // One wide node (256 bytes, four cache lines), children c0..c7:
 //
