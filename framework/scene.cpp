@@ -215,23 +215,32 @@ void Scene::findSurfacePointLights() {
     }
 }
 
+namespace {
+// The surface point at p on a triangle: one place for Scene::surfacePoint and for a closest hit
+// (Scene::intersect, which reads the BVH item's copy of the triangle).
+SurfacePoint trianglePoint(const Triangle& tri, const Vec3& p, uint32_t prim, int material, int light) {
+    SurfacePoint sp;
+    sp.prim = prim;
+    sp.material = material;
+    sp.light = light;
+    sp.p = p;
+    sp.n = tri.normal();
+    sp.errScale = tri.errScale();
+    return sp;
+}
+}  // namespace
+
 SurfacePoint Scene::surfacePoint(uint32_t prim, const Vec3& p) const {
     const Primitive& pr = prims[prim];
+    if (pr.shape == ShapeKind::Triangle) return trianglePoint(triangles[pr.index], p, prim, pr.material, pr.light);
     SurfacePoint sp;
     sp.prim = prim;
     sp.material = pr.material;
     sp.light = pr.light;
-    if (pr.shape == ShapeKind::Triangle) {
-        const Triangle& tri = triangles[pr.index];
-        sp.p = p;
-        sp.n = tri.normal();
-        sp.errScale = tri.errScale();
-    } else {
-        const Sphere& s = spheres[pr.index];
-        sp.n = glm::normalize(p - s.center);
-        sp.p = s.center + s.radius * sp.n;  // reproject onto the surface
-        sp.errScale = s.errScale();
-    }
+    const Sphere& s = spheres[pr.index];
+    sp.n = glm::normalize(p - s.center);
+    sp.p = s.center + s.radius * sp.n;  // reproject onto the surface
+    sp.errScale = s.errScale();
     return sp;
 }
 
@@ -262,15 +271,9 @@ bool Scene::closestHit(Ray& ray, SurfacePoint& sp) const {
         sp = surfacePoint(it.prim, ray.at(ray.tMax));
         return true;
     }
-    // surfacePoint(), from the item's copy of the triangle. Barycentric interpolation is more
-    // accurate than o + t d far from the origin.
-    sp = SurfacePoint();
-    sp.p = (1.0f - hb1 - hb2) * it.tri.p0 + hb1 * it.tri.p1 + hb2 * it.tri.p2;
-    sp.n = it.tri.normal();
-    sp.errScale = it.tri.errScale();
-    sp.prim = it.prim;
-    sp.material = it.material;
-    sp.light = it.light;
+    // The point by barycentric interpolation: more accurate than o + t d far from the origin.
+    const Vec3 p = (1.0f - hb1 - hb2) * it.tri.p0 + hb1 * it.tri.p1 + hb2 * it.tri.p2;
+    sp = trianglePoint(it.tri, p, it.prim, it.material, it.light);
     return true;
 }
 
