@@ -13,11 +13,11 @@
 //   corner[0][1] = y  | c0 | c1 | c2 | c3 | c4 | c5 | c6 | c7 |   corner[side][axis][child], side 0
 //   corner[0][2] = z  | c0 | c1 | c2 | c3 | c4 | c5 | c6 | c7 |   the lower corners, 1 the upper
 //   corner[1][0..2]   |      the same for the upper corners      |
-//      slot       | c0 | c1 | c2 | c3 | c4 | c5 | c6 | c7 |   (child, count) of each: inner child:
-//                                                             its index in nodes(), count = kInner;
-//                                                             leaf: its first item and its number
-//                                                             of items
-//      (an unused slot is a leaf of 0 items whose box, lo = hi = +inf, no ray reaches; a slot is
+//   slot              | c0 | c1 | c2 | c3 | c4 | c5 | c6 | c7 |   (child, count) of each: inner
+//                                                                 child: its index in nodes(),
+//                                                                 count = kInner; leaf: its first
+//                                                                 item and its number of items
+//      (an unused slot is a leaf of 0 items whose box, both corners +inf, no ray reaches; a slot is
 //      one 8-byte pair, so that a push copies it whole: 6 % fewer instructions for shadow rays)
 //
 // Items are the caller's primitives in leaf order (item i is primitive order()[i]); a leaf is a
