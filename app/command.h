@@ -9,7 +9,7 @@
 #include <stdexcept>
 #include <string>
 #include <vector>
-#include "math.h"
+#include "vecmath.h"
 #include "numbers.h"
 #include "path_expression.h"
 

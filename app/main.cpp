@@ -6,7 +6,7 @@
 #include <vector>
 #include "command.h"
 #include "errors.h"
-#include "threads.h"
+#include "passive_wait.h"
 
 int main(int argc, char** argv) {
     ps::preferPassiveWaiting(argv);

@@ -284,7 +284,7 @@ bool agreesWithBruteForce(const Scene& s, const Ray& ray, bool anyHit, const Hit
 
 // Two tracers agree: both miss, or both hit the same triangle, or two at a distance equal to
 // float precision (coincident or adjacent triangles; the two triangle tests round differently).
-bool sameHit(const Hit& a, const Hit& b, bool anyHit) {
+[[maybe_unused]] bool sameHit(const Hit& a, const Hit& b, bool anyHit) {
     if ((a.prim == kNoPrimitive) != (b.prim == kNoPrimitive)) return false;
     if (anyHit || a.prim == kNoPrimitive || a.prim == b.prim) return true;
     return std::abs(a.t - b.t) <= 1e-5f * std::max(a.t, b.t);

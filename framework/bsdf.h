@@ -4,7 +4,7 @@
 // outside (the side n points to, index 1) from inside (index ior).
 #pragma once
 #include <string>
-#include "math.h"
+#include "vecmath.h"
 
 namespace ps {
 

@@ -3,7 +3,7 @@
 #pragma once
 #include <string>
 #include <vector>
-#include "math.h"
+#include "vecmath.h"
 
 namespace ps {
 

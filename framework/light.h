@@ -2,7 +2,7 @@
 // triangles, outward for spheres), point lights (a delta position) and a constant background.
 #pragma once
 #include <vector>
-#include "math.h"
+#include "vecmath.h"
 #include "sampling.h"
 
 namespace ps {

@@ -1,7 +1,7 @@
 // Rays and the record of a ray's closest hit.
 #pragma once
 #include <cstdint>
-#include "math.h"
+#include "vecmath.h"
 
 namespace ps {
 

@@ -3,7 +3,7 @@
 // thread takes it, so images are bit-identical for any thread count.
 #pragma once
 #include <cstdint>
-#include "math.h"
+#include "vecmath.h"
 
 // A branch the hot loop almost never takes (the path tracer's numbers are replayed only by lesson 9).
 #if defined(__GNUC__) || defined(__clang__)

@@ -2,7 +2,7 @@
 // distribution for choosing lights by power and triangles by area.
 #pragma once
 #include <vector>
-#include "math.h"
+#include "vecmath.h"
 #include "warps.h"
 
 namespace ps {

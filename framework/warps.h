@@ -4,7 +4,7 @@
 // Implemented in solutions/01-monte-carlo/warps.cpp (reference) or
 // assignments/01-monte-carlo/warps.cpp (yours); lessons/01-monte-carlo/README.md derives them.
 #pragma once
-#include "math.h"
+#include "vecmath.h"
 
 namespace ps {
 

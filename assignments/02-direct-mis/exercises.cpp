@@ -2,7 +2,7 @@
 // Equation numbers refer to lessons/02-direct-mis/README.md ("Exercise (pen and paper)").
 #include <cmath>
 #include "02-direct-mis/exercises.h"
-#include "math.h"
+#include "vecmath.h"
 #include "todo.h"
 
 namespace ps {

@@ -2,7 +2,7 @@
 // paper)"): derive the answer on paper, then type the closed form into
 // solutions/06-path-space/exercises.cpp (reference) or assignments/06-path-space/exercises.cpp (yours).
 #pragma once
-#include "math.h"
+#include "vecmath.h"
 
 namespace ps {
 

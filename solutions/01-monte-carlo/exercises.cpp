@@ -1,7 +1,7 @@
 // Lesson 1 — the pen-and-paper exercise. Interface: lessons/01-monte-carlo/exercises.h.
 // Equation numbers refer to lessons/01-monte-carlo/README.md ("Exercise (pen and paper)").
 #include "01-monte-carlo/exercises.h"
-#include "math.h"
+#include "vecmath.h"
 #include "todo.h"
 
 namespace ps {

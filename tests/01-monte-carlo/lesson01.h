@@ -9,7 +9,7 @@
 #include <vector>
 #include "format.h"
 #include "lesson_files.h"
-#include "math.h"
+#include "vecmath.h"
 #include "statistics.h"
 #include "alpha.h"
 #include "warps.h"

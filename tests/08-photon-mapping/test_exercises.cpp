@@ -4,7 +4,7 @@
 #include <doctest/doctest.h>
 #include <cmath>
 #include "08-photon-mapping/exercises.h"
-#include "math.h"
+#include "vecmath.h"
 
 TEST_CASE("exercise: the box filter's bias on a quadratic irradiance (Eq. 8.E1) [1 pt]") {
     struct Case {

@@ -2,7 +2,7 @@
 #pragma once
 #include <sstream>
 #include <string>
-#include "math.h"
+#include "vecmath.h"
 
 namespace ps::fmt {
 

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 #include "image.h"
-#include "math.h"
+#include "vecmath.h"
 
 namespace ps::stats {
 

@@ -1,4 +1,4 @@
-#include "threads.h"
+#include "passive_wait.h"
 #include <cstdlib>
 #if defined(__linux__)
 #include <unistd.h>
