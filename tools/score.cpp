@@ -132,7 +132,7 @@ int main(int argc, char** argv) {
     double seconds = 0;  // execution_time: the time the tests took in the student's run
     for (const TestResult& r : results) seconds += r.seconds;
     writeReport(results, notes, out, false, seconds);
-    std::cout << "\nA test's whole message: ctest --test-dir build -L lesson-NN -R 'part of its name' "
+    std::cout << "\nA test's whole message:\n  ctest --test-dir build -L lesson-NN -R 'part of its name' "
                  "--output-on-failure\n";
     return 0;
 }
