@@ -1,7 +1,9 @@
 // main() of every test program: doctest's, after choosing passive waiting for the render
 // loop's threads (framework/passive_wait.h: tests run two at a time and must not spin each other out).
 // A listener tells the statistics helpers which test runs: a failed image test names its images
-// after it (statistics.h, writeFailedImages).
+// after it (statistics.h, writeFailedImages). The console reporter puts the reason first: a failed
+// CHECK_MESSAGE prints "file:line: ERROR: <what the test says>" and then, in brackets, the check
+// itself (doctest's own first line is "CHECK( x ) is NOT correct!", which says nothing).
 #define DOCTEST_CONFIG_IMPLEMENT
 #include <doctest/doctest.h>
 #include <string>
@@ -29,11 +31,39 @@ struct TestNameListener : doctest::IReporter {
     void test_case_skipped(const doctest::TestCaseData&) override {}
 };
 
+// doctest's console reporter (defined in this file, with the implementation), but a failed check
+// that carries a message prints the message on its first line.
+struct ReasonFirstReporter : doctest::ConsoleReporter {
+    using ConsoleReporter::ConsoleReporter;
+    void log_assert(const doctest::AssertData& rb) override {
+        const int n = get_num_active_contexts();
+        if (!rb.m_failed || tc->m_no_output || n == 0) {
+            ConsoleReporter::log_assert(rb);
+            return;
+        }
+        DOCTEST_LOCK_MUTEX(mutex)
+        logTestStart();
+        file_line_to_stream(rb.m_file, rb.m_line, " ");
+        successOrFailColoredStringToStream(false, rb.m_at);
+        const doctest::IContextScope* const* contexts = get_active_contexts();
+        for (int i = 0; i < n; ++i) {
+            s << (i == 0 ? "" : "  ");
+            contexts[i]->stringify(&s);
+            s << "\n";
+        }
+        s << "  (" << doctest::assertString(rb.m_at) << "( " << rb.m_expr << " ) failed)\n\n";
+    }
+};
+
 }  // namespace
 
 REGISTER_LISTENER("test-name", 1, TestNameListener);
+REGISTER_REPORTER("pathspace", 1, ReasonFirstReporter);
 
 int main(int argc, char** argv) {
     ps::preferPassiveWaiting(argv);
-    return doctest::Context(argc, argv).run();
+    doctest::Context context;
+    context.setOption("reporters", "pathspace");  // the default; --reporters=... on the command line wins
+    context.applyCommandLine(argc, argv);
+    return context.run();
 }
