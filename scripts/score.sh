@@ -26,7 +26,7 @@ all=() with_ref=()
 for d in tests/[0-9][0-9]-*/; do
   nn=$(basename "$d" | cut -c1-2)
   all+=("$((10#$nn))")
-  if ls -d solutions/"$nn"-*/ released/"$nn"-*/ >/dev/null 2>&1; then with_ref+=("$((10#$nn))"); fi
+  if [ -n "$(ls -d solutions/"$nn"-*/ released/"$nn"-*/ 2>/dev/null)" ]; then with_ref+=("$((10#$nn))"); fi
 done
 has_ref() { local n; for n in "${with_ref[@]}"; do [ "$n" = "$1" ] && return 0; done; return 1; }
 is_asked() { local n; for n in "${asked[@]}"; do [ "$n" = "$1" ] && return 0; done; return 1; }
