@@ -38,7 +38,7 @@ struct TestNameListener : doctest::IReporter {
 // at most about a screen of failures (kMaxLines): a wrong formula fails the same check many times,
 // and the first few say what is wrong. The rest are counted in one line at the end.
 struct ReasonFirstReporter : doctest::ConsoleReporter {
-    static constexpr int kMaxLines = 40;
+    static constexpr int kMaxLines = 30;
     int linesShown = 0, hidden = 0;
 
     using ConsoleReporter::ConsoleReporter;
