@@ -34,28 +34,18 @@ done
 case "$out" in /*) ;; *) out="$src/$out" ;; esac
 
 # --- tools: Debian's pandoc and chromium --------------------------------------------------------------
-need=()
-command -v pandoc >/dev/null 2>&1 || need+=(pandoc)
-[ -n "${CHROME_PATH:-}" ] || command -v chromium >/dev/null 2>&1 || need+=(chromium)
-if [ ${#need[@]} -gt 0 ]; then
-  line="apt-get install -y --no-install-recommends ${need[*]}"
-  if [ "$(id -u)" -eq 0 ]; then
-    echo "site: installing ${need[*]}" >&2
-    apt-get update -qq && DEBIAN_FRONTEND=noninteractive $line >/dev/null
-  elif command -v sudo >/dev/null 2>&1; then
-    echo "site: installing ${need[*]} (sudo)" >&2
-    sudo apt-get update -qq && sudo DEBIAN_FRONTEND=noninteractive $line >/dev/null
-  else
-    echo "site: ${need[*]} missing; run as root:  apt-get update && $line" >&2
-    exit 1
-  fi
-fi
+need=(pandoc)
+[ -n "${CHROME_PATH:-}" ] || need+=(chromium)
+bash scripts/deps.sh "${need[@]}"
 CHROME_PATH="${CHROME_PATH:-$(command -v chromium)}"
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 t0=$SECONDS
 
 if [ "$checkonly" = 0 ]; then
+# The student's README: tools/handout/README.md here, README.md in the handout (handout.sh).
+handout_readme=tools/handout/README.md
+[ -f "$handout_readme" ] || handout_readme=README.md
 # --- the lessons: title, time estimate, points ------------------------------------------------------
 rm -rf "$out" && mkdir -p "$out"
 cp tools/site/site.css "$out/site.css"
@@ -102,7 +92,7 @@ fi
 {
   echo "# pathspace — physically based light transport, one piece at a time"
   echo
-  sed -n '/^pathspace teaches/,/^$/p' tools/handout/README.md
+  sed -n '/^pathspace teaches/,/^$/p' "$handout_readme"
   echo "Start here: [getting started](start.md) (Debian/Ubuntu, macOS, Windows with WSL), then"
   echo "[lesson 0](lessons/${lessons[0]}/README.md). Stuck? [The FAQ](faq.md) has the errors students"
   echo "hit most. [The repository](handout.md): what is where, how you are graded, how to pull the"
@@ -147,9 +137,14 @@ fi
 convert "$work/index.md" index.html "pathspace"
 convert tools/site/start.md start.html "Getting started — pathspace"
 convert tools/site/faq.md faq.html "FAQ — pathspace"
-# The handout's README as handout.sh writes it (with the lessons table of the lecturer's README).
-table=$(sed -n '/^## Lessons$/,/^## [^L]/p' README.md | sed -n '/^| [0-9]/p')
-awk -v table="$table" '$0 == "@LESSONS@" { print table; next } { print }' tools/handout/README.md >"$work/handout.md"
+# The handout's README as handout.sh writes it (with the lessons table of the lecturer's README);
+# in the handout itself, its README.
+if [ "$handout_readme" = README.md ]; then
+  cp README.md "$work/handout.md"
+else
+  table=$(sed -n '/^## Lessons$/,/^## [^L]/p' README.md | sed -n '/^| [0-9]/p')
+  awk -v table="$table" '$0 == "@LESSONS@" { print table; next } { print }' "$handout_readme" >"$work/handout.md"
+fi
 convert "$work/handout.md" handout.html "The repository — pathspace"
 for l in "${lessons[@]}"; do
   convert "lessons/$l/README.md" "lessons/$l/README.html" "$(title_of "lessons/$l/README.md") — pathspace"
