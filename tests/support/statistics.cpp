@@ -786,18 +786,18 @@ std::string writeFailedImages(const Image& a, const Image& varA, const Image& b,
     const std::string base = folder.string() + "/";
     try {
         writePFM(base + "a.pfm", a);
-        writePFM(base + "a-variance.pfm", varA);
+        if (!varA.pixels.empty()) writePFM(base + "a-variance.pfm", varA);
         writePFM(base + "b.pfm", b);
-        writePFM(base + "b-variance.pfm", varB);
+        if (!varB.pixels.empty()) writePFM(base + "b-variance.pfm", varB);
     } catch (const std::exception& e) { return std::string("(the two images could not be written: ") + e.what() + ")"; }
     // Named from the source tree's root when the build tree is inside it (build/...), so that the
     // command runs as printed from there.
     std::string shown = base;
     const std::string root = std::string(testfiles::sourceDir()) + "/";
     if (shown.compare(0, root.size(), root) == 0) shown = shown.substr(root.size());
-    return "to see where a and b differ: ./build/pathspace compare " + shown + "a.pfm " + shown +
-           "b.pfm --variance-a " + shown + "a-variance.pfm --variance-b " + shown + "b-variance.pfm --out " + shown +
-           "compare.png";
+    return "to see where a and b differ: ./build/pathspace compare " + shown + "a.pfm " + shown + "b.pfm" +
+           (varA.pixels.empty() ? "" : " --variance-a " + shown + "a-variance.pfm") +
+           (varB.pixels.empty() ? "" : " --variance-b " + shown + "b-variance.pfm") + " --out " + shown + "compare.png";
 }
 
 }  // namespace ps::stats

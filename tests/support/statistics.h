@@ -88,8 +88,9 @@ ZTestResult zTestImages(const Image& a, const Image& varA, const Image& b, const
 
 // Writes a, b and their variances as PFM files a.pfm, a-variance.pfm, b.pfm, b-variance.pfm in
 // build/failed-images/NAME/ (NAME from the running test's name; the working folder's
-// failed-images/NAME/ when the build tree cannot be written) and returns the line that names the
-// `pathspace compare` command to run on them (or why they could not be written).
+// failed-images/NAME/ when the build tree cannot be written; an empty variance image is left out)
+// and returns the line that names the `pathspace compare` command to run on them (or why they
+// could not be written). In a CHECK_MESSAGE it runs only when the check fails.
 std::string writeFailedImages(const Image& a, const Image& varA, const Image& b, const Image& varB);
 // The running test's name, for those file names: set by the test programs' main (doctest_main.cpp).
 void setCurrentTestName(const std::string& name);
