@@ -152,8 +152,9 @@ Image labelledStrip(const std::vector<Image>& images, const std::vector<std::str
     }
     const int k = stripFactor(w0);
     const int cell = images.empty() ? 0 : narrowest * k;
-    // The largest font scale at which every label fits its cell in at most two lines.
-    int scale = std::max(1, cell / (10 * kGlyphHeight));
+    // The largest font scale at which every label fits its cell in at most two lines, its glyphs
+    // at most a seventh of the cell's width high.
+    int scale = std::max(1, cell / (7 * kGlyphHeight));
     std::vector<std::vector<std::string>> lines(labels.size());
     for (; scale >= 1; --scale) {
         const int pad = 2 * scale;

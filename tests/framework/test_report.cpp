@@ -95,8 +95,8 @@ TEST_CASE("report: labels are drawn with the 5 x 7 font, scaled, clipped and abo
         for (int x = 6; x < 20; ++x) CHECK(clipped.at(x, y).r == 0.0f);
     CHECK(textWidth("pt 16 spp", 2) == 9 * 6 * 2);
     // The strip, at slide resolution: 60 pixels in all are enlarged 8 times (the most; each pixel an
-    // 8 x 8 square) to 480; cells of 240 pixels take the largest font up to a glyph height of 24,
-    // scale 3 (21 pixels); a band of (7 + 4) x 3 rows above the images.
+    // 8 x 8 square) to 480; cells of 240 pixels take the largest font up to a glyph height of 34,
+    // scale 4 (28 pixels); a band of (7 + 4) x 4 rows above the images.
     Image a(30, 20, Color(0.25f)), b(30, 20, Color(0.5f));
     a.at(29, 19) = Color(1.0f, 0.0f, 0.0f);
     CHECK(stripFactor(60) == 8);
@@ -105,7 +105,7 @@ TEST_CASE("report: labels are drawn with the 5 x 7 font, scaled, clipped and abo
     CHECK(stripFactor(5000) == 1);
     CHECK(stripFactor(10) == 8);
     const Image strip = labelledStrip({a, b}, {"pt", "lt"}, Color(1.0f));
-    const int band = 11 * 3;
+    const int band = 11 * 4;
     REQUIRE(strip.width == 480);
     REQUIRE(strip.height == 160 + band);
     CHECK(strip.at(0, band).r == 0.25f);
@@ -117,8 +117,9 @@ TEST_CASE("report: labels are drawn with the 5 x 7 font, scaled, clipped and abo
     for (int y = 0; y < band; ++y)
         for (int x = 0; x < 480; ++x) ink += strip.at(x, y).r == 1.0f;
     CHECK(ink > 0);
-    // Long labels wrap at spaces onto a second line, at a smaller font if need be; all six of
-    // lesson 11's family strip fit their 256-pixel cells (128-pixel images, twice) at scale 3.
+    // Long labels wrap at spaces onto a second line, at a smaller font if need be: in 256-pixel
+    // cells (128-pixel images, twice) scale 5 at most; "L[DG]S*E|LS*E", 13 characters, fits
+    // 256 - 2 x 2 x scale only at scale 3 (234 pixels), so the whole strip is at scale 3.
     std::vector<Image> six(6, Image(128, 128));
     const Image family =
         labelledStrip(six, {"radiosity", "pt LD*E", "drt", "pt LD?[GS]*E", "whitted", "pt L[DG]S*E|LS*E"}, Color(1.0f));
