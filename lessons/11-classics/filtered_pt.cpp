@@ -48,7 +48,7 @@ struct FilteredPathTracer : PixelIntegrator {
         Color L(0.0f);
         ++walks;
         PathExpression::State b = paths.backStep(paths.backStart(), VertexType::E);
-        cameraWalk(scene, ray, rng, maxDepth, [&](const WalkVertex& v) {
+        cameraWalk(scene, ray, rng, {maxDepth}, [&](const WalkVertex& v) {
             // The path whose light is x_k: L, then x_{k-1} .. x_1 (read), then E.
             if (paths.backAccepting(paths.backStep(b, VertexType::L))) addMISContribution(scene, v, rng, v.bounces, L);
             if (!v.hit) return false;
