@@ -152,19 +152,23 @@ Image labelledStrip(const std::vector<Image>& images, const std::vector<std::str
     }
     const int k = stripFactor(w0);
     const int cell = images.empty() ? 0 : narrowest * k;
-    // The largest font scale at which every label fits its cell in at most two lines, its glyphs
-    // at most a seventh of the cell's width high.
-    int scale = std::max(1, cell / (7 * kGlyphHeight));
-    std::vector<std::vector<std::string>> lines(labels.size());
-    for (; scale >= 1; --scale) {
-        const int pad = 2 * scale;
-        bool fits = true;
-        for (size_t i = 0; i < labels.size() && fits; ++i) {
-            lines[i] = wrapLabel(labels[i], cell - 2 * pad, scale);
-            fits = !(lines[i].empty() && !labels[i].empty()) && lines[i].size() <= 2;
+    // The largest font scale at which every label fits its cell in at most two lines (its glyphs at
+    // most a seventh of the cell's width high), or in one line if that is not much smaller.
+    const auto largestScale = [&](size_t maxLines) {
+        for (int scale = std::max(1, cell / (7 * kGlyphHeight)); scale > 1; --scale) {
+            bool fits = true;
+            for (size_t i = 0; i < labels.size() && fits; ++i) {
+                const std::vector<std::string> l = wrapLabel(labels[i], cell - 4 * scale, scale);
+                fits = !(l.empty() && !labels[i].empty()) && l.size() <= maxLines;
+            }
+            if (fits) return scale;
         }
-        if (fits || scale == 1) break;
-    }
+        return 1;
+    };
+    const int twoLines = largestScale(2), oneLine = largestScale(1);
+    const int scale = 5 * oneLine >= 4 * twoLines ? oneLine : twoLines;
+    std::vector<std::vector<std::string>> lines(labels.size());
+    for (size_t i = 0; i < labels.size(); ++i) lines[i] = wrapLabel(labels[i], cell - 4 * scale, scale);
     size_t rows = 1;
     for (size_t i = 0; i < labels.size(); ++i) {
         if (lines[i].empty() && !labels[i].empty()) lines[i] = {labels[i]};  // too long at any scale: cut
