@@ -39,8 +39,8 @@ void renderPixelTasks(uint64_t seed, uint32_t iteration, Image& out, SampleStats
     loop.splats = splatting ? &splats : nullptr;
     loop.splatScale = 1.0f / static_cast<float>(pixels);
     runTasks(loop, stats, [&](int pixel, Rng& rng, Task& task) {
-                 out.pixels[size_t(pixel)] = checkSample(sample(pixel, rng, task), task.stats);
-             });
+        out.pixels[size_t(pixel)] = checkSample(sample(pixel, rng, task), task.stats);
+    });
     splats.resolve(out);
 }
 

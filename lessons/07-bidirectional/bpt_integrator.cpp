@@ -174,15 +174,14 @@ TechniqueImages renderTechniques(const Scene& scene, int maxLength, int spp, uin
         // No SplatBuffer: bptSample's own t = 1 splats (the weighted image) are not wanted here.
         TaskLoop loop(pixels, seed, uint32_t(it));
         loop.splatScale = 1.0f / static_cast<float>(pixels);
-        runTasks(loop, out.stats,
-                 [&](int pixel, Rng& rng, Task& task) {
-                     ImageRecorder recorder;
-                     recorder.images = &out;
-                     recorder.splats = &lists[task.index];
-                     recorder.stats = &task.stats;
-                     const Vec2 raster = jitteredRaster(pixel, w, rng);
-                     bptSample(limited, raster, rng, opt, task.splat, &recorder);
-                 });
+        runTasks(loop, out.stats, [&](int pixel, Rng& rng, Task& task) {
+            ImageRecorder recorder;
+            recorder.images = &out;
+            recorder.splats = &lists[task.index];
+            recorder.stats = &task.stats;
+            const Vec2 raster = jitteredRaster(pixel, w, rng);
+            bptSample(limited, raster, rng, opt, task.splat, &recorder);
+        });
         for (auto& list : lists) {  // t = 1, in task order
             for (const ImageRecorder::Splat& sp : list)
                 ImageRecorder::accumulate(out, sp.technique, sp.x, sp.y, sp.unweighted, sp.weighted);
