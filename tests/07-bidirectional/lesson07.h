@@ -36,9 +36,9 @@ using ps::fmt::str;
 //   bpt against path-traced references: Cornell box (bpt and bpt-balance), Cornell spheres,
 //   point light, background                                                              -> 5
 //   pruned against unpruned renders: point light, spheres                               -> 2
-// m = 16; each runs at the Sidak level alpha' = 1 - (1 - a_L)^(1/16) ~ 5.2e-05, where a_L ~ 8.37e-4 is
-// the lesson's share of the whole course's 1 % (tests/support/alpha.h): a correct implementation
-// fails the course's graded suite by bad luck in fewer than 1 run in 100.
+// m = 16 statistical tests, each at the level alpha() = testalpha::perTest(m) (tests/support/alpha.h
+// derives it from the course's 1 %: a correct implementation fails the whole graded suite by
+// bad luck in fewer than 1 run in 100).
 constexpr int kStatisticalTests = 16;
 inline double alpha() { return ps::testalpha::perTest(kStatisticalTests); }
 

@@ -39,8 +39,9 @@ using ps::fmt::str;
 //   a new cache record's E and R at five points (Welch t-tests, Bonferroni inside)      -> 1
 //   ppm on the Cornell box: the lamp's pixels (a bound plus the noise at this level)    -> 1
 //   pm's caustic on the Cornell spheres' floor (a bound plus the noise at this level)   -> 1
-// m = 12; each runs at the Sidak level alpha' = 1 - (1 - a_L)^(1/12) ~ 7.0e-05, where a_L is the
-// lesson's share of the whole course's 1 % (tests/support/alpha.h).
+// m = 12 statistical tests, each at the level alpha() = testalpha::perTest(m) (tests/support/alpha.h
+// derives it from the course's 1 %: a correct implementation fails the whole graded suite by
+// bad luck in fewer than 1 run in 100).
 constexpr int kStatisticalTests = 12;
 inline double alpha() { return ps::testalpha::perTest(kStatisticalTests); }
 // The two-sided normal quantile of level a: |z| above it fails.
