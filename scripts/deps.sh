@@ -2,7 +2,10 @@
 # Installs the Debian 12 packages pathspace needs, if any is missing.
 # As root: apt-get. Otherwise with sudo if there is one. Otherwise: print the apt line, stop.
 set -euo pipefail
-PACKAGES=(cmake make g++ libglm-dev libstb-dev libtinyobjloader-dev doctest-dev libtinyexr-dev ccache bubblewrap)
+# clang with libc++ (and LLVM's OpenMP, libomp) builds the graded tests a second time, as a macOS
+# student's compiler would (scripts/portability.sh); clang++ also builds the fuzzers.
+PACKAGES=(cmake make g++ libglm-dev libstb-dev libtinyobjloader-dev doctest-dev libtinyexr-dev ccache bubblewrap
+          clang libomp-dev libc++-dev libc++abi-dev)
 
 missing=()
 for p in "${PACKAGES[@]}"; do
