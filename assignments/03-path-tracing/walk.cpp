@@ -11,14 +11,15 @@ void cameraWalk(const Scene& scene, const Ray& cameraRay, Rng& rng, int maxDepth
     //          intersect, fill a WalkVertex (its fields say what each one holds: the escape is a
     //          vertex too) and call visit; the walk ends if it returns false, on a miss, or at
     //          bounces == maxDepth (Eq. 3.3: the vertex with maxDepth bounces is visited, no
-    //          bounce after it). Else sample the BSDF with sampleBSDF(material, n, wo,
-    //          rng.uniform2(), rng.uniform(), Transport::Radiance, s) (its weight is already
-    //          f |cos| / pdf), end if it fails or beta turns black, and play Russian roulette
-    //          (Eq. 3.5) with survivalProbability(beta, bounces + 1): a survivor is divided by
-    //          q. Next ray: scene.spawnRay.
-    //          Pitfall: the tests replay the walk's random numbers: draw them inside that call
-    //          as written (or uniform2 then uniform, in that order), the roulette's only when
-    //          q < 1, and no others (the visitor draws its own in between).
+    //          bounce after it). Else sample the BSDF with sampleBSDF(material, n, wo, u,
+    //          uLobe, Transport::Radiance, s) (its weight is already f |cos| / pdf), end if it
+    //          fails or beta turns black, and play Russian roulette (Eq. 3.5) with
+    //          survivalProbability(beta, bounces + 1): a survivor is divided by q. Next ray:
+    //          scene.spawnRay.
+    //          Pitfall: the tests replay the walk's random numbers: draw u = rng.uniform2()
+    //          before uLobe = rng.uniform(), into variables (C++ evaluates a call's arguments
+    //          in no fixed order), the roulette's only when q < 1, and no others (the visitor
+    //          draws its own in between).
     (void)scene; (void)cameraRay; (void)rng; (void)maxDepth; (void)visit;
     (void)PS_TODO("lesson 03: cameraWalk", 0);
 }

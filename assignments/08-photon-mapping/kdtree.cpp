@@ -1,6 +1,7 @@
 // Lesson 8 — the photon map's kd-tree: left-balanced, in one array in heap order. Interface:
 // lessons/08-photon-mapping/photonmap.h. Equation numbers refer to lessons/08-photon-mapping/README.md.
 #include <algorithm>
+#include <tuple>
 #include "08-photon-mapping/photonmap.h"
 #include "todo.h"
 

@@ -15,9 +15,10 @@ void splittingWalk(const Scene& scene, const Ray& cameraRay, Rng& rng, int maxDe
     //          bounces < maxDepth): q = rule(v), cut to min(q, 1) once kMaxPathsPerCameraRay
     //          paths have been started (1 + the extra continuations n - 1 of every split so far);
     //          c = continuations(v.beta, q, rng); then c.n times: sample the BSDF with
-    //          sampleBSDF(material, n, wo, rng.uniform2(), rng.uniform(), Transport::Radiance, s)
-    //          (this continuation ends if it fails or c.beta * s.weight is black) and follow the
-    //          new path (scene.spawnRay) to its very end before the next continuation samples.
+    //          sampleBSDF(material, n, wo, u, uLobe, Transport::Radiance, s), u = rng.uniform2()
+    //          drawn before uLobe = rng.uniform() (this continuation ends if it fails or
+    //          c.beta * s.weight is black) and follow the new path (scene.spawnRay) to its very
+    //          end before the next continuation samples.
     //          Pitfall: recursion as deep as maxDepth may overflow the stack (the extreme tests
     //          use maxDepth 100000): keep the open vertices in a std::vector.
     (void)scene; (void)cameraRay; (void)rng; (void)maxDepth; (void)rule; (void)visit;

@@ -76,10 +76,11 @@ using LightWalkVisitor = std::function<bool(const LightWalkVertex&)>;
 using SurvivalFunction = float (*)(const Color& throughput, int bounces);
 
 // The particle's random walk (Eq. 5.1, 5.2, 5.6-5.8): startLightPath with rng.uniform(),
-// rng.uniform2(), rng.uniform2() (nothing if it is not valid), visit y0, then follow the particle
-// and visit every surface it hits (not a miss: a particle that leaves the scene is gone), at most
-// maxDepth bounces; scatter with sampleAdjointBSDF and Russian roulette as in lesson 3 on the
-// product of the scattering weights alone (the throughput since y0, without start->beta):
+// rng.uniform2(), rng.uniform2(), drawn in that order (nothing if it is not valid), visit y0,
+// then follow the particle and visit every surface it hits (not a miss: a particle that leaves
+// the scene is gone), at most maxDepth bounces; scatter with sampleAdjointBSDF and Russian
+// roulette as in lesson 3 on the product of the scattering weights alone (the throughput since
+// y0, without start->beta):
 // q = survival(throughput, bounces), by default lesson 3's survivalProbability. Lesson 7's light
 // subpath is this walk too; lesson 8's photons take it with a survival of their own.
 void lightWalk(const Scene& scene, Rng& rng, int maxDepth, const LightWalkVisitor& visit,

@@ -157,10 +157,10 @@ constexpr int kMaxPathsPerCameraRay = 32;
 // vertex x_k it may go on from (hit, visited with true, bounces < maxDepth) it asks q = rule(v)
 // (then q = min(q, 1) if kMaxPathsPerCameraRay paths have been started) and draws the
 // continuations (continuations(v.beta, q, rng)); each continuation samples the BSDF with
-// sampleBSDF(material, n, wo, rng.uniform2(), rng.uniform(), Transport::Radiance, s) (it ends if
-// that fails or its beta, continuation.beta * s.weight, is black) and is followed to its end
-// before the next continuation samples its BSDF: depth first, so the numbers come from `rng` in
-// one fixed order. Every vertex of the tree is visited (the escapes included), in that order.
+// sampleBSDF(material, n, wo, u, uLobe, Transport::Radiance, s) (u = rng.uniform2() drawn before
+// uLobe = rng.uniform(); it ends if that fails or its beta, continuation.beta * s.weight, is
+// black) and is followed to its end before the next continuation samples its BSDF: depth first,
+// so the numbers come from `rng` in one fixed order. Every vertex of the tree is visited (the escapes included), in that order.
 void splittingWalk(const Scene& scene, const Ray& ray, Rng& rng, int maxDepth, const ContinuationRule& rule,
                    const WalkVisitor& visit);
 

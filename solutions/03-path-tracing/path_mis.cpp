@@ -30,7 +30,10 @@ void addMISContribution(const Scene& scene, const WalkVertex& v, Rng& rng, int m
         }
     }
     if (!v.hit || v.bounces == maxDepth || scene.materials[v.sp.material].isDelta()) return;
-    const DirectSample d = sampleDirectLight(scene, v.sp, v.wo, rng.uniform(), rng.uniform2());
+    // Named, in this order: C++ evaluates a call's arguments in no fixed order.
+    const float uLight = rng.uniform();
+    const Vec2 uPoint = rng.uniform2();
+    const DirectSample d = sampleDirectLight(scene, v.sp, v.wo, uLight, uPoint);
     L += v.beta * d.value * misWeight(kPathHeuristic, 1.0f, d.pdfLight, 1.0f, d.pdfBSDF);
     //! END
 }

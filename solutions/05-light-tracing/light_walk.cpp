@@ -8,22 +8,26 @@ namespace ps {
 
 void lightWalk(const Scene& scene, Rng& rng, int maxDepth, const LightWalkVisitor& visit, SurvivalFunction survival) {
     //! TODO(05) The particle's walk (Eq. 5.1, 5.2, 5.6-5.8): start it with startLightPath
-    //!          (rng.uniform(), rng.uniform2(), rng.uniform2()); nothing if not valid. Visit y0
-    //!          (bounces 0), then for bounces = 1 .. maxDepth: intersect (a miss ends the walk,
-    //!          unvisited), visit (false ends it), and unless bounces == maxDepth scatter with
-    //!          sampleAdjointBSDF(material, n, wLight, rng.uniform2(), rng.uniform(), s) (end if
-    //!          it fails or beta turns black) and play Russian roulette as in lesson 3 (Eq. 3.5),
-    //!          its number drawn only when q < 1. A LightWalkVertex's fields say what it holds.
+    //!          (scene, uLight, uPos, uDir) (rng.uniform(), rng.uniform2(), rng.uniform2());
+    //!          nothing if not valid. Visit y0 (bounces 0), then for bounces = 1 .. maxDepth:
+    //!          intersect (a miss ends the walk, unvisited), visit (false ends it), and unless
+    //!          bounces == maxDepth scatter with sampleAdjointBSDF(material, n, wLight, u, uLobe,
+    //!          s) (rng.uniform2(), rng.uniform()) (end if it fails or beta turns black) and play
+    //!          Russian roulette as in lesson 3 (Eq. 3.5), its number drawn only when q < 1. A
+    //!          LightWalkVertex's fields say what it holds.
     //!          Pitfalls: q = survival(throughput, bounces) (the function passed in: lesson 3's
     //!          survivalProbability unless the caller gives another) follows the product of the
     //!          scattering weights alone (start at 1, not at start.beta, whose scale is the
     //!          light's power); a survivor divides both beta and throughput by q. The tests
-    //!          replay the random numbers: draw them inside the calls as written (or left to
-    //!          right into variables).
+    //!          replay the random numbers: draw them into variables, left to right as written
+    //!          (C++ evaluates a call's arguments in no fixed order).
     //! STUB (void)scene; (void)rng; (void)maxDepth; (void)visit; (void)survival;
     //! STUB (void)PS_TODO("lesson 05: lightWalk", 0);
     //! BEGIN
-    const LightPathStart start = startLightPath(scene, rng.uniform(), rng.uniform2(), rng.uniform2());
+    const float uLight = rng.uniform();
+    const Vec2 uPos = rng.uniform2();
+    const Vec2 uDir = rng.uniform2();
+    const LightPathStart start = startLightPath(scene, uLight, uPos, uDir);
     if (!start.valid) return;
     LightWalkVertex y0;
     y0.start = &start;
@@ -41,9 +45,11 @@ void lightWalk(const Scene& scene, Rng& rng, int maxDepth, const LightWalkVisito
         v.beta = beta;
         if (!visit(v)) break;
         if (bounces == maxDepth) break;
+        // Named, in this order: C++ evaluates a call's arguments in no fixed order.
+        const Vec2 u = rng.uniform2();  // in this order (see startLightPath's numbers above)
+        const float uLobe = rng.uniform();
         BSDFSample s;
-        if (!sampleAdjointBSDF(scene.materials[v.sp.material], v.sp.n, v.wLight, rng.uniform2(), rng.uniform(), s))
-            break;
+        if (!sampleAdjointBSDF(scene.materials[v.sp.material], v.sp.n, v.wLight, u, uLobe, s)) break;
         beta *= s.weight;
         throughput *= s.weight;
         if (isBlack(beta)) break;

@@ -1,6 +1,7 @@
 // Lesson 8 — the photon map's kd-tree: left-balanced, in one array in heap order. Interface:
 // lessons/08-photon-mapping/photonmap.h. Equation numbers refer to lessons/08-photon-mapping/README.md.
 #include <algorithm>
+#include <tuple>
 #include "08-photon-mapping/photonmap.h"
 #include "todo.h"
 
@@ -43,8 +44,16 @@ void balance(std::vector<Photon>& photons, size_t begin, size_t end, size_t node
     const Vec3 extent = hi - lo;
     const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
     const size_t median = begin + leftSubtreeSize(n);
+    // By the axis's coordinate; ties (photons on an axis-aligned wall) broken by everything else
+    // the photon holds: std::nth_element leaves equal photons in an order of the standard
+    // library's choosing, so without a total order the tree, and every image made with it,
+    // would differ between libstdc++ and libc++.
+    const auto key = [axis](const Photon& a) {
+        return std::make_tuple(a.p[axis], a.p[(axis + 1) % 3], a.p[(axis + 2) % 3], a.power.r, a.power.g, a.power.b,
+                               a.dir[0], a.dir[1]);
+    };
     std::nth_element(photons.begin() + long(begin), photons.begin() + long(median), photons.begin() + long(end),
-                     [axis](const Photon& a, const Photon& b) { return a.p[axis] < b.p[axis]; });
+                     [&key](const Photon& a, const Photon& b) { return key(a) < key(b); });
     out[node] = photons[median];
     out[node].axis = static_cast<uint8_t>(axis);
     balance(photons, begin, median, 2 * node, out);

@@ -15,9 +15,10 @@ void splittingWalk(const Scene& scene, const Ray& cameraRay, Rng& rng, int maxDe
     //!          bounces < maxDepth): q = rule(v), cut to min(q, 1) once kMaxPathsPerCameraRay
     //!          paths have been started (1 + the extra continuations n - 1 of every split so far);
     //!          c = continuations(v.beta, q, rng); then c.n times: sample the BSDF with
-    //!          sampleBSDF(material, n, wo, rng.uniform2(), rng.uniform(), Transport::Radiance, s)
-    //!          (this continuation ends if it fails or c.beta * s.weight is black) and follow the
-    //!          new path (scene.spawnRay) to its very end before the next continuation samples.
+    //!          sampleBSDF(material, n, wo, u, uLobe, Transport::Radiance, s), u = rng.uniform2()
+    //!          drawn before uLobe = rng.uniform() (this continuation ends if it fails or
+    //!          c.beta * s.weight is black) and follow the new path (scene.spawnRay) to its very
+    //!          end before the next continuation samples.
     //!          Pitfall: recursion as deep as maxDepth may overflow the stack (the extreme tests
     //!          use maxDepth 100000): keep the open vertices in a std::vector.
     //! STUB (void)scene; (void)cameraRay; (void)rng; (void)maxDepth; (void)rule; (void)visit;
@@ -61,10 +62,11 @@ void splittingWalk(const Scene& scene, const Ray& cameraRay, Rng& rng, int maxDe
         }
         --top.left;
         const WalkVertex v = top.v;  // arrive() may grow `open`: copy before
+        // Named, in this order: C++ evaluates a call's arguments in no fixed order.
+        const Vec2 u = rng.uniform2();
+        const float uLobe = rng.uniform();
         BSDFSample s;
-        if (!sampleBSDF(scene.materials[v.sp.material], v.sp.n, v.wo, rng.uniform2(), rng.uniform(),
-                        Transport::Radiance, s))
-            continue;
+        if (!sampleBSDF(scene.materials[v.sp.material], v.sp.n, v.wo, u, uLobe, Transport::Radiance, s)) continue;
         const Color beta = top.beta * s.weight;
         if (isBlack(beta)) continue;
         arrive(scene.spawnRay(v.sp, s.wi), beta, v.bounces + 1, s.delta, s.pdf, v.sp.p);

@@ -14,13 +14,14 @@ Color LiDistributed(const Scene& scene, const Ray& cameraRay, Rng& rng, int maxD
     //!             heuristic of the BSDF sample's pdf against pdfLightDirection from the previous
     //!             point (as lesson 3's LiMIS). Stop at a miss or at bounces == maxDepth.
     //!          2. at a non-delta surface, a light sample (sampleDirectLight(scene, sp, wo,
-    //!             rng.uniform(), rng.uniform2()), lesson 2): beta d.value w, with w = 1 at a
+    //!             uLight, uPoint), lesson 2; uLight = rng.uniform() drawn before uPoint =
+    //!             rng.uniform2(), into variables): beta d.value w, with w = 1 at a
     //!             diffuse surface (no BSDF sample competes there) and the power heuristic of
     //!             d.pdfLight against d.pdfBSDF at a glossy one.
     //!          3. a diffuse surface ends the path (no diffuse interreflection).
-    //!          4. glossy, mirror, glass: sampleBSDF(m, n, wo, rng.uniform2(), rng.uniform(),
-    //!             Transport::Radiance, b) (stop if it fails), beta *= b.weight, and go on from a
-    //!             ray spawned along b.wi.
+    //!          4. glossy, mirror, glass: sampleBSDF(m, n, wo, u, uLobe, Transport::Radiance, b)
+    //!             (u = rng.uniform2() before uLobe = rng.uniform(); stop if it fails), beta *=
+    //!             b.weight, and go on from a ray spawned along b.wi.
     //!          Pitfalls: b.weight is f |cos| / pdf: the lobe's pdf alone is not the glossy
     //!          reflection; a light sample MIS-weighted at a diffuse point loses light.
     //! STUB (void)scene; (void)cameraRay; (void)rng; (void)maxDepth;
@@ -47,14 +48,20 @@ Color LiDistributed(const Scene& scene, const Ray& cameraRay, Rng& rng, int maxD
         const Material& m = scene.materials[size_t(sp.material)];
         const Vec3 wo = -ray.d;
         if (!m.isDelta()) {
-            const DirectSample d = sampleDirectLight(scene, sp, wo, rng.uniform(), rng.uniform2());
+            // Named, in this order: C++ evaluates a call's arguments in no fixed order.
+            const float uLight = rng.uniform();
+            const Vec2 uPoint = rng.uniform2();
+            const DirectSample d = sampleDirectLight(scene, sp, wo, uLight, uPoint);
             const float w =
                 m.kind == BSDFKind::Diffuse ? 1.0f : misWeight(Heuristic::Power, 1.0f, d.pdfLight, 1.0f, d.pdfBSDF);
             L += beta * d.value * w;
         }
         if (m.kind == BSDFKind::Diffuse) break;
+        // Named, in this order: C++ evaluates a call's arguments in no fixed order.
+        const Vec2 u = rng.uniform2();  // in this order, as the light sample's numbers above
+        const float uLobe = rng.uniform();
         BSDFSample b;
-        if (!sampleBSDF(m, sp.n, wo, rng.uniform2(), rng.uniform(), Transport::Radiance, b)) break;
+        if (!sampleBSDF(m, sp.n, wo, u, uLobe, Transport::Radiance, b)) break;
         beta *= b.weight;
         delta = b.delta;
         pdfPrev = b.pdf;
