@@ -38,12 +38,13 @@ for c in "${configs[@]}"; do
   bld="build-$c"
   echo "portability: $c: $($cxx --version | head -1) in $bld/"
   t0=$SECONDS
+  mkdir -p "$bld"
   if ! cmake -S . -B "$bld" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER="$cxx" "${stdlib[@]}" \
-      -DCMAKE_COMPILE_WARNING_AS_ERROR=ON -DCMAKE_CXX_COMPILER_LAUNCHER=ccache > "$bld.configure.log" 2>&1 ||
-     ! cmake --build "$bld" -j"$jobs" > "$bld.build.log" 2>&1; then
+      -DCMAKE_COMPILE_WARNING_AS_ERROR=ON -DCMAKE_CXX_COMPILER_LAUNCHER=ccache > "$bld/configure.log" 2>&1 ||
+     ! cmake --build "$bld" -j"$jobs" > "$bld/build.log" 2>&1; then
     echo "portability: $c: the build failed (warnings are errors):" >&2
-    grep -E "error|warning" "$bld.build.log" "$bld.configure.log" 2>/dev/null | head -20 >&2
-    rows+=("| $c | $($cxx --version | head -1 | sed 's/ (.*//') | build failed ($bld.build.log) | | |")
+    grep -E "error|warning" "$bld/build.log" "$bld/configure.log" 2>/dev/null | head -20 >&2
+    rows+=("| $c | $($cxx --version | head -1 | sed 's/ (.*//') | build failed ($bld/build.log) | | |")
     status=1
     continue
   fi
