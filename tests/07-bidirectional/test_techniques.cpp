@@ -40,15 +40,7 @@ std::pair<ps::Image, ps::Image> referenceOfLength(int k) {
     return {img, var};
 }
 
-// Sums over blocks of b x b pixels (a technique that hits the light by chance, like (0, 3), has
-// a few hits per pixel: per-pixel variance estimates of such heavy-tailed samples are
-// unreliable, sums of 16 pixels are not). Variances add (the pixels are independent).
-ps::Image blocks(const ps::Image& img, int b) {
-    ps::Image out(img.width / b, img.height / b);
-    for (int y = 0; y < img.height; ++y)
-        for (int x = 0; x < img.width; ++x) out.at(x / b, y / b) += img.at(x, y);
-    return out;
-}
+using ps::testrender::blocks;  // sums over b x b pixels: (0, 3) has a few hits per pixel
 
 }  // namespace
 
