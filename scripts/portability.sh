@@ -10,14 +10,14 @@
 # Configurations (build folder build-NAME/, each with its own ccache entries):
 #   clang14-libc++   Debian's clang 14 with LLVM's libc++ 14: the closest to Apple clang we can run
 #   clang14          clang 14 with GCC's libstdc++
-#   clang19-libc++   clang 19 with libc++ 19
-#   clang19          clang 19 with libstdc++
+#   clang19          clang 19 with libstdc++, and libomp 14's runtime and omp.h (Debian's libc++ 19
+#                    and libomp 19 conflict with the 14 packages that clang 14 needs: not installed)
 # Installs what is missing first (scripts/deps.sh --portability). A test that fails is run again
 # once, alone (on a shared machine a test can run out of its time limit); the table at the end
 # says which tests failed twice. Exit status 1 if a build or a test failed.
 set -uo pipefail
 cd "$(dirname "$0")/.."
-all=(clang14-libc++ clang14 clang19-libc++ clang19)
+all=(clang14-libc++ clang14 clang19)
 configs=("$@")
 [ ${#configs[@]} -gt 0 ] || configs=("${all[@]}")
 for c in "${configs[@]}"; do
@@ -32,14 +32,22 @@ for c in "${configs[@]}"; do
     clang14*) cxx=clang++-14 ;;
     clang19*) cxx=clang++-19 ;;
   esac
-  stdlib=()
-  [[ "$c" == *-libc++ ]] && stdlib=(-DCMAKE_CXX_FLAGS=-stdlib=libc++ -DCMAKE_EXE_LINKER_FLAGS=-stdlib=libc++
-                                     -DCMAKE_SHARED_LINKER_FLAGS=-stdlib=libc++)
   bld="build-$c"
+  mkdir -p "$bld"
+  flags=()
+  [[ "$c" == *-libc++ ]] && flags=(-DCMAKE_CXX_FLAGS=-stdlib=libc++ -DCMAKE_EXE_LINKER_FLAGS=-stdlib=libc++
+                                    -DCMAKE_SHARED_LINKER_FLAGS=-stdlib=libc++)
+  if [ "$c" = clang19 ]; then  # OpenMP from libomp 14: its omp.h alone on the include path, its library
+    omp=$(ls /usr/lib/llvm-14/lib/clang/*/include/omp.h | head -1)
+    mkdir -p "$bld/omp14" && ln -sf "$omp" "$bld/omp14/omp.h"
+    link="-L/usr/lib/llvm-14/lib -Wl,-rpath,/usr/lib/llvm-14/lib"
+    flags=("-DOpenMP_CXX_FLAGS=-fopenmp=libomp -isystem $PWD/$bld/omp14" -DOpenMP_CXX_LIB_NAMES=omp
+           -DOpenMP_omp_LIBRARY=/usr/lib/llvm-14/lib/libomp.so "-DCMAKE_EXE_LINKER_FLAGS=$link"
+           "-DCMAKE_SHARED_LINKER_FLAGS=$link")
+  fi
   echo "portability: $c: $($cxx --version | head -1) in $bld/"
   t0=$SECONDS
-  mkdir -p "$bld"
-  if ! cmake -S . -B "$bld" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER="$cxx" "${stdlib[@]}" \
+  if ! cmake -S . -B "$bld" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER="$cxx" "${flags[@]}" \
       -DCMAKE_COMPILE_WARNING_AS_ERROR=ON -DCMAKE_CXX_COMPILER_LAUNCHER=ccache > "$bld/configure.log" 2>&1 ||
      ! cmake --build "$bld" -j"$jobs" > "$bld/build.log" 2>&1; then
     echo "portability: $c: the build failed (warnings are errors):" >&2
