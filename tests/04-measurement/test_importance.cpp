@@ -62,8 +62,10 @@ TEST_CASE(
         const ps::Camera cam = cc.make();
         const ImagePlane p = planeOf(cam);
         const Vec3 f = cam.forward();
-        for (auto [i, j] :
+        for (const std::pair<int, int>& pixel :
              {std::pair<int, int>{cc.w / 2, cc.h / 2}, {0, 0}, {cc.w - 1, cc.h - 1}, {cc.w - 1, 0}, {0, cc.h - 1}}) {
+            const int i = pixel.first,
+                      j = pixel.second;  // named, not bound: clang < 16 captures no binding in a lambda
             const auto W = [&](const Vec3& d) { return double(ps::pixelImportance(cam, i, j, d)) * glm::dot(d, f); };
             const glm::dvec2 a = p.ofRaster(i, j + 1.0), b = p.ofRaster(i + 1.0, j);
             const double I = integrateOverRect(p, a.x, a.y, b.x, b.y, 32, W);

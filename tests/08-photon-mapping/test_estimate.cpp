@@ -94,7 +94,7 @@ TEST_CASE(
         ph.p = Vec3(x, y, 0.0f);
         const float a = rng.uniform(), b = rng.uniform(), c = rng.uniform();
         ph.power = Color(a, b, c);
-        const Vec3 w = glm::normalize(Vec3(rng.uniform() - 0.5f, rng.uniform() - 0.5f, rng.uniform() - 0.2f));
+        const Vec3 w = glm::normalize(Vec3{rng.uniform() - 0.5f, rng.uniform() - 0.5f, rng.uniform() - 0.2f});
         ph.setWLight(w);
         photons.push_back(ph);
     }

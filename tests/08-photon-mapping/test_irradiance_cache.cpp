@@ -121,7 +121,7 @@ TEST_CASE(
     cache.a = 0.3f;
     for (int i = 0; i < 60; ++i) {
         const float x = rng.uniform(), y = rng.uniform(), R = 0.1f + 0.4f * rng.uniform();
-        const Color E(0.5f + rng.uniform(), 0.5f + rng.uniform(), 0.5f + rng.uniform());
+        const Color E{0.5f + rng.uniform(), 0.5f + rng.uniform(), 0.5f + rng.uniform()};
         if (i % 6 == 5) cache.records.push_back(record(Vec3(0, y, x), Vec3(1, 0, 0), R, E));           // the wall
         else if (i % 6 == 4) cache.records.push_back(record(Vec3(x, y, 0.05f), Vec3(0, 0, 1), R, E));  // above
         else if (i % 6 == 3)
@@ -131,7 +131,7 @@ TEST_CASE(
     const Vec3 up(0, 0, 1);
     int covered = 0;
     for (int q = 0; q < 300; ++q) {
-        const Vec3 x = q < 200 ? Vec3(rng.uniform(), rng.uniform(), 0.0f) : Vec3(0.0f, rng.uniform(), rng.uniform());
+        const Vec3 x = q < 200 ? Vec3{rng.uniform(), rng.uniform(), 0.0f} : Vec3{0.0f, rng.uniform(), rng.uniform()};
         const Vec3 n = q < 200 ? up : Vec3(1, 0, 0);
         const Interpolated want = oracle(cache, x, n);
         Color got(-7.0f);
@@ -212,7 +212,7 @@ TEST_CASE(
             double sumL = 0.0, sumInv = 0.0;
             for (int j = 0; j < kSide; ++j)
                 for (int i = 0; i < kSide; ++i) {
-                    const Vec2 u((i + rng.uniform()) / kSide, (j + rng.uniform()) / kSide);
+                    const Vec2 u{(i + rng.uniform()) / kSide, (j + rng.uniform()) / kSide};
                     ps::Ray ray = scene.spawnRay(sp, frame.toWorld(ps::sampleCosineHemisphere(u)));
                     ps::SurfacePoint y;
                     if (!scene.intersect(ray, y)) continue;

@@ -61,7 +61,7 @@ TEST_CASE("pt-adrrs: converges to the same reference with a random cache (z-test
     for (int e = 0; e < bad.entries(); ++e) {
         // log-uniform in [0.1, 10] per channel, one entry in 8 black (not reliable: lesson 3's roulette)
         const auto r = [&] { return std::pow(10.0f, 2.0f * rng.uniform() - 1.0f); };
-        const Color c(r(), r(), r());
+        const Color c{r(), r(), r()};
         bad.set(e, rng.uniform() < 0.125f ? Color(0.0f) : c);
     }
     ps::ADRRSPathTracer adrrs;
