@@ -24,8 +24,8 @@ double integrateKernel(ps::Filter f, float r, float coneK) {
     return sum * r / n;
 }
 
-// Why a kernel integrates to `got` instead of 1, if it is a classic mistake.
-std::string kernelHint(ps::Filter f, double got, float coneK) {
+// Why a kernel of radius r integrates to `got` instead of 1, if it is a classic mistake.
+std::string kernelHint(ps::Filter f, double got, float r, float coneK) {
     auto near = [&](double v) { return std::abs(got - v) < 0.02 * v; };
     if (near(ps::kPi)) return " (a factor pi too large: the 1 / pi of the normalisation 1 / (pi r^2) is missing)";
     if (near(1.0 / ps::kPi)) return " (a factor 1 / pi too small: divided by pi twice?)";
@@ -36,7 +36,14 @@ std::string kernelHint(ps::Filter f, double got, float coneK) {
     if (f == ps::Filter::Gaussian && near(1.6687))
         return " (the exponent is -beta d^2 / (2 r^2): with alpha = 0.918 the filter integrates to 1 only with "
                "-beta d^2 / r^2, Eq. 8.10)";
-    if (f == ps::Filter::Gaussian && near(ps::kPi * 0.34673)) return " (no 1 / r^2?)";
+    // Without alpha the form of Eq. 8.10 integrates to pi * 0.34673 = 1 / 0.918.
+    if (f == ps::Filter::Gaussian && near(1.0 / double(ps::kGaussAlpha)))
+        return " (a factor 1 / alpha too large: the constant alpha = 0.918 in front is missing)";
+    // Jensen's published form, exponent -beta d^2 / (2 r^2) and divided by pi r^2 (README 1.6).
+    if (f == ps::Filter::Gaussian && near(0.5311))
+        return " (the published form with -beta d^2 / (2 r^2) over pi r^2 integrates to 0.531: the course uses "
+               "Eq. 8.10 as written)";
+    if (near(double(r) * r)) return " (a factor r^2: the 1 / r^2 is missing)";
     return " (check the normalisation)";
 }
 
@@ -52,7 +59,7 @@ TEST_CASE("filters: box, cone and Gaussian kernels integrate to one over the dis
                               ps::filterName(f)
                                   << " filter, r = " << r << (f == ps::Filter::Cone ? ", k = " + num(k) : std::string())
                                   << ": expected the kernel to integrate to 1 over the disc, got " << num(I)
-                                  << kernelHint(f, I, k));
+                                  << kernelHint(f, I, r, k));
             }
         }
         CHECK_MESSAGE(ps::filterKernel(f, 1.0001f, 1.0f, 1.1f) == 0.0f,
