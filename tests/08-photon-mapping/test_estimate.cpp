@@ -47,6 +47,19 @@ std::string kernelHint(ps::Filter f, double got, float r, float coneK) {
     return " (check the normalisation)";
 }
 
+// The kernels of Eq. 8.7-8.10, the test's own (double): the estimate's oracle below does not
+// call the lesson's filterKernel, so a wrong kernel cannot hide a wrong sum or radius.
+double ownKernel(ps::Filter f, double d2, double r2, double k) {
+    if (d2 > r2) return 0.0;
+    const double a = double(ps::kGaussAlpha), b = double(ps::kGaussBeta);
+    switch (f) {
+    case ps::Filter::Box: return 1.0 / (ps::kPi * r2);
+    case ps::Filter::Cone: return (1.0 - std::sqrt(d2 / r2) / k) / ((1.0 - 2.0 / (3.0 * k)) * ps::kPi * r2);
+    case ps::Filter::Gaussian: return a * (1.0 - (1.0 - std::exp(-b * d2 / r2)) / (1.0 - std::exp(-b))) / r2;
+    }
+    return 0.0;
+}
+
 }  // namespace
 
 TEST_CASE("filters: box, cone and Gaussian kernels integrate to one over the disc (Eq. 8.7-8.10) [2 pts]") {
@@ -91,8 +104,9 @@ TEST_CASE(
     "radiance estimate: the k nearest photons, r the k-th distance, f from each photon's direction (Eq. 8.6) [2 pts]") {
     // Photons around the origin of the plane z = 0 with powers and directions of their own (some
     // from below the plane: f = 0 there), a glossy Phong material; the estimate must be the sum
-    // over the brute-force k nearest, with r^2 the k-th squared distance. A fixed-radius estimate
-    // (k = 0) sums over the photons within maxRadius with r = maxRadius.
+    // over the brute-force k nearest, with r^2 the k-th squared distance (maxRadius^2 where fewer
+    // than k lie within maxRadius). A fixed-radius estimate (k = 0) sums over the photons within
+    // maxRadius with r = maxRadius.
     ps::Rng rng(ps::testseed::seed(821));
     std::vector<Photon> photons;
     for (int i = 0; i < 2000; ++i) {
@@ -116,7 +130,8 @@ TEST_CASE(
     sp.n = Vec3(0, 0, 1);
     const Vec3 wo = glm::normalize(Vec3(0.3f, -0.2f, 1.0f));
     for (ps::Filter f : {ps::Filter::Box, ps::Filter::Cone, ps::Filter::Gaussian}) {
-        for (int k : {0, 1, 10, 60}) {
+        // k = 100 and 500: fewer than k photons lie within maxRadius (about 63 do), so r = maxRadius.
+        for (int k : {0, 1, 10, 60, 100, 500}) {
             sp.p = Vec3(0.1f * float(k % 7) - 0.3f, 0.05f * float(k % 5), 0.0f);
             ps::EstimateOptions opt;
             opt.filter = f;
@@ -134,7 +149,7 @@ TEST_CASE(
             for (size_t j = 0; j < n; ++j) {
                 const Photon& ph = map.nodes[d[j].second];
                 expected += ps::evalBSDF(glossy, sp.n, wo, ph.wLight()) * ph.power *
-                            ps::filterKernel(f, d[j].first, r2, opt.coneK);
+                            float(ownKernel(f, d[j].first, r2, opt.coneK));
             }
             const Color got = ps::radianceEstimate(map, sp, glossy, wo, opt);
             const bool ok = glm::length(got - expected) <= 1e-4f * (glm::length(expected) + 1e-6f);
