@@ -139,8 +139,7 @@ TEST_CASE(
                                                            << str(pm));
             const Color ppm = ps::LiProgressive(scene, ray, rng, maps.global, 0.01f, 8);
             CHECK_MESSAGE(close(ppm, want), "LiProgressive, " << view.what << " (every uniform number " << u
-                                                              << "): expected " << str(want) << ", got "
-                                                              << str(ppm));
+                                                              << "): expected " << str(want) << ", got " << str(ppm));
         }
     }
 }
@@ -185,13 +184,15 @@ render spp 1 maxdepth 8
     ps::Rng rng;
     rng.replayFrom(&numbers);
     const Color ppm = ps::LiProgressive(scene, ray, rng, map, 0.04f, 2);
-    CHECK_MESSAGE(close(ppm, ppmWant), "LiProgressive, maxDepth 2, a diffuse wall seen in a mirror (albedo 0.8 0.6 "
-                                       "0.4): expected the mirror's albedo times the box estimate there, "
-                                           << str(ppmWant) << ", got " << str(ppm));
+    CHECK_MESSAGE(close(ppm, ppmWant),
+                  "LiProgressive, maxDepth 2, a diffuse wall seen in a mirror (albedo 0.8 0.6 "
+                  "0.4): expected the mirror's albedo times the box estimate there, "
+                      << str(ppmWant) << ", got " << str(ppm));
     const Color ppm1 = ps::LiProgressive(scene, ray, rng, map, 0.04f, 1);
-    CHECK_MESSAGE(ppm1 == Color(0.0f), "LiProgressive, maxDepth 1: the wall is the path's second vertex (1 bounce "
-                                       "after the mirror), at the maximum depth: expected black, got "
-                                           << str(ppm1));
+    CHECK_MESSAGE(ppm1 == Color(0.0f),
+                  "LiProgressive, maxDepth 1: the wall is the path's second vertex (1 bounce "
+                  "after the mirror), at the maximum depth: expected black, got "
+                      << str(ppm1));
     // pm: the caustic map's k-nearest estimate at the wall (k = 30, maxRadius 0.3), after the mirror.
     ps::PmOptions opt;
     opt.maxDepth = 8;
@@ -201,9 +202,10 @@ render spp 1 maxdepth 8
     maps.caustic = map;
     const Color pmWant = mirror * bruteForceBox(photons, wall, white, wo, 30, 0.3f);
     const Color pm = ps::LiPhotonMap(scene, ray, rng, maps, opt);
-    CHECK_MESSAGE(close(pm, pmWant), "LiPhotonMap, a diffuse wall seen in a mirror, photons in the caustic map only: "
-                                     "expected the mirror's albedo times the caustic estimate there, "
-                                         << str(pmWant) << ", got " << str(pm));
+    CHECK_MESSAGE(close(pm, pmWant),
+                  "LiPhotonMap, a diffuse wall seen in a mirror, photons in the caustic map only: "
+                  "expected the mirror's albedo times the caustic estimate there, "
+                      << str(pmWant) << ", got " << str(pm));
 }
 
 TEST_CASE(
@@ -253,13 +255,13 @@ render spp 1 maxdepth 8
         ps::Rng rng;
         rng.replayFrom(&numbers);
         const Color got = ps::LiPhotonMap(scene, ps::Ray(v.o, v.d), rng, ps::PhotonMaps{}, opt);
-        CHECK_MESSAGE(close(got, v.want), "LiPhotonMap with an irradiance cache, " << v.what << ": expected "
-                                                                                    << str(v.want) << ", got "
-                                                                                    << str(got));
+        CHECK_MESSAGE(close(got, v.want), "LiPhotonMap with an irradiance cache, "
+                                              << v.what << ": expected " << str(v.want) << ", got " << str(got));
     }
 }
 
-TEST_CASE("pm: the final gather through glass into a diffuse ball inside it (Eq. 8.11, the eta^2 that does not cancel) [1 pt]") {
+TEST_CASE(
+    "pm: the final gather through glass into a diffuse ball inside it (Eq. 8.11, the eta^2 that does not cancel) [1 pt]") {
     // A white ball (radius 0.5) inside a glass ball (radius 1, ior 1.5), photons of the test's own
     // on the white ball's top. The gather ray from (0, 0, 3) straight down the axis meets the
     // glass at normal incidence: it refracts into the glass (its radiance scaled by the eta^2 of
@@ -326,8 +328,9 @@ TEST_CASE("kd-tree: an empty map, and k = 0, find nothing (Eq. 8.5) [1 pt]") {
     PhotonMap empty;
     ps::buildPhotonMap({}, empty);
     std::vector<ps::NearPhoton> found = {{1, 0.0f}};
-    CHECK_MESSAGE(ps::nearestPhotons(empty, Vec3(0.0f), 5, 1.0f, found) == 0, "nearestPhotons on an empty map: "
-                                                                              "expected 0 photons visited");
+    CHECK_MESSAGE(ps::nearestPhotons(empty, Vec3(0.0f), 5, 1.0f, found) == 0,
+                  "nearestPhotons on an empty map: "
+                  "expected 0 photons visited");
     CHECK_MESSAGE(found.empty(), "nearestPhotons on an empty map: expected nothing found");
     found = {{1, 0.0f}};
     CHECK_MESSAGE(ps::photonsInRadius(empty, Vec3(0.0f), 1.0f, found) == 0,
@@ -339,11 +342,13 @@ TEST_CASE("kd-tree: an empty map, and k = 0, find nothing (Eq. 8.5) [1 pt]") {
     ps::nearestPhotons(one, Vec3(0.0f), 0, 1.0f, found);
     CHECK_MESSAGE(found.empty(), "nearestPhotons with k = 0: expected nothing found, got " << found.size());
     ps::nearestPhotons(one, Vec3(0.1f), 1, 1.0f, found);
-    CHECK_MESSAGE(found.size() == 1, "nearestPhotons, k = 1, a map of one photon within the radius: expected it "
-                                     "found, got "
-                                         << found.size() << " photons");
+    CHECK_MESSAGE(found.size() == 1,
+                  "nearestPhotons, k = 1, a map of one photon within the radius: expected it "
+                  "found, got "
+                      << found.size() << " photons");
     ps::photonsInRadius(one, Vec3(0.1f), 1.0f, found);
-    CHECK_MESSAGE(found.size() == 1, "photonsInRadius, a map of one photon within the radius: expected it found, "
-                                     "got "
-                                         << found.size() << " photons");
+    CHECK_MESSAGE(found.size() == 1,
+                  "photonsInRadius, a map of one photon within the radius: expected it found, "
+                  "got "
+                      << found.size() << " photons");
 }

@@ -55,12 +55,13 @@ inline ps::Scene closedBox(float albedo, int maxDepth, bool lamp, int resolution
                        std::to_string(resolution) + " " + std::to_string(resolution) + "\n" +
                        "material w diffuse albedo " + a + " " + a + " " + a + "\n" +
                        "material m mirror albedo 1 1 1\n"
-                       "quad 0 0 0  1 0 0  1 0 1  0 0 1  material w\n"   // floor (y = 0)
-                       "quad 0 1 0  0 1 1  1 1 1  1 1 0  material w\n"   // ceiling (y = 1)
-                       "quad 0 0 0  0 0 1  0 1 1  0 1 0  material w\n"   // x = 0
-                       "quad 1 0 0  1 1 0  1 1 1  1 0 1  material w\n"   // x = 1
-                       "quad 0 0 0  0 1 0  1 1 0  1 0 0  material w\n"   // z = 0
-                       "quad 0 0 1  1 0 1  1 1 1  0 1 1  material " + (mirrorWall ? "m" : "w") + "\n";  // z = 1
+                       "quad 0 0 0  1 0 0  1 0 1  0 0 1  material w\n"  // floor (y = 0)
+                       "quad 0 1 0  0 1 1  1 1 1  1 1 0  material w\n"  // ceiling (y = 1)
+                       "quad 0 0 0  0 0 1  0 1 1  0 1 0  material w\n"  // x = 0
+                       "quad 1 0 0  1 1 0  1 1 1  1 0 1  material w\n"  // x = 1
+                       "quad 0 0 0  0 1 0  1 1 0  1 0 0  material w\n"  // z = 0
+                       "quad 0 0 1  1 0 1  1 1 1  0 1 1  material " +
+                       (mirrorWall ? "m" : "w") + "\n";  // z = 1
     if (lamp) text += "quad 0.45 0.999 0.45  0.55 0.999 0.45  0.55 0.999 0.55  0.45 0.999 0.55  emission 4 4 4\n";
     text += "render maxdepth " + std::to_string(maxDepth) + "\n";
     return ps::parseScene(text, "closed-box.scene");

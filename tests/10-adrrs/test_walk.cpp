@@ -37,7 +37,8 @@ Walked walk(const ps::Scene& scene, int maxDepth, float q, float u, const std::f
     ps::splittingWalk(
         scene, ray, rng, maxDepth, [&](const ps::WalkVertex&) { return q; },
         [&](const ps::WalkVertex& v) {
-            w.visits.push_back({v.bounces, v.hit, v.beta, v.sp.p, v.sp.n, v.wo, v.pPrev, v.pdfPrev, v.specular, v.sp.material});
+            w.visits.push_back(
+                {v.bounces, v.hit, v.beta, v.sp.p, v.sp.n, v.wo, v.pPrev, v.pdfPrev, v.specular, v.sp.material});
             return goOn ? goOn(v.bounces) : true;
         });
     w.numbers = replay.read;
@@ -79,8 +80,8 @@ void checkBookkeeping(const ps::Scene& scene, const Walked& w, float q) {
             const Vec3 back = glm::normalize(parent.p - v.p);
             const ps::Material& m = scene.materials[size_t(parent.material)];
             ps::BSDFSample s;
-            const bool delta = m.isDelta() &&
-                               ps::sampleBSDF(m, parent.n, parent.wo, ps::Vec2(0.5f), 0.5f, ps::Transport::Radiance, s);
+            const bool delta =
+                m.isDelta() && ps::sampleBSDF(m, parent.n, parent.wo, ps::Vec2(0.5f), 0.5f, ps::Transport::Radiance, s);
             const float pdf = delta ? s.pdf : ps::pdfBSDF(m, parent.n, parent.wo, -back);
             if (glm::length(v.pPrev - parent.p) > 1e-5f)
                 bad = "pPrev " + str(v.pPrev) + ", expected the previous vertex " + str(parent.p);
@@ -154,6 +155,53 @@ TEST_CASE("splitting walk: the tree of paths, depth first, each continuation wit
     // vertex's bookkeeping replayed step by step.
     checkBookkeeping(closedBox(0.5f, 3, false, 4, true), walk(closedBox(0.5f, 3, false, 4, true), 3, 1.5f, 0.25f),
                      1.5f);
+
+    // A continuation whose BSDF sample fails (a Phong lobe below the surface) ends alone: the
+    // next continuation of the same vertex still samples and goes on. A Phong floor (exponent 1)
+    // seen at a grazing angle, q = 2 (whole: no number drawn for n), maxDepth 1; the numbers a, a, a
+    // (a failing sample, whatever order the three are read in) then b, b, b (one that succeeds and
+    // leaves the scene), both found here with the framework's sampleBSDF.
+    {
+        const ps::Scene floor = ps::parseScene(
+            "camera eye 0 1 0  target 1 0.9 0  fov 40  resolution 4 4\n"
+            "material glossy phong albedo 0.8 0.8 0.8 exponent 1\n"
+            "quad -9 0 -9  -9 0 9  9 0 9  9 0 -9  material glossy\n",
+            "phong-floor.scene");
+        const ps::Ray ray(Vec3(0, 0.1f, 0), glm::normalize(Vec3(1, -0.05f, 0)));
+        const Vec3 n(0, 1, 0), wo = -ray.d;
+        float a = -1.0f, b = -1.0f;
+        for (int i = 1; i < 1000 && (a < 0.0f || b < 0.0f); ++i) {
+            const float u = float(i) / 1000.0f;
+            ps::BSDFSample s;
+            const bool ok = ps::sampleBSDF(floor.materials[0], n, wo, ps::Vec2(u, u), u, ps::Transport::Radiance, s);
+            if (!ok && a < 0.0f) a = u;
+            if (ok && b < 0.0f && s.wi.y > 0.0f) b = u;
+        }
+        REQUIRE_MESSAGE((a > 0.0f && b > 0.0f), "the test's own layout: a failing and a succeeding Phong sample");
+        Replay replay;
+        replay.values = {a, a, a, b, b, b};
+        replay.fill = b;
+        ps::Rng rng;
+        rng.replayFrom(&replay);
+        std::vector<int> bounces;
+        ps::splittingWalk(
+            floor, ray, rng, 1, [](const ps::WalkVertex&) { return 2.0f; },
+            [&](const ps::WalkVertex& v) {
+                bounces.push_back(v.bounces);
+                return true;
+            });
+        std::string got;
+        for (int k : bounces) got += std::to_string(k) + " ";
+        CHECK_MESSAGE(got == "0 1 ",
+                      "splittingWalk, q = 2 at a Phong floor whose first continuation's BSDF sample "
+                      "fails: expected the vertices 0 1 (that continuation ends, the second goes "
+                      "on), got "
+                          << got);
+        CHECK_MESSAGE(replay.read == 6,
+                      "splittingWalk, q = 2, the first sample failing: expected 6 uniform numbers "
+                      "read (3 per BSDF sample, none for a whole q), got "
+                          << replay.read);
+    }
 
     // The visitor ends a branch.
     const ps::Scene scene = closedBox(0.5f, 8, false);

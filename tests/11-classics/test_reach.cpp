@@ -70,7 +70,8 @@ TEST_CASE("whittedDirect: a quad lit and seen from its back: I |cos| / d^2 albed
         REQUIRE(scene.intersect(r, sp));
         REQUIRE(sp.n.y > 0.0f);  // the test's own layout: the normal points away from the light
         const Vec3 wo = glm::normalize(Vec3(0.3f, -1, -0.4f));
-        const double d2 = double(q[0]) * q[0] + double(q[1]) * q[1] + 4.0, f = 0.6 / 3.14159265358979 * 2.0 / std::sqrt(d2) / d2;
+        const double d2 = double(q[0]) * q[0] + double(q[1]) * q[1] + 4.0,
+                     f = 0.6 / 3.14159265358979 * 2.0 / std::sqrt(d2) / d2;
         const Color want(float(5 * f), float(4 * f), float(3 * f));
         const Color got = ps::whittedDirect(scene, sp, wo);
         CHECK_MESSAGE(close(got, want), "the floor's back at (" << q[0] << ", 0, " << q[1]
@@ -102,23 +103,27 @@ TEST_CASE("drt: a lamp behind a glass ball and a lamp inside one, exactly (Eq. 1
     const View views[] = {{Vec3(0, 0, -1), "a lamp behind a glass ball (the eta^2 of entering and leaving cancel)"},
                           {glm::normalize(Vec3(4, 0, -4)),
                            "a lamp inside a glass ball (the light leaves the glass once: its eta^2 stays)"}};
+    // maxdepth 8, and 1: the lamp behind the ball is then out of reach (the ball's far side is the
+    // second vertex), the lamp inside it is the second vertex and still seen.
     for (const View& v : views)
-        for (float u : {0.5f, 0.01f}) {
-            const ps::Ray ray(Vec3(0.0f), v.d);
-            bool lamp = false;
-            const Color want = specularOracle(scene, ray, u, 8, lamp);
-            if (u == 0.5f) REQUIRE_MESSAGE(lamp, "the test's own layout: " << v.what);
-            Constant numbers;
-            numbers.fill = u;
-            ps::Rng rng;
-            rng.replayFrom(&numbers);
-            const Color got = ps::LiDistributed(scene, ray, rng, 8);
-            CHECK_MESSAGE(close(got, want, 1e-4), "LiDistributed, " << v.what << " (every uniform number " << u
-                                                                    << "): expected " << str(want)
-                                                                    << " (the emission times the glass's sample "
-                                                                       "weights in radiance transport), got "
-                                                                    << str(got));
-        }
+        for (const float u : {0.5f, 0.01f})
+            for (const int maxDepth : {8, 1}) {
+                const ps::Ray ray(Vec3(0.0f), v.d);
+                bool lamp = false;
+                const Color want = specularOracle(scene, ray, u, maxDepth, lamp);
+                if (u == 0.5f && maxDepth == 8) REQUIRE_MESSAGE(lamp, "the test's own layout: " << v.what);
+                Constant numbers;
+                numbers.fill = u;
+                ps::Rng rng;
+                rng.replayFrom(&numbers);
+                const Color got = ps::LiDistributed(scene, ray, rng, maxDepth);
+                CHECK_MESSAGE(close(got, want, 1e-4), "LiDistributed, maxdepth "
+                                                          << maxDepth << ", " << v.what << " (every uniform number "
+                                                          << u << "): expected " << str(want)
+                                                          << " (the emission times the glass's sample "
+                                                             "weights in radiance transport), got "
+                                                          << str(got));
+            }
 }
 
 TEST_CASE("connectLens: a light path from the background to the lens (t = 0, m = 0, Eq. 11.16, 11.17) [1 pt]") {
@@ -130,8 +135,8 @@ TEST_CASE("connectLens: a light path from the background to the lens (t = 0, m =
     // Where its ray meets the lens at z, expected: the new light vertex on the background (onLight,
     // infinite, its normal pointing back to the background: from z towards y0), z on the lens disc,
     // and value = beta * width * height * W_e(z -> y0) with W_e = 1 / (pi r^2 A cos^4 theta) by hand.
-    const lens11::LensCase cam = {"the background test camera", Vec3(0, 0, 0), Vec3(0, 0, 1), Vec3(0, 1, 0), 40.0f,
-                                  16, 16, 0.2f, 3.0f};
+    const lens11::LensCase cam = {
+        "the background test camera", Vec3(0, 0, 0), Vec3(0, 0, 1), Vec3(0, 1, 0), 40.0f, 16, 16, 0.2f, 3.0f};
     const ps::Scene scene = ps::parseScene(
         "camera eye 0 0 0  target 0 0 1  up 0 1 0  fov 40  resolution 16 16  lens 0.2  focus 3\n"
         "material black diffuse albedo 0 0 0\n"
@@ -150,16 +155,16 @@ TEST_CASE("connectLens: a light path from the background to the lens (t = 0, m =
                       "connectLens, m = 0, the background's light path: expected c.light on the light, infinite, not a "
                       "point light");
         const lens11::DVec3 z(c.lens.sp.p), y0(c.light.sp.p), back = glm::normalize(y0 - z);
-        CHECK_MESSAGE((std::abs(z.z) < 1e-5 && z.x * z.x + z.y * z.y <= 0.04 * (1.0 + 1e-4)),
-                      "connectLens: expected the lens point on the lens disc (z = 0, radius 0.2), got " << str(c.lens.sp.p));
+        CHECK_MESSAGE(
+            (std::abs(z.z) < 1e-5 && z.x * z.x + z.y * z.y <= 0.04 * (1.0 + 1e-4)),
+            "connectLens: expected the lens point on the lens disc (z = 0, radius 0.2), got " << str(c.lens.sp.p));
         CHECK_MESSAGE(glm::length(lens11::DVec3(c.light.sp.n) - back) < 1e-4,
-                      "connectLens, m = 0, the background's light path from " << str(c.light.sp.p) << " to the lens at "
-                                                                              << str(c.lens.sp.p)
-                                                                              << ": expected the light vertex's normal "
-                                                                              << str(Vec3(back))
-                                                                              << " (back towards the background, where "
-                                                                                 "the path comes from), got "
-                                                                              << str(c.light.sp.n));
+                      "connectLens, m = 0, the background's light path from "
+                          << str(c.light.sp.p) << " to the lens at " << str(c.lens.sp.p)
+                          << ": expected the light vertex's normal " << str(Vec3(back))
+                          << " (back towards the background, where "
+                             "the path comes from), got "
+                          << str(c.light.sp.n));
         const double cosT = glm::dot(back, cam.f()), A = 4.0 * cam.tx() * cam.ty();
         const double We = 1.0 / (kPi * double(cam.radius) * cam.radius * A * cosT * cosT * cosT * cosT);
         for (int k = 0; k < 3; ++k) {
@@ -170,7 +175,23 @@ TEST_CASE("connectLens: a light path from the background to the lens (t = 0, m =
                               << " (beta = Lb 4 pi^2 R^2, the background's power), got " << num(c.value[k]));
         }
     }
-    CHECK_MESSAGE(valid >= 20, "connectLens, m = 0, under a background alone: expected light paths that meet the lens "
-                               "(about 1 in 100 here), got "
-                                   << valid << " of " << tries);
+    // Directions the lens does not image: from behind it, and outside the image.
+    const ps::Camera camera = cam.camera();
+    CHECK_MESSAGE(camera.lensPdfDirection(Vec3(0.1f, 0, 0), Vec3(0, 0, -1)) == 0.0f,
+                  "lensPdfDirection of a direction behind the lens: expected 0");
+    CHECK_MESSAGE(camera.lensPdfDirection(Vec3(0.1f, 0, 0), glm::normalize(Vec3(1, 0, 0.2f))) == 0.0f,
+                  "lensPdfDirection of a direction far outside the image: expected 0");
+    // No light: no light path starts.
+    const ps::Scene dark = ps::parseScene(
+        "camera eye 0 0 0  target 0 0 1  up 0 1 0  fov 40  resolution 16 16  lens 0.2  focus 3\n"
+        "material black diffuse albedo 0 0 0\n"
+        "quad -0.6 -0.6 -0.3  0.6 -0.6 -0.3  0.6 0.6 -0.3  -0.6 0.6 -0.3  material black\n",
+        "lens-dark.scene");
+    CHECK_MESSAGE(!ps::connectLens(dark, nullptr, 0, rng).valid,
+                  "connectLens, m = 0, in a scene without light: "
+                  "expected no connection");
+    CHECK_MESSAGE(valid >= 20,
+                  "connectLens, m = 0, under a background alone: expected light paths that meet the lens "
+                  "(about 1 in 100 here), got "
+                      << valid << " of " << tries);
 }
