@@ -5,15 +5,17 @@
 #   bash scripts/coverage.sh [NN ...]     (default: every lesson with graded tests)
 #   COVERAGE_DIR=DIR   the coverage build (default build-coverage/, kept: the next run is incremental)
 #   COVERAGE_JOBS=N    build and ctest parallelism (default: nproc)
-# Builds the lessons' test programs with gcov instrumentation (-O1 --coverage, NDEBUG as in
-# Release), then per lesson: clears the counters, runs `ctest -L ^lesson-NN$` (that lesson's
-# graded tests alone; other lessons' code runs too but is not counted for it), and reads the
-# counters with gcovr (Debian's gcovr; scripts/deps.sh --optional installs it). Prints one table
-# row per lesson (executable solution-region lines, executed, excepted, %) and every line never
-# executed, with its file and number; writes the same to DIR/coverage.md.
-# tests/coverage-exceptions.txt lists the lines that may stay unexecuted, each with its reason
-# (a guard that cannot trigger); format there. Exit status 1 if a region line is unexecuted and not
-# excepted, if an exception is stale (its line is executed now, or not found exactly once), or if a
+# Builds the lessons' test programs in Release with the solution files alone at -O0 with gcov's
+# counters (the launcher below), then per lesson: clears the counters, runs `ctest -L ^lesson-NN$`
+# (that lesson's graded tests alone; other lessons' code runs too but is not counted for it), and
+# reads the counters with gcovr (Debian's gcovr; scripts/deps.sh gcovr installs it). A line is
+# reached when it was executed and every condition on it went both ways (gcov's branch outcomes,
+# without the exception paths of calls). Prints one table row per lesson (lines executed,
+# condition outcomes taken, lines excepted) and every line not reached, with its file and number;
+# writes the same to DIR/coverage.md.
+# tests/coverage-exceptions.txt lists the lines that may stay unreached, each with its reason (a
+# guard that cannot trigger); format there. Exit status 1 if a region line is not reached and not
+# excepted, if an exception is stale (its line is reached now, or not found exactly once), or if a
 # graded test fails in the coverage build.
 set -uo pipefail
 # The compiler launcher of the coverage build (CMAKE_CXX_COMPILER_LAUNCHER, below): a solution file
@@ -32,10 +34,8 @@ bld="${COVERAGE_DIR:-$src/build-coverage}"
 jobs="${COVERAGE_JOBS:-$(nproc)}"
 t0=$SECONDS
 
-command -v gcovr >/dev/null 2>&1 || {
-    echo "coverage: gcovr is missing (apt-get install gcovr, or bash scripts/deps.sh --optional)" >&2
-    exit 1
-}
+# gcovr (Debian's package) reads gcov's counters; scripts/deps.sh installs it with the rest.
+bash "$src/scripts/deps.sh" gcovr || exit 1
 
 if [ $# -gt 0 ]; then lessons=("$@"); else
     lessons=()

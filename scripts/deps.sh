@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages pathspace needs, if any is missing.
 # As root: apt-get. Otherwise with sudo if there is one. Otherwise: print the apt line, stop.
+#   bash scripts/deps.sh [PACKAGE ...]   also the named packages of a tool that needs more (e.g.
+#                                        scripts/coverage.sh: gcovr; README, "Dependencies")
 set -euo pipefail
-PACKAGES=(cmake make g++ libglm-dev libstb-dev libtinyobjloader-dev doctest-dev libtinyexr-dev ccache bubblewrap)
+PACKAGES=(cmake make g++ libglm-dev libstb-dev libtinyobjloader-dev doctest-dev libtinyexr-dev ccache bubblewrap "$@")
 
 missing=()
 for p in "${PACKAGES[@]}"; do
