@@ -20,12 +20,13 @@
 set -uo pipefail
 # The compiler launcher of the coverage build (CMAKE_CXX_COMPILER_LAUNCHER, below): a solution file
 # (solutions/NN-name/*.cpp) compiles at -O0 with gcov's counters, everything else as in Release
-# (-O3): the counted lines stay the source's lines (no inlining or merging), the rest runs at speed.
+# (-O3): the counted lines stay the source's lines (no inlining or merging), the rest runs at speed;
+# -fprofile-abs-path: the counters name the source by its absolute path whatever folder compiled it.
 if [ "${1:-}" = "--compile" ]; then
     shift
     extra=()
     for a in "$@"; do
-        case "$a" in */solutions/[0-9][0-9]-*/*.cpp) extra=(-O0 --coverage) ;; esac
+        case "$a" in */solutions/[0-9][0-9]-*/*.cpp) extra=(-O0 --coverage -fprofile-abs-path) ;; esac
     done
     if command -v ccache >/dev/null 2>&1; then exec ccache "$@" "${extra[@]}"; else exec "$@" "${extra[@]}"; fi
 fi
