@@ -36,7 +36,7 @@ jobs="${COVERAGE_JOBS:-$(nproc)}"
 t0=$SECONDS
 
 # gcovr (Debian's package) reads gcov's counters; scripts/deps.sh installs it with the rest.
-bash "$src/scripts/deps.sh" gcovr || exit 1
+{ bash "$src/scripts/deps.sh" && bash "$src/scripts/deps.sh" gcovr; } || exit 1
 
 if [ $# -gt 0 ]; then lessons=("$@"); else
     lessons=()
