@@ -176,7 +176,7 @@ TEST_CASE("connectLens: a light path from the background to the lens (t = 0, m =
         }
     }
     // Directions the lens does not image: from behind it, and outside the image.
-    const ps::Camera camera = cam.camera();
+    const ps::ThinLens camera = cam.camera();
     CHECK_MESSAGE(camera.lensPdfDirection(Vec3(0.1f, 0, 0), Vec3(0, 0, -1)) == 0.0f,
                   "lensPdfDirection of a direction behind the lens: expected 0");
     CHECK_MESSAGE(camera.lensPdfDirection(Vec3(0.1f, 0, 0), glm::normalize(Vec3(1, 0, 0.2f))) == 0.0f,
