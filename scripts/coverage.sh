@@ -28,7 +28,10 @@ if [ "${1:-}" = "--compile" ]; then
     for a in "$@"; do
         case "$a" in */solutions/[0-9][0-9]-*/*.cpp) extra=(-O0 --coverage -fprofile-abs-path) ;; esac
     done
-    if command -v ccache >/dev/null 2>&1; then exec ccache "$@" "${extra[@]}"; else exec "$@" "${extra[@]}"; fi
+    # A solution file without ccache: its cache keys relative paths (CCACHE_BASEDIR), which gcov
+    # cannot resolve from the folder that compiled lessons 0 and 1 (framework/).
+    [ ${#extra[@]} -gt 0 ] && exec "$@" "${extra[@]}"
+    if command -v ccache >/dev/null 2>&1; then exec ccache "$@"; else exec "$@"; fi
 fi
 src="$(cd "$(dirname "$0")/.." && pwd)"
 bld="${COVERAGE_DIR:-$src/build-coverage}"
