@@ -87,6 +87,16 @@ TEST_CASE(
                                      "expected 1 (0 outside the pixel), got "
                                   << num(block));
         }
+        // Outside the image: half a pixel beyond the corner pixel (0, 0) (raster (-0.5, -0.5), which a
+        // cast to int puts in pixel 0) and straight behind the camera.
+        const glm::dvec2 out = p.ofRaster(-0.5, -0.5);
+        const Vec3 beyond = Vec3(p.dir(out.x, out.y));
+        CHECK_MESSAGE(ps::pixelImportance(cam, 0, 0, beyond) == 0.0f,
+                      cc.name << ", pixel (0, 0): a direction half a pixel outside the image (raster (-0.5, -0.5)): "
+                                 "expected W_e^(j) = 0, got "
+                              << ps::pixelImportance(cam, 0, 0, beyond));
+        CHECK_MESSAGE(ps::pixelImportance(cam, cc.w / 2, cc.h / 2, -f) == 0.0f,
+                      cc.name << ": a direction behind the camera: expected W_e^(j) = 0");
     }
 }
 
