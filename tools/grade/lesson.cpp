@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 #include "grade_channel.h"
@@ -289,10 +290,14 @@ std::vector<TestResult> gradeLessonWithPaths(Grading& g, const std::string& less
         }
         if (!findings.empty()) {
             note += "refused by the object check (README, \"The autograder\": what graded code may use):\n";
-            for (size_t i = 0; i < findings.size() && i < 20; ++i)
-                note += "  " + (findings[i].file.empty() ? "" : lesson + "/" + findings[i].file + ": ") +
-                        findings[i].what + "\n";
-            if (findings.size() > 20) note += "  and " + std::to_string(findings.size() - 20) + " more\n";
+            std::map<std::string, size_t> perFile;  // at most four findings of a file, then how many more
+            for (const Finding& f : findings) {
+                const size_t k = ++perFile[f.file];
+                if (k <= 4)
+                    note += "  " + (f.file.empty() ? "" : lesson + "/" + f.file + ": ") + f.what + "\n";
+            }
+            for (const auto& [file, n] : perFile)
+                if (n > 4) note += "  " + lesson + "/" + file + ": and " + std::to_string(n - 4) + " more\n";
             const Finding& f = findings.front();
             return failAll("refused by the object check: " + (f.file.empty() ? "" : lesson + "/" + f.file + " ") +
                            f.what);
