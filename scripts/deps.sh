@@ -2,7 +2,7 @@
 # Installs the Debian 12 packages pathspace needs, if any is missing.
 # As root: apt-get. Otherwise with sudo if there is one. Otherwise: print the apt line, stop.
 set -euo pipefail
-PACKAGES=(cmake make g++ libglm-dev libstb-dev libtinyobjloader-dev doctest-dev libtinyexr-dev ccache bubblewrap)
+PACKAGES=(cmake make g++ libglm-dev libstb-dev libtinyobjloader-dev doctest-dev libtinyexr-dev ccache bubblewrap binutils)
 
 missing=()
 for p in "${PACKAGES[@]}"; do

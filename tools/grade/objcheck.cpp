@@ -335,7 +335,9 @@ std::vector<Finding> checkObjects(const std::vector<std::pair<std::string, ElfOb
     for (const auto& [file, o] : objects)
         for (const ElfSymbol& s : o.globals)
             if (s.defined) own.insert(s.name);
-    for (const auto& [file, o] : objects) {
+    for (const auto& object : objects) {
+        const std::string& file = object.first;
+        const ElfObject& o = object.second;
         std::set<std::string> said;  // one finding per name and file
         auto find = [&](const std::string& name, const std::string& what) {
             if (said.insert(name).second) out.push_back({file, what});
