@@ -37,9 +37,7 @@ void onlyRuntimeErrors(F&& f) {
     try {
         f();
     } catch (const std::runtime_error&) {
-    } catch (...) {
-        finding("a reader threw something other than std::runtime_error");
-    }
+    } catch (...) { finding("a reader threw something other than std::runtime_error"); }
 }
 
 }  // namespace
@@ -73,7 +71,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
             if (o.exitCode != 0 || o.signal || o.timedOut || o.channelOverflow) finding("a pass for a run that failed");
             if (o.channel.size() != 4) finding("a pass without exactly four records");
             for (const std::string& m : o.channel)
-                if (m.compare(0, kToken.size() + 1, kToken + " ") != 0) finding("a pass with a record without the token");
+                if (m.compare(0, kToken.size() + 1, kToken + " ") != 0)
+                    finding("a pass with a record without the token");
             if (!v.message.empty()) finding("a pass with a message");
         } else if (v.message.empty()) {
             finding("a fail without a message");

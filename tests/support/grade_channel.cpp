@@ -18,7 +18,7 @@ namespace ps::gradechannel {
 
 namespace {
 
-int channel = -1;                   // kFd once the token is taken
+int channel = -1;                    // kFd once the token is taken
 char tokenHex[2 * kTokenBytes + 1];  // the token, as every record begins with it
 
 // Takes the token: runs from .preinit_array, before any static constructor of the program (and
@@ -70,11 +70,11 @@ std::string sourceName(const char* file) {
 
 std::string describe(const doctest::AssertData& a) {
     std::ostringstream s;
-    s << sourceName(a.m_file) << ":" << a.m_line << ": ERROR: " << doctest::assertString(a.m_at) << "( " << a.m_expr << " ) ";
+    s << sourceName(a.m_file) << ":" << a.m_line << ": ERROR: " << doctest::assertString(a.m_at) << "( " << a.m_expr
+      << " ) ";
     if (a.m_threw && !(a.m_at & doctest::assertType::is_throws_as) && !(a.m_at & doctest::assertType::is_throws))
         s << "THREW exception: " << a.m_exception.c_str();
-    else
-        s << "is NOT correct!\n  values: " << doctest::assertString(a.m_at) << "( " << a.m_decomp.c_str() << " )";
+    else s << "is NOT correct!\n  values: " << doctest::assertString(a.m_at) << "( " << a.m_decomp.c_str() << " )";
     const int n = doctest::IReporter::get_num_active_contexts();
     const doctest::IContextScope* const* contexts = doctest::IReporter::get_active_contexts();
     for (int i = 0; i < n; ++i) {

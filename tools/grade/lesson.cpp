@@ -21,7 +21,9 @@ namespace {
 // A file name the build rules can take as it is: letters, digits, '_', '.', '+', '-', not
 // beginning with '.', '+' or '-' (no spaces, quotes, '$', no option).
 bool plainName(const std::string& n) {
-    auto word = [](char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_'; };
+    auto word = [](char c) {
+        return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_';
+    };
     return !n.empty() && word(n[0]) &&
            std::all_of(n.begin(), n.end(), [&](char c) { return word(c) || c == '.' || c == '+' || c == '-'; });
 }
@@ -208,7 +210,8 @@ std::vector<TestResult> gradeLessonWithPaths(Grading& g, const std::string& less
         else if (ext == ".cpp" && fs::exists(g.tree / "lib" / nn / "plumbing" / (e.stem().string() + ".o")))
             note += "left out " + name + ": the lesson's own file of that name is used\n";
         else if (copied == kMaxFiles)
-            note += "left out " + name + ": a lesson's folder may hold at most " + std::to_string(kMaxFiles) + " files\n";
+            note +=
+                "left out " + name + ": a lesson's folder may hold at most " + std::to_string(kMaxFiles) + " files\n";
         else {
             fs::copy_file(e, src / name, fs::copy_options::overwrite_existing);
             fs::permissions(src / name, kReadable);
@@ -252,8 +255,8 @@ std::vector<TestResult> gradeLessonWithPaths(Grading& g, const std::string& less
         logged(m.log);
         if (!o.logError.empty()) note += "grade: " + o.logError + "\n";
         if (o.ok()) return std::string();
-        const std::string why = o.timedOut ? "the build " + o.describe(g.buildTimeout)
-                                           : "the lesson did not build (" + o.describe(0) + ")";
+        const std::string why =
+            o.timedOut ? "the build " + o.describe(g.buildTimeout) : "the lesson did not build (" + o.describe(0) + ")";
         note += why + "; the end of its log:\n" + tail(readText(m.log), 30, 4096);
         return why;
     };
@@ -293,8 +296,7 @@ std::vector<TestResult> gradeLessonWithPaths(Grading& g, const std::string& less
             std::map<std::string, size_t> perFile;  // at most four findings of a file, then how many more
             for (const Finding& f : findings) {
                 const size_t k = ++perFile[f.file];
-                if (k <= 4)
-                    note += "  " + (f.file.empty() ? "" : lesson + "/" + f.file + ": ") + f.what + "\n";
+                if (k <= 4) note += "  " + (f.file.empty() ? "" : lesson + "/" + f.file + ": ") + f.what + "\n";
             }
             for (const auto& [file, n] : perFile)
                 if (n > 4) note += "  " + lesson + "/" + file + ": and " + std::to_string(n - 4) + " more\n";

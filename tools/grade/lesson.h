@@ -26,16 +26,16 @@
 namespace grade {
 
 // What a grading may write and keep (README, "The autograder": "What a grade writes").
-constexpr std::uint64_t kStepLog = 1 << 20;               // one step's log in OUT/logs
-constexpr std::uint64_t kMinStepLog = 4 << 10;            // ... when the budgets below are spent
-constexpr std::uint64_t kLessonLogs = 16 << 20;           // one lesson's logs
-constexpr std::uint64_t kAllLogs = 64 << 20;              // all of OUT/logs
-constexpr size_t kMaxFiles = 32;                          // files copied from a lesson's folder
-constexpr std::uint64_t kMaxFileBytes = 1 << 20;          // ... each at most
-constexpr std::uint64_t kBuildFileBytes = 64 << 20;       // any file the build writes
-constexpr std::uint64_t kScratchBytes = 64 << 20;         // a test's scratch file system (memory)
-constexpr std::uint64_t kDisassemblyBytes = 64 << 20;     // objdump's text of the objects
-constexpr size_t kNoteBytes = 8 << 10;                    // the grader's note on a lesson, in the reports
+constexpr std::uint64_t kStepLog = 1 << 20;            // one step's log in OUT/logs
+constexpr std::uint64_t kMinStepLog = 4 << 10;         // ... when the budgets below are spent
+constexpr std::uint64_t kLessonLogs = 16 << 20;        // one lesson's logs
+constexpr std::uint64_t kAllLogs = 64 << 20;           // all of OUT/logs
+constexpr size_t kMaxFiles = 32;                       // files copied from a lesson's folder
+constexpr std::uint64_t kMaxFileBytes = 1 << 20;       // ... each at most
+constexpr std::uint64_t kBuildFileBytes = 64 << 20;    // any file the build writes
+constexpr std::uint64_t kScratchBytes = 64 << 20;      // a test's scratch file system (memory)
+constexpr std::uint64_t kDisassemblyBytes = 64 << 20;  // objdump's text of the objects
+constexpr size_t kNoteBytes = 8 << 10;                 // the grader's note on a lesson, in the reports
 
 struct Grading {
     std::filesystem::path tree;        // the prepared tree
@@ -44,9 +44,9 @@ struct Grading {
     std::filesystem::path logs;        // OUT/logs: every step's output, for the lecturer
     double testTimeout = 120, buildTimeout = 300;
     int jobs = 2;
-    Sandbox sandbox;           // off: --no-sandbox
-    bool objectCheck = true;   // off: --no-object-check
-    bool keepWork = false;     // --keep-work
+    Sandbox sandbox;                     // off: --no-sandbox
+    bool objectCheck = true;             // off: --no-object-check
+    bool keepWork = false;               // --keep-work
     std::uint64_t logBudget = kAllLogs;  // what OUT/logs may still take
 };
 

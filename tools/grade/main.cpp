@@ -8,6 +8,7 @@
 //         [--expect zero|full] [--note TEXT]
 //   grade --junit FILE [--source SRC] [--lessons ...] [--out OUT] [--expect zero|full]
 //   grade --check-reference [--tree DIR] [--lessons ...]
+//   grade --check-objects LESSON FILE.o... [--tree DIR]
 //
 // --prepare builds the reference once (in DIR/build) and assembles the prepared tree in DIR
 // (cmake/grader.cmake: headers, the framework, every lesson's reference, plumbing and tests as
@@ -82,6 +83,7 @@ const char* kHelp =
     "             [--expect zero|full] [--note TEXT]\n"
     "       grade --junit FILE [--source SRC] [--lessons 0,1|all] [--out OUT] [--expect zero|full]\n"
     "       grade --check-reference [--tree DIR] [--lessons 0,1|all]\n"
+    "       grade --check-objects LESSON FILE.o... [--tree DIR]\n"
     "--prepare DIR builds the reference once and puts in DIR what grading needs (no solution source).\n"
     "Grading scores each lesson in isolation: that lesson from the submission (DIR holds lesson\n"
     "folders like assignments/, the default), every other lesson from the prepared tree (--tree,\n"
@@ -100,7 +102,8 @@ const char* kHelp =
     "wrapper such as the Gradescope package has to say about the upload).\n"
     "--junit FILE scores the graded tests from an existing CTest JUnit report instead of building.\n"
     "--expect zero|full: exit 1 unless every graded test failed / passed.\n"
-    "--check-reference runs the object check on every lesson's reference objects (exit 1 if refused).\n"
+    "--check-reference runs the object check on every lesson's reference objects, --check-objects on\n"
+    "the given objects as lesson LESSON's (00 or 00-rays); exit 1 if it refuses anything.\n"
     "Exit status 3: no working sandbox (install bubblewrap, or --no-sandbox), or no objdump (install\n"
     "binutils, or --no-object-check). SIGINT or SIGTERM stops grading, work folder removed.\n";
 
@@ -121,42 +124,52 @@ int prepare(const fs::path& source, const fs::path& dir, int jobs) {
     return 0;
 }
 
-// grade --check-reference: the object check on every lesson's reference objects, as if they
-// were a submission (CI: the check refuses nothing the course's own solutions need).
-int checkReference(const fs::path& tree, const std::vector<std::string>& lessons) {
-    int refused = 0;
+// The object check on `objects` as if they were a submission of `lesson` (objdump, run here:
+// they are trusted files); prints the findings and returns how many there are.
+size_t checkObjectFiles(const fs::path& tree, const std::string& lesson, const std::vector<fs::path>& objects) {
     const fs::path log = fs::temp_directory_path() / ("grade-check-" + std::to_string(getpid()) + ".txt");
-    for (const std::string& lesson : lessons) {
-        const fs::path dir = tree / "lib" / lesson.substr(0, 2) / "reference";
-        std::vector<std::pair<std::string, ElfObject>> objects;
-        Step dis;
-        dis.argv = {findProgram("objdump"), "-d", "-z", "-w"};
-        for (const auto& e : fs::directory_iterator(dir))
-            if (e.path().extension() == ".o") {
-                objects.push_back({e.path().stem().string() + ".cpp", readElf(readText(e.path()))});
-                dis.argv.push_back(e.path().filename().string());
-            }
-        std::sort(objects.begin(), objects.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-        dis.env = {"PATH=/usr/bin:/bin", "LC_ALL=C"};
-        dis.cwd = dir.string();
-        dis.log = log.string();
-        const Outcome o = run(dis);
-        std::vector<Finding> findings = checkObjects(objects, courseSymbols(tree, lesson));
-        if (!o.ok()) findings.push_back({"", "objdump failed: " + o.describe(0)});
-        const std::vector<Finding> more = checkDisassembly(readText(log));
-        findings.insert(findings.end(), more.begin(), more.end());
-        std::cout << lesson << ": " << objects.size() << " reference objects, "
-                  << (findings.empty() ? "nothing refused" : std::to_string(findings.size()) + " findings:") << "\n";
-        for (const Finding& f : findings) std::cout << "  " << f.file << ": " << f.what << "\n";
-        refused += !findings.empty();
+    std::vector<std::pair<std::string, ElfObject>> parsed;
+    Step dis;
+    dis.argv = {findProgram("objdump"), "-d", "-z", "-w"};
+    for (const fs::path& o : objects) {
+        parsed.push_back({o.stem().string() + ".cpp", readElf(readText(o))});
+        dis.argv.push_back(fs::absolute(o).string());
     }
-    fs::remove(log);
-    return refused ? 1 : 0;
+    dis.env = {"PATH=/usr/bin:/bin", "LC_ALL=C"};
+    dis.log = log.string();
+    const Outcome o = run(dis);
+    std::vector<Finding> findings = checkObjects(parsed, courseSymbols(tree, lesson));
+    if (!o.ok()) findings.push_back({"", "objdump failed: " + o.describe(0)});
+    std::string text = readText(log);
+    // objdump names each file by the path it was given: by its own name here, as in grading.
+    for (const fs::path& f : objects) text = neutral(text, {{fs::absolute(f).parent_path().string() + "/", ""}});
+    const std::vector<Finding> more = checkDisassembly(text);
+    findings.insert(findings.end(), more.begin(), more.end());
+    std::error_code ec;
+    fs::remove(log, ec);
+    std::cout << lesson << ": " << parsed.size() << " objects, "
+              << (findings.empty() ? "nothing refused" : std::to_string(findings.size()) + " findings:") << "\n";
+    for (const Finding& f : findings) std::cout << "  " << f.file << ": " << f.what << "\n";
+    return findings.size();
+}
+
+// grade --check-reference: the object check on every lesson's reference objects, as if they were
+// a submission (CI: the check refuses nothing the course's own solutions need).
+int checkReference(const fs::path& tree, const std::vector<std::string>& lessons) {
+    size_t findings = 0;
+    for (const std::string& lesson : lessons) {
+        std::vector<fs::path> objects;
+        for (const auto& e : fs::directory_iterator(tree / "lib" / lesson.substr(0, 2) / "reference"))
+            if (e.path().extension() == ".o") objects.push_back(e.path());
+        std::sort(objects.begin(), objects.end());
+        findings += checkObjectFiles(tree, lesson, objects);
+    }
+    return findings ? 1 : 0;
 }
 
 // Writes results.json and junit.xml (with `junit`), then checks --expect: the exit status.
-int finish(const std::vector<TestResult>& results, const std::map<std::string, std::string>& notes,
-           const fs::path& out, bool junit, double seconds, const std::string& expect) {
+int finish(const std::vector<TestResult>& results, const std::map<std::string, std::string>& notes, const fs::path& out,
+           bool junit, double seconds, const std::string& expect) {
     try {
         fs::create_directories(out);
         writeReport(results, notes, out, junit, seconds);
@@ -212,9 +225,7 @@ int guarded(bool keep, const std::function<int(const fs::path&)>& grading) {
         int status = 1;
         try {
             status = grading(work);
-        } catch (const std::exception& e) {
-            std::cerr << "grade: " << e.what() << "\n";
-        }
+        } catch (const std::exception& e) { std::cerr << "grade: " << e.what() << "\n"; }
         std::exit(status);
     }
     int status = 0;
@@ -235,8 +246,8 @@ int guarded(bool keep, const std::function<int(const fs::path&)>& grading) {
         return 128 + stopSignal;
     }
     if (worker < 0 || WIFSIGNALED(status)) {
-        std::cerr << "grade: the grading died (" << (worker < 0 ? "fork failed" : strsignal(WTERMSIG(status)))
-                  << "); " << (keep ? "work folder kept in " + work : std::string("work folder removed")) << "\n";
+        std::cerr << "grade: the grading died (" << (worker < 0 ? "fork failed" : strsignal(WTERMSIG(status))) << "); "
+                  << (keep ? "work folder kept in " + work : std::string("work folder removed")) << "\n";
         return worker < 0 ? 1 : 128 + WTERMSIG(status);
     }
     return WEXITSTATUS(status);
@@ -251,6 +262,8 @@ int main(int argc, char** argv) {
     std::string lessonsArg = "all", expect, note;
     int timeout = 120, buildTimeout = 300, jobs = 2;
     bool noSandbox = false, keepWork = false, noObjectCheck = false, checkRef = false;
+    std::string checkLesson;
+    std::vector<fs::path> checkFiles;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         auto value = [&]() -> std::string {
@@ -271,7 +284,11 @@ int main(int argc, char** argv) {
         else if (a == "--keep-work") keepWork = true;
         else if (a == "--no-object-check") noObjectCheck = true;
         else if (a == "--check-reference") checkRef = true;
-        else if (a == "--note") note = value();
+        else if (a == "--check-objects") {
+            checkLesson = value();
+            while (i + 1 < argc && std::string(argv[i + 1]).rfind("--", 0) != 0) checkFiles.push_back(argv[++i]);
+            if (checkFiles.empty()) usageError("--check-objects needs a lesson and object files");
+        } else if (a == "--note") note = value();
         else if (a == "--expect") {
             expect = value();
             if (expect != "zero" && expect != "full") usageError("--expect takes zero or full, got '" + expect + "'");
@@ -321,6 +338,11 @@ int main(int argc, char** argv) {
 
     out = fs::absolute(out);
     if (checkRef) return checkReference(tree, lessons);
+    if (!checkLesson.empty()) {
+        for (const std::string& l : lessons)
+            if (l == checkLesson || l.substr(0, 2) == checkLesson) return checkObjectFiles(tree, l, checkFiles) ? 1 : 0;
+        usageError("--check-objects: no lesson '" + checkLesson + "' in the tree");
+    }
     std::map<std::string, std::string> notes;
     notes[""] = note;
     if (fromReport) {  // score the report, nothing to build

@@ -55,10 +55,10 @@ std::vector<ElfObject> readArchive(const std::string& bytes);
 // What the rest of a lesson's test program defines and needs (everything it links but the
 // submission's objects), read from the prepared tree.
 struct CourseSymbols {
-    std::set<std::string> api;             // what graded code may call: defined by the course's code
-    std::map<std::string, bool> defined;   // every name the rest defines -> defined strongly somewhere
-    std::set<std::string> needed;          // names the rest uses and none of it defines
-    std::set<std::string> pieces;          // what the graded lesson's reference defines
+    std::set<std::string> api;            // what graded code may call: defined by the course's code
+    std::map<std::string, bool> defined;  // every name the rest defines -> defined strongly somewhere
+    std::set<std::string> needed;         // names the rest uses and none of it defines
+    std::set<std::string> pieces;         // what the graded lesson's reference defines
 };
 CourseSymbols courseSymbols(const std::filesystem::path& tree, const std::string& lesson);
 

@@ -137,8 +137,8 @@ public:
         const std::uint64_t left = total_ - written_ - tail_.size();
         if (left > 0) {
             const std::string note = "\n[grade: " + std::to_string(left) +
-                                     " bytes of output left out here; a log keeps the first " +
-                                     std::to_string(head_) + " and the last " + std::to_string(tailCap_) + "]\n";
+                                     " bytes of output left out here; a log keeps the first " + std::to_string(head_) +
+                                     " and the last " + std::to_string(tailCap_) + "]\n";
             put(note.data(), note.size());
         }
         put(tail_.data(), tail_.size());

@@ -33,7 +33,7 @@ struct Step {
     bool unprivileged = false;      // when the grader runs as root: run as nobody (uid, gid 65534)
     bool limits = false;            // resource limits for submission code (see process.cpp)
     std::uint64_t fileSizeLimit = std::uint64_t(64) << 20;  // with limits: no file larger (RLIMIT_FSIZE)
-    bool channel = false;           // the grader's result channel as fd 3 (grade_channel.h)
+    bool channel = false;                                   // the grader's result channel as fd 3 (grade_channel.h)
 };
 
 struct Outcome {
@@ -41,10 +41,10 @@ struct Outcome {
     int exitCode = -1;  // when the command exited
     int signal = 0;     // when a signal (not the time limit) ended it
     double seconds = 0;
-    std::string error;            // the step could not be run at all
-    std::uint64_t outputBytes = 0;  // all the command printed (the log keeps at most Step::logCap)
-    std::string logError;         // the log could not be written (the grader's problem, not the step's)
-    std::string token;            // with a channel: the token the harness was given, in hex
+    std::string error;                 // the step could not be run at all
+    std::uint64_t outputBytes = 0;     // all the command printed (the log keeps at most Step::logCap)
+    std::string logError;              // the log could not be written (the grader's problem, not the step's)
+    std::string token;                 // with a channel: the token the harness was given, in hex
     std::vector<std::string> channel;  // with a channel: the records, in the order they were sent
     bool channelOverflow = false;      // more records (or bytes) than a test can honestly send
     bool ok() const { return error.empty() && !timedOut && signal == 0 && exitCode == 0; }

@@ -238,13 +238,12 @@ void writeReport(const std::vector<TestResult>& results, const std::map<std::str
     std::printf("%-16s %d / %d\n", "total", score, maxScore);
     // stdout (the grader's log, with the host's paths) is for the lecturer only.
     std::ostringstream json;
-    json << "{\n  \"score\": " << score
-                                        << ",\n  \"execution_time\": " << static_cast<long long>(seconds + 0.5)
-                                        << ",\n  \"visibility\": \"visible\",\n  \"stdout_visibility\": \"hidden\""
-                                        << ",\n  \"output\": \"" << jsonEscape(summary) << "\""
-                                        << ",\n  \"extra_data\": {\"max_score\": " << maxScore << "}"
-                                        << ",\n  \"tests\": [\n"
-                                        << tests.str() << (results.empty() ? "" : "\n") << "  ]\n}\n";
+    json << "{\n  \"score\": " << score << ",\n  \"execution_time\": " << static_cast<long long>(seconds + 0.5)
+         << ",\n  \"visibility\": \"visible\",\n  \"stdout_visibility\": \"hidden\""
+         << ",\n  \"output\": \"" << jsonEscape(summary) << "\""
+         << ",\n  \"extra_data\": {\"max_score\": " << maxScore << "}"
+         << ",\n  \"tests\": [\n"
+         << tests.str() << (results.empty() ? "" : "\n") << "  ]\n}\n";
     writeFile(out / "results.json", json.str());
     if (!junit) return;
     // One suite per lesson; a test's failure type says why: failure or timeout.

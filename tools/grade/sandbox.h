@@ -20,9 +20,9 @@
 namespace grade {
 
 struct View {
-    std::vector<std::string> readOnly;  // host paths shown read-only
-    std::vector<std::string> writable;  // host paths shown writable
-    std::vector<std::string> scratch;   // paths that are an empty writable tmpfs in the sandbox
+    std::vector<std::string> readOnly;                     // host paths shown read-only
+    std::vector<std::string> writable;                     // host paths shown writable
+    std::vector<std::string> scratch;                      // paths that are an empty writable tmpfs in the sandbox
     std::uint64_t scratchBytes = std::uint64_t(64) << 20;  // the size of each
 };
 

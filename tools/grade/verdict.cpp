@@ -32,8 +32,8 @@ std::optional<Record> parseRecord(const std::string& message, const std::string&
         message[token.size()] != ' ')
         return std::nullopt;
     const size_t newline = message.find('\n');
-    const std::string head = message.substr(token.size() + 1, newline == std::string::npos ? std::string::npos
-                                                                                            : newline - token.size() - 1);
+    const std::string head =
+        message.substr(token.size() + 1, newline == std::string::npos ? std::string::npos : newline - token.size() - 1);
     Record r;
     if (newline != std::string::npos) r.text = message.substr(newline + 1);
     std::vector<std::string> words;
@@ -89,8 +89,10 @@ Verdict judge(const Outcome& o, const std::string& name, double timeout, bool sa
         else ++forged;
     }
     if (forged > 0) {
-        v.message = std::to_string(forged) + " message(s) on the grader's result channel that the test harness did not "
-                                             "send: not graded (" + status + ")";
+        v.message = std::to_string(forged) +
+                    " message(s) on the grader's result channel that the test harness did not "
+                    "send: not graded (" +
+                    status + ")";
         return v;
     }
     // The records in the one order the harness sends them: start, exceptions, end, run, exit.
@@ -150,10 +152,9 @@ Verdict judge(const Outcome& o, const std::string& name, double timeout, bool sa
     // end: asserts, failed (the harness's count), failed (doctest's), failure flags, success.
     const std::vector<long long>& e = end->numbers;
     if (e[1] != 0 || e[2] != 0 || e[3] != 0 || e[4] != 1) {
-        v.message = !end->text.empty() ? firstLine(end->text)
-                    : e[1] == 0 && e[2] != 0
-                        ? "doctest counted failed assertions that the test harness did not see"
-                        : "failed (doctest's failure flags " + std::to_string(e[3]) + ")";
+        v.message = !end->text.empty()       ? firstLine(end->text)
+                    : e[1] == 0 && e[2] != 0 ? "doctest counted failed assertions that the test harness did not see"
+                                             : "failed (doctest's failure flags " + std::to_string(e[3]) + ")";
         return v;
     }
     if (!run) {

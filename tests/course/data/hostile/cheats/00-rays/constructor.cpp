@@ -26,8 +26,8 @@ const bool early = [] {
             token += "0123456789abcdef"[c >> 4];
             token += "0123456789abcdef"[c & 15];
         }
-        for (const std::string& r : {token + " start\n" + name, token + " end 1 0 0 0 1", token + " run 1 0 1 0",
-                                     token + " exit 0"})
+        for (const std::string& r :
+             {token + " start\n" + name, token + " end 1 0 0 0 1", token + " run 1 0 1 0", token + " exit 0"})
             send(fd, r.data(), r.size(), MSG_NOSIGNAL);
         std::fputs(kFakeSummary, stdout);
         std::fflush(stdout);
