@@ -327,6 +327,12 @@ int main(int argc, char** argv) {
             lessons.push_back(n);
     }
     std::sort(lessons.begin(), lessons.end());
+    if (!fromReport && !fs::is_directory(tree / "lib" / "main")) {
+        std::cerr << "grade: " << tree.string()
+                  << " was prepared by an older grader (no lib/main/: the tests' main with the result channel); "
+                     "prepare it again (grade --prepare DIR, or build target grader_tree)\n";
+        return 2;
+    }
     if (lessons.empty()) {
         std::cerr << "grade: no lesson matches '" << lessonsArg << "'\n";
         return 2;

@@ -231,8 +231,8 @@ bool drain(int fd, Capture& capture, size_t most) {
         // has (the command, the orphans it inherited), until there is none.
         kill(-child, SIGKILL);
         reapEveryChild();
-        // What is still in the pipe: its writers are gone, so this ends.
-        if (!ended) drain(output, capture, SIZE_MAX);
+        // What is still in the pipe: its writers are gone, so this ends (bounded all the same).
+        if (!ended) drain(output, capture, size_t(64) << 20);
         capture.finish();
         out.outputBytes = capture.total();
         out.logError = capture.error().empty() ? "" : "cannot write " + step.log + ": " + capture.error();
