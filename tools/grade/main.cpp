@@ -132,7 +132,9 @@ size_t checkObjectFiles(const fs::path& tree, const std::string& lesson, const s
     Step dis;
     dis.argv = {findProgram("objdump"), "-d", "-z", "-w"};
     for (const fs::path& o : objects) {
-        parsed.push_back({o.stem().string() + ".cpp", readElf(readText(o))});
+        // "rays.o" (the tree's) or "rays.cpp.o" (CMake's): "rays.cpp"
+        const std::string name = o.stem().extension() == ".cpp" ? o.stem().string() : o.stem().string() + ".cpp";
+        parsed.push_back({name, readElf(readText(o))});
         dis.argv.push_back(fs::absolute(o).string());
     }
     dis.env = {"PATH=/usr/bin:/bin", "LC_ALL=C"};

@@ -152,9 +152,11 @@ Verdict judge(const Outcome& o, const std::string& name, double timeout, bool sa
     // end: asserts, failed (the harness's count), failed (doctest's), failure flags, success.
     const std::vector<long long>& e = end->numbers;
     if (e[1] != 0 || e[2] != 0 || e[3] != 0 || e[4] != 1) {
-        v.message = !end->text.empty()       ? firstLine(end->text)
-                    : e[1] == 0 && e[2] != 0 ? "doctest counted failed assertions that the test harness did not see"
-                                             : "failed (doctest's failure flags " + std::to_string(e[3]) + ")";
+        // The first failed assertion as doctest words it (its first line), else what the counts say.
+        v.message = firstLine(end->text);
+        if (v.message.empty())
+            v.message = e[1] == 0 && e[2] != 0 ? "doctest counted failed assertions that the test harness did not see"
+                                               : "failed (doctest's failure flags " + std::to_string(e[3]) + ")";
         return v;
     }
     if (!run) {
