@@ -58,29 +58,25 @@ void send(const std::string& head, const std::string& text = "") {
     ::send(channel, record.data(), record.size(), MSG_NOSIGNAL);
 }
 
-// doctest's report of a failed assertion: "ERROR: CHECK( expr ) is NOT correct!", its values
-// and the active INFO/CAPTURE contexts, as the console reporter words them.
-// A source file as the test's object names it, without leading "./" and "../" (a build with
-// ccache's base folder compiles with relative paths).
-std::string sourceName(const char* file) {
-    std::string f = file;
-    while (f.rfind("./", 0) == 0 || f.rfind("../", 0) == 0) f.erase(0, f.find('/') + 1);
-    return f;
-}
-
+// A failed assertion as the tests' console reporter words it (doctest_main.cpp): a check that
+// carries a message (CHECK_MESSAGE, INFO) gives its message first, then the check; one without,
+// doctest's "CHECK( expr ) is NOT correct!" and the values it compared.
 std::string describe(const doctest::AssertData& a) {
     std::ostringstream s;
-    s << sourceName(a.m_file) << ":" << a.m_line << ": ERROR: " << doctest::assertString(a.m_at) << "( " << a.m_expr
-      << " ) ";
-    if (a.m_threw && !(a.m_at & doctest::assertType::is_throws_as) && !(a.m_at & doctest::assertType::is_throws))
-        s << "THREW exception: " << a.m_exception.c_str();
-    else s << "is NOT correct!\n  values: " << doctest::assertString(a.m_at) << "( " << a.m_decomp.c_str() << " )";
+    s << sourceName(a.m_file) << ":" << a.m_line << ": ERROR: ";
     const int n = doctest::IReporter::get_num_active_contexts();
     const doctest::IContextScope* const* contexts = doctest::IReporter::get_active_contexts();
     for (int i = 0; i < n; ++i) {
-        s << "\n  logged: ";
+        s << (i == 0 ? "" : "\n  ");
         contexts[i]->stringify(&s);
     }
+    if (n > 0) s << "\n  (";
+    s << doctest::assertString(a.m_at) << "( " << a.m_expr << " ) ";
+    if (a.m_threw && !(a.m_at & doctest::assertType::is_throws_as) && !(a.m_at & doctest::assertType::is_throws))
+        s << "THREW exception: " << a.m_exception.c_str();
+    else if (n > 0) s << "failed";
+    else s << "is NOT correct!\n  values: " << doctest::assertString(a.m_at) << "( " << a.m_decomp.c_str() << " )";
+    if (n > 0) s << ")";
     return s.str();
 }
 
