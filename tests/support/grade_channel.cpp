@@ -58,6 +58,14 @@ void send(const std::string& head, const std::string& text = "") {
     ::send(channel, record.data(), record.size(), MSG_NOSIGNAL);
 }
 
+// A source file as the test's object names it, without leading "./" and "../" (a build with
+// ccache's base folder compiles with relative paths).
+std::string sourceName(const char* file) {
+    std::string f = file;
+    while (f.rfind("./", 0) == 0 || f.rfind("../", 0) == 0) f.erase(0, f.find('/') + 1);
+    return f;
+}
+
 // A failed assertion as the tests' console reporter words it (doctest_main.cpp): a check that
 // carries a message (CHECK_MESSAGE, INFO) gives its message first, then the check; one without,
 // doctest's "CHECK( expr ) is NOT correct!" and the values it compared.
