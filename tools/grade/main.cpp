@@ -134,7 +134,12 @@ size_t checkObjectFiles(const fs::path& tree, const std::string& lesson, const s
     for (const fs::path& o : objects) {
         // "rays.o" (the tree's) or "rays.cpp.o" (CMake's): "rays.cpp"
         const std::string name = o.stem().extension() == ".cpp" ? o.stem().string() : o.stem().string() + ".cpp";
-        parsed.push_back({name, readElf(readText(o))});
+        try {
+            parsed.push_back({name, readElf(readText(o))});
+        } catch (const std::exception& e) {
+            std::cout << lesson << ": " << o.string() << ": " << e.what() << "\n";
+            return 1;
+        }
         dis.argv.push_back(fs::absolute(o).string());
     }
     dis.env = {"PATH=/usr/bin:/bin", "LC_ALL=C"};
