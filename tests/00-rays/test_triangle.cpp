@@ -272,9 +272,10 @@ TEST_CASE("rays: triangles behind the origin are missed and the reversed ray hit
         const Ray up(Vec3(2, 2, 0), Vec3(0, 0, 1));
         const Hit h = intersect(up, nearly);
         if (tally.fail(!h.hit || h.t > 0.0f))
-            FAIL_CHECK("a hit at t = 3.5e-46, below the smallest positive float: expected no hit or a hit with t > 0\n  "
-                       << str(up) << "\n  " << str(nearly) << "\n  got " << str(h)
-                       << " (t = T / det rounds to 0 here: is t itself checked against (0, tMax)?)");
+            FAIL_CHECK(
+                "a hit at t = 3.5e-46, below the smallest positive float: expected no hit or a hit with t > 0\n  "
+                << str(up) << "\n  " << str(nearly) << "\n  got " << str(h)
+                << " (t = T / det rounds to 0 here: is t itself checked against (0, tMax)?)");
     }
     ps::Rng rng(ps::testseed::seed(8));
     for (int i = 0; i < 300; ++i) {

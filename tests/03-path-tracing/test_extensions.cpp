@@ -74,8 +74,8 @@ TEST_CASE(
     struct Case {
         const char* what;
         std::function<ps::Continuations(const ps::WalkVertex&)> rule;
-        int n;        // continuations at every vertex
-        double step;  // beta's factor per bounce
+        int n;                       // continuations at every vertex
+        double step;                 // beta's factor per bounce
         const char* tree = nullptr;  // the bounces expected, if not the full tree of n
     };
     const std::vector<Case> cases = {
