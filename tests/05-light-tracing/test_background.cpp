@@ -16,15 +16,17 @@
 
 using namespace lesson05;
 
-TEST_CASE("light tracing: a floor under the sky alone has radiance albedo times the sky's (open scene, t-test) [1 pt]") {
+TEST_CASE(
+    "light tracing: a floor under the sky alone has radiance albedo times the sky's (open scene, t-test) [1 pt]") {
     // Floor [-1, 1]^2 at y = 0 (albedo 0.5), sky (1, 2, 3), camera 1 above the floor's edge
     // looking at its centre, 16 x 16 pixels: about the lower half of the image is floor.
-    const ps::Scene scene = ps::parseScene("camera eye 0 0.6 -2  target 0 0 0  fov 50  resolution 16 16\n"
-                                           "material floor diffuse albedo 0.5 0.5 0.5\n"
-                                           "quad -1 0 -1  -1 0 1  1 0 1  1 0 -1  material floor\n"
-                                           "background radiance 1 2 3\n"
-                                           "render maxdepth 8\n",
-                                           "a floor under the sky (test_background.cpp)");
+    const ps::Scene scene = ps::parseScene(
+        "camera eye 0 0.6 -2  target 0 0 0  fov 50  resolution 16 16\n"
+        "material floor diffuse albedo 0.5 0.5 0.5\n"
+        "quad -1 0 -1  -1 0 1  1 0 1  1 0 -1  material floor\n"
+        "background radiance 1 2 3\n"
+        "render maxdepth 8\n",
+        "a floor under the sky (test_background.cpp)");
     const std::vector<bool> floor =
         ps::testrender::pixelsWhere(scene, true, [](bool hit, const ps::SurfacePoint&) { return hit; });
     const std::vector<bool> sky =
@@ -51,10 +53,11 @@ TEST_CASE("light tracing: a floor under the sky alone has radiance albedo times 
     const double expected = 0.5 * (1.0 + 2.0 + 3.0) / 3.0;  // a Lb, averaged over the channels
     CHECK_MESSAGE(stats.bad() == 0, "expected 0 NaN or Inf samples, got " << stats.bad());
     const ps::stats::TTestResult t = ps::stats::tTest(w, expected, alpha(), 0.01);
-    CHECK_MESSAGE(t.passed, "lt, a diffuse floor (albedo 0.5) under a sky of radiance (1, 2, 3), nothing else: "
-                            "expected every pixel that sees only the floor to be a Lb, a mean of "
-                                << num(expected) << ", got " << num(t.mean) << " +- " << num(t.stdError) << " (ratio "
-                                << num(t.mean / expected) << ")\n  " << t.report);
+    CHECK_MESSAGE(t.passed,
+                  "lt, a diffuse floor (albedo 0.5) under a sky of radiance (1, 2, 3), nothing else: "
+                  "expected every pixel that sees only the floor to be a Lb, a mean of "
+                      << num(expected) << ", got " << num(t.mean) << " +- " << num(t.stdError) << " (ratio "
+                      << num(t.mean / expected) << ")\n  " << t.report);
     CHECK_MESSAGE(skyLight == 0.0, "the " << nSky << " pixels that see only the sky: expected exactly 0 (the "
                                           << "background has no point to connect to the camera), got R + G + B = "
                                           << skyLight / kIterations << " per iteration");
