@@ -50,6 +50,12 @@ double parsePositive(const std::string& opt, const std::string& s) {
     return v;
 }
 
+TimeClock parseClockOption(const std::string& s) {
+    TimeClock c;
+    if (!parseClock(s, c)) throw UsageError("option --clock must be 'wall' or 'cpu', got '" + s + "'");
+    return c;
+}
+
 namespace {
 namespace fs = std::filesystem;
 

@@ -12,6 +12,7 @@
 #include "vecmath.h"
 #include "numbers.h"
 #include "path_expression.h"
+#include "stopwatch.h"
 
 namespace ps {
 
@@ -87,6 +88,8 @@ constexpr int kMaxThreads = 1024;
 // A floating-point option that must be finite and positive (--time): UsageError
 // "option OPT must be a positive number, got 'S'" for 0, a negative number, nan or inf.
 double parsePositive(const std::string& opt, const std::string& s);
+// --clock: "wall" or "cpu" (framework/stopwatch.h); UsageError for anything else.
+TimeClock parseClockOption(const std::string& s);
 
 // Output paths are checked right after the options are parsed, before a scene is loaded or a
 // sample rendered: a bad path costs nothing and leaves nothing behind. Every command that

@@ -22,6 +22,9 @@ namespace {
 const char* const kUsage = R"(converge options:
   --algos A,B,...    the algorithms to compare (required)
   --time SECONDS     time budget of each algorithm (and seed)
+  --clock C          the clock of --time, --ref-time and every time in the report: wall
+                     (default), or cpu: the CPU time of the process, all threads added up
+                     (fairer on a machine that other jobs share); the report names it
   --spp N            samples per pixel of each algorithm (and seed): equal samples instead
                      of equal time (with --time too: whichever comes first); one is required
   --reference REF    the reference image (.pfm); without it one is rendered first with
@@ -68,6 +71,7 @@ int runConverge(const std::vector<std::string>& args) {
         auto value = [&]() -> std::string { return optionValue(args, i); };
         if (a == "--algos") opt.algos = splitList(value());
         else if (a == "--time") opt.seconds = parsePositive(a, value());
+        else if (a == "--clock") opt.clock = parseClockOption(value());
         else if (a == "--spp") opt.spp = parseAtLeast<int>(a, value(), 1);
         else if (a == "--regions") regionNames = splitList(value());
         else if (a == "--reference") reference = value();
@@ -132,6 +136,7 @@ int runConverge(const std::vector<std::string>& args) {
         auto integrator = makeIntegrator(refAlgo, opt.paths);
         RenderOptions ro;
         ro.seconds = refSeconds > 0.0 ? refSeconds : 10.0 * opt.seconds;
+        ro.clock = opt.clock;
         ro.seed = 1000003;  // independent of the compared runs (seeds 0 .. K-1)
         ro.threads = opt.threads;
         ro.progress = opt.progress;
@@ -151,10 +156,13 @@ int runConverge(const std::vector<std::string>& args) {
         convergencePlotSvg(name + ": relMSE against render time (" + std::to_string(opt.seeds) + " seed(s))", report));
     const std::string table = efficiencyTable(report);
     std::ostringstream budget;
-    if (opt.seconds > 0.0) budget << opt.seconds << " s";
+    if (opt.seconds > 0.0) budget << opt.seconds << (opt.clock == TimeClock::Cpu ? " CPU s" : " s");
     if (opt.spp > 0) budget << (opt.seconds > 0.0 ? " or " : "") << opt.spp << " spp";
     std::ostringstream md;
-    md << "Efficiency on " << name << " at " << budget.str() << " per algorithm (relMSE with eps = 0.01):\n\n" << table;
+    md << "Efficiency on " << name << " at " << budget.str() << " per algorithm (relMSE with eps = 0.01; time in "
+       << clockUnit(opt.clock) << ", " << (opt.threads > 0 ? std::to_string(opt.threads) : std::string("all"))
+       << " thread(s)):\n\n"
+       << table;
     if (!report.leftOut.empty()) md << "\n";
     for (const PointLightPixel& p : report.leftOut) md << "Note: " << describe(p) << ".\n";
     writeText(outDir + "/efficiency.md", md.str());

@@ -20,6 +20,9 @@ const char* const kUsage = R"(render options:
   --spp N            iterations (samples per pixel) to render (default: the scene's)
   --time SECONDS     stop after this much render time instead (with --spp: whichever first);
                      a positive finite number
+  --clock C          the clock of --time and of the time printed: wall (default), or cpu:
+                     the CPU time of the process, all threads added up (fairer on a machine
+                     that other jobs share; with T threads busy, T CPU s per second)
   --maxdepth D       maximum number of bounces, 0 = emission seen directly (default: the scene's)
   --seed S           random seed (default 0); the same seed gives the same image
   --threads T        worker threads, 1 to 1024 (default: all cores); the image does not
@@ -44,6 +47,7 @@ int runRender(const std::vector<std::string>& args) {
     std::string scenePath, algo, out, reference, csvPath, variancePath;
     int spp = 0, threads = 0, maxDepth = -1, shots = 0, elements[2] = {0, 0};
     double seconds = 0.0;
+    TimeClock clock = TimeClock::Wall;
     uint64_t seed = 0;
     bool progress = stderrIsTerminal(), prune = true;
     std::optional<PathExpression> paths;
@@ -54,6 +58,7 @@ int runRender(const std::vector<std::string>& args) {
         if (a == "--algo") algo = value();
         else if (a == "--spp") spp = parseAtLeast<int>(a, value(), 1);
         else if (a == "--time") seconds = parsePositive(a, value());
+        else if (a == "--clock") clock = parseClockOption(value());
         else if (a == "--maxdepth") maxDepth = parseAtLeast<int>(a, value(), 0);
         else if (a == "--seed") seed = parseNumber<uint64_t>(a, value());
         else if (a == "--threads") threads = parseWithin<int>(a, value(), 1, kMaxThreads);
@@ -119,6 +124,7 @@ int runRender(const std::vector<std::string>& args) {
     RenderOptions opt;
     opt.spp = spp;
     opt.seconds = seconds;
+    opt.clock = clock;
     opt.seed = seed;
     opt.threads = threads;
     opt.progress = progress;

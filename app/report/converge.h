@@ -52,6 +52,7 @@ struct ConvergeOptions {
     Regions regions;       // empty: no per-region errors
     int seeds = 1;         // independent runs per algorithm (seeds 0 .. seeds-1), averaged
     int threads = 0;
+    TimeClock clock = TimeClock::Wall;  // the clock of `seconds` and of every time reported
     bool progress = false;
     // Heckbert's expression (--paths, lesson 11): every algorithm renders only the paths it
     // matches (its filtered form: makeIntegrator(algo, paths)); nullptr: every path.
@@ -73,6 +74,7 @@ struct ConvergenceReport {
     std::vector<Image> finalImages;        // per algorithm, seed 0, at the end of the budget
     double referenceVariance = 0.0;        // mean variance of the reference's pixels (0 if unknown)
     std::vector<PointLightPixel> leftOut;  // pixels left out of every error (pointLightsInView)
+    TimeClock clock = TimeClock::Wall;     // the clock of every point's seconds
 };
 
 ConvergenceReport runConvergence(const Scene& scene, const Image& reference, const ConvergeOptions& opt);
