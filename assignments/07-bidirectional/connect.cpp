@@ -29,7 +29,7 @@ Connection connectEmitter(const Scene& scene, const PathVertex* z, int t) {
 
 Connection connectCamera(const Scene& scene, const PathVertex* y, int s, const PathVertex& z0) {
     // TODO(07) Eq. 7.2, 7.4 (t = 1): y_{s-1} joined to the pinhole z0 (its position z0.p(); a
-    //          lens point in lesson 11) with lesson 5's connectToCamera(..., z0.p()):
+    //          camera model's point) with lesson 5's connectToCamera(..., z0.p()):
     //          C* = beta_{s-1} f importance, f = the BSDF from the camera's
     //          direction to y_{s-2}'s, or for s = 1 what the light sends towards the camera
     //          (a point light: its intensity); c.raster where it lands.

@@ -8,7 +8,7 @@ namespace ps {
 
 void cameraSubpath(const Scene& scene, Rng& rng, const Vec2& raster, int maxDepth, Heuristic h, Subpath& path) {
     //! TODO(07) Eq. 7.1, 7.3: z_0 = cameraVertex(scene, camera.samplePoint(rng)) (beta 1, pdfFwd
-    //!          camera.pdfPoint(): 1 for the pinhole, a delta position; lesson 11: a lens point),
+    //!          camera.pdfPoint(): 1 for the pinhole, a delta position; or a camera model's point),
     //!          then lesson 3's cameraWalk from camera.generateRay(raster, z_0's position) with a
     //!          visitor that stores every
     //!          vertex it is shown: a hit as a surfaceVertex, a miss as a backgroundVertex if there

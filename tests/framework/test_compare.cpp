@@ -1,4 +1,4 @@
-// Tests of `pathspace compare`'s numbers and pictures (app/report/compare.h), on images whose
+// Tests of `pathspace compare`'s numbers and pictures (report/compare.h), on images whose
 // answers are worked out by hand: relMSE, the mean difference and its z-score, the per-pixel z,
 // the worst channels in order, NaN left out, the colours of the difference picture.
 #include <doctest/doctest.h>

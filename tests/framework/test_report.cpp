@@ -1,4 +1,4 @@
-// Tests of the comparison report (app/report/converge.h): which pixels see a point light
+// Tests of the comparison report (report/converge.h): which pixels see a point light
 // directly, and that those pixels are left out of every error (lead decision: a path tracer
 // cannot sample a path whose both ends are delta positions, so comparing lt/bpt against pt
 // there would measure that, not noise).
