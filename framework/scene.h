@@ -34,6 +34,13 @@ struct RenderSettings {
     // makes `shots` shooting steps.
     int elements[2] = {8, 8};
     int shots = 256;
+    // Lesson 8's progressive photon mapping (`ppm` only): the first pass's radius in scene units
+    // (0: 0.03 of the scene's bounding radius), the photon paths traced per pass (0: four per
+    // pixel, at least 8192) and the radius reduction's alpha (Eq. 8.13; 0: 2/3). SmallVCM's scenes
+    // set SmallVCM's own (bench/README.md), so that both renderers run the same algorithm.
+    float ppmRadius = 0.0f;
+    int ppmPhotons = 0;
+    float ppmAlpha = 0.0f;
     // Integrators leave out work the capabilities show cannot contribute (Integrator::leftOut);
     // false (`--no-prune`) makes them do all of it, to check that pruning changes nothing.
     bool prune = true;

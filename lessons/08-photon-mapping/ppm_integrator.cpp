@@ -22,20 +22,26 @@ double ppmRadius2(double r1sq, int pass, double alpha) {
 namespace {
 
 // The first pass's radius, as a fraction of the scene's bounding radius, and the photon paths
-// traced per pass: four per pixel, at least kMinPhotons.
+// traced per pass: four per pixel, at least kMinPhotons. A scene may set both, and alpha
+// (`render ppmradius R ppmphotons N ppmalpha A`, scenes/README.md).
 constexpr float kInitialRadius = 0.03f;
 constexpr int kMinPhotons = 8192;
 constexpr uint64_t kPpmSalt = 0x6A09E667F3BCC909ull;
-int photonsPerPass(const Image& out) { return std::max(kMinPhotons, 4 * out.width * out.height); }
+int photonsPerPass(const Scene& scene, const Image& out) {
+    return scene.settings.ppmPhotons > 0 ? scene.settings.ppmPhotons
+                                         : std::max(kMinPhotons, 4 * out.width * out.height);
+}
 
 struct ProgressivePhotonMapper : Integrator {
     void renderIteration(const Scene& scene, uint32_t iteration, uint64_t seed, Image& out,
                          SampleStats& stats) override {
-        const double r1 = double(kInitialRadius) * scene.radius;
-        const float r2 = float(ppmRadius2(r1 * r1, int(iteration) + 1));
-        const int maxDepth = scene.settings.maxDepth;
-        const PhotonMap map =
-            tracePhotonMap(scene, MapKind::Global, photonsPerPass(out), maxDepth, seed ^ kPpmSalt, iteration, stats);
+        const RenderSettings& set = scene.settings;
+        const double r1 = set.ppmRadius > 0.0f ? double(set.ppmRadius) : double(kInitialRadius) * scene.radius;
+        const double alpha = set.ppmAlpha > 0.0f ? double(set.ppmAlpha) : kPpmAlpha;
+        const float r2 = float(ppmRadius2(r1 * r1, int(iteration) + 1, alpha));
+        const int maxDepth = set.maxDepth;
+        const PhotonMap map = tracePhotonMap(scene, MapKind::Global, photonsPerPass(scene, out), maxDepth,
+                                             seed ^ kPpmSalt, iteration, stats);
         renderPixelTasks(seed, iteration, out, stats, false, [&](int pixel, Rng& rng, Task&) {
             const Ray ray = cameraRay(scene.camera, jitteredRaster(pixel, out.width, rng), rng);
             return LiProgressive(scene, ray, rng, map, r2, maxDepth);

@@ -337,6 +337,10 @@ TEST_CASE("scene errors: other values out of their range") {
     expectLine3("render elements 4 257", {"'elements' must be between 1 and 256", "got 4 257"});
     expectLine3("render elements 4", {"'elements' needs 2 value(s)"});
     expectLine3("render shots 0", {"'shots' must be at least 1"});
+    expectLine3("render ppmradius 0", {"'ppmradius' must be a positive number"});
+    expectLine3("render ppmphotons 0", {"'ppmphotons' must be at least 1"});
+    expectLine3("render ppmalpha 1", {"'ppmalpha' must lie between 0 and 1"});
+    expectLine3("render ppmalpha 0", {"'ppmalpha' must lie between 0 and 1"});
 }
 
 TEST_CASE("scene errors: a quad is kept as written (Scene::quads), its two triangles after it") {
@@ -345,7 +349,7 @@ TEST_CASE("scene errors: a quad is kept as written (Scene::quads), its two trian
         "material w diffuse albedo 0.5 0.5 0.5\n"
         "triangle 0 0 0  1 0 0  0 1 0  material w\n"
         "quad 0 0 1  2 0 1  2 1 1  0 1 1  material w\n"
-        "render elements 3 5 shots 7\n",
+        "render elements 3 5 shots 7 ppmradius 0.25 ppmphotons 1000 ppmalpha 0.75\n",
         "quads.scene");
     REQUIRE(s.quads.size() == 1);
     CHECK(s.quads[0].line == 4);
@@ -357,6 +361,9 @@ TEST_CASE("scene errors: a quad is kept as written (Scene::quads), its two trian
     CHECK(s.settings.elements[0] == 3);
     CHECK(s.settings.elements[1] == 5);
     CHECK(s.settings.shots == 7);
+    CHECK(s.settings.ppmRadius == 0.25f);
+    CHECK(s.settings.ppmPhotons == 1000);
+    CHECK(s.settings.ppmAlpha == 0.75f);
 }
 
 TEST_CASE("scene errors: values too large for float light transport") {
