@@ -519,7 +519,7 @@ int main(int argc, char** argv) {
         else if (a == "--res" && i + 1 < argc) opt.res = std::max(16, std::atoi(argv[++i]));
         else if (a == "--tracer" && i + 1 < argc &&
                  (std::string(argv[i + 1]) == "ours" || std::string(argv[i + 1]) == "embree" ||
-                  std::string(argv[i + 1]) == "both"))
+                  std::string(argv[i + 1]) == "both" || std::string(argv[i + 1]) == "avx2"))
             opt.tracer = argv[++i];
         else {
             std::fprintf(stderr, "bvh_bench: unknown or incomplete option '%s'\n", a.c_str());
@@ -592,7 +592,7 @@ int main(int argc, char** argv) {
         "hit %%: rays that hit (shadow: occluded); build: CPU ms of one thread, median of 5 builds\n\n",
         kViews, int(n), opt.cpuTime ? "CPU" : "wall-clock", opt.passes);
     std::printf("%-13s %8s %18s %3s %-10s %6s %9s %9s %18s\n", "scene", "tris", "build ms ours/Emb", "thr", "rays",
-                "hit %", "ours", "Embree", "ratio");
+                "hit %", "ours", opt.tracer == "avx2" ? "baseline" : "Embree", "ratio");
     std::fflush(stdout);
 
     bool ok = true;
@@ -604,8 +604,9 @@ int main(int argc, char** argv) {
         std::vector<AABB> boxes(s.triangles.size());
         for (size_t i = 0; i < boxes.size(); ++i) boxes[i] = s.triangles[i].bounds();
         const bool runOurs = opt.tracer != "embree", checks = opt.tracer == "both";
+        const bool versusBaseline = opt.tracer == "avx2";  // the second column: our baseline copy
 #ifdef PATHSPACE_HAVE_EMBREE
-        const bool runEmbree = opt.tracer != "ours";
+        const bool runEmbree = opt.tracer == "embree" || opt.tracer == "both";
 #endif
         // Builds: CPU time of the process (each build runs on one thread), median of the runs.
         const int buildRuns = opt.quick || !checks ? 1 : 5;
@@ -660,7 +661,10 @@ int main(int argc, char** argv) {
                         const bool oursNow = (k == 0) == (p % 2 == 0);
                         const auto t0 = Clock::now();
                         const double c0 = processCpuSeconds();
-                        if (oursNow && runOurs) traceOurs(s, set, ours);
+                        if (versusBaseline) {
+                            useAvx2Tracing(oursNow);
+                            traceOurs(s, set, oursNow ? ours : theirs);
+                        } else if (oursNow && runOurs) traceOurs(s, set, ours);
 #ifdef PATHSPACE_HAVE_EMBREE
                         else if (!oursNow && runEmbree) embree.trace(set, theirs);
 #endif
@@ -671,6 +675,7 @@ int main(int argc, char** argv) {
                     }
                     if (p >= 0 && !tTheirs.empty() && !tOurs.empty()) ratio.push_back(tTheirs.back() / tOurs.back());
                 }
+                if (versusBaseline) useAvx2Tracing(!std::getenv("PATHSPACE_NO_AVX2"));
                 // What the rays hit (whichever tracer ran; the checks below hold them equal).
                 const std::vector<Hit>& hits = runOurs ? ours : theirs;
                 auto hitFraction = [&](size_t begin, size_t end) {
