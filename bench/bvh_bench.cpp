@@ -203,7 +203,7 @@ std::vector<RaySet> makeRays(const Scene& s, const std::vector<Camera>& views, s
         sets[0].viewEnd.push_back(sets[0].rays.size());
     }
     const Vec3 lo = s.bounds.lo, ext = s.bounds.extent();
-    auto point = [&](Rng& rng) { return lo + ext * Vec3(rng.uniform(), rng.uniform(), rng.uniform()); };
+    auto point = [&](Rng& rng) { return lo + ext * Vec3{rng.uniform(), rng.uniform(), rng.uniform()}; };
     for (size_t i = 0; i < n; ++i) {
         Rng rng = taskRng(kSeedIncoherent, 0, uint32_t(i));
         const Vec3 o = point(rng);

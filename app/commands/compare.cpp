@@ -125,10 +125,19 @@ int runCompare(const CompareOptions& o) {
 
 int runCompareCommand(const std::vector<std::string>& args) { return runCompare(parseCompareOptions(args)); }
 
+Command compareCommand() {
+    Command c;
+    c.name = "compare";
+    c.order = 25;
+    c.synopsis = "compare A B [options]";
+    c.summary = "how image A differs from B: relMSE, mean difference, z-scores, where";
+    c.usage = kUsage;
+    c.run = runCompareCommand;
+    return c;
+}
+
 }  // namespace
 
-PS_REGISTER_COMMAND(compare, 25, "compare A B [options]",
-                    "how image A differs from B: relMSE, mean difference, z-scores, where", kUsage, false,
-                    runCompareCommand);
+PS_REGISTER_COMMAND(compareCommand());
 
 }  // namespace ps

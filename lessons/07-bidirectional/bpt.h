@@ -44,7 +44,7 @@ using Subpath = std::vector<PathVertex>;
 // ---- vertex pdfs (vertex_pdfs.cpp), one function for sampling and for MIS (Eq. 7.3) ----
 
 // Density of choosing the light vertex v itself (Eq. 7.3), from pdfEmission (framework/light.h):
-// P(l) / area for an area light, P(l) for a point light, P(l) * pdfBackgroundDirection() for the
+// P(l) / area for an area light, P(l) for a point light, P(l) * 1 / (4 pi) for the
 // background (solid angle).
 // v.sp.light is the light's index; v may be a camera-path vertex that hit an emitter.
 float pdfLightOrigin(const Scene& scene, const PathVertex& v);
@@ -67,6 +67,20 @@ float pdfLightToward(const Scene& scene, const PathVertex& light, const PathVert
 float pdfScatter(const Scene& scene, const PathVertex* prev, const PathVertex& cur, const PathVertex& next,
                  Transport mode);
 
+// One scattering event: vertex `cur` (on a surface) between its neighbour on the light side and
+// its neighbour on the camera side, f and both its densities in one call (plumbing,
+// techniques.cpp; Eq. 7.2, 7.3, 7.6): what a connection at cur needs for its value and its MIS.
+struct Scattering {
+    Color f = Color(0.0f);          // f_s(light side -> cur -> camera side): evalBSDF(m, n, towards the
+                                    // camera side, towards the light side) (0 at a delta BSDF)
+    float pdfTowardsCamera = 0.0f;  // area density of the camera-side vertex when a light subpath leaves
+                                    // cur: pdfScatter(light side, cur, camera side, Importance)
+    float pdfTowardsLight = 0.0f;   // area density of the light-side vertex when a camera subpath leaves
+                                    // cur: pdfScatter(camera side, cur, light side, Radiance)
+};
+Scattering scatteringAt(const Scene& scene, const PathVertex& lightSide, const PathVertex& cur,
+                        const PathVertex& cameraSide);
+
 // ---- subpaths (light_subpath.cpp, camera_subpath.cpp), Eq. 7.1 ----
 
 // The light subpath: at most maxDepth + 1 vertices (y_0 on a light, then one per bounce): lesson
@@ -74,12 +88,18 @@ float pdfScatter(const Scene& scene, const PathVertex* prev, const PathVertex& c
 // once y_i exists, the flags, and, after each vertex, updateMisSum(path, i, h). Clears path first.
 void lightSubpath(const Scene& scene, Rng& rng, int maxDepth, Heuristic h, Subpath& path);
 
+// What to do once a camera subpath vertex z_i (i >= 1) is stored, with its pdfFwd and misSum
+// (Eq. 7.9; z_{i-2}'s pdfRev known): a later algorithm's work at every camera vertex (merging it
+// with the light vertices nearby, say). path holds z_0 .. z_i. Return false to end the subpath.
+using CameraVertexVisitor = std::function<bool(const Subpath& path)>;
+
 // The camera subpath through raster position `raster`: z_0 the camera point (cameraVertex of
 // camera.samplePoint(rng): the pinhole, or a model's point drawn from rng), then lesson 3's
-// cameraWalk, whose visitor stores one vertex per intersection; at most maxDepth + 2 vertices; a
-// ray that leaves the scene ends it with a vertex at infinity if there is a background. Clears
-// path first.
-void cameraSubpath(const Scene& scene, Rng& rng, const Vec2& raster, int maxDepth, Heuristic h, Subpath& path);
+// cameraWalk, whose visitor stores one vertex per intersection and hands it to `visit` (if set); at
+// most maxDepth + 2 vertices; a ray that leaves the scene ends it with a vertex at infinity if
+// there is a background. Clears path first.
+void cameraSubpath(const Scene& scene, Rng& rng, const Vec2& raster, int maxDepth, Heuristic h, Subpath& path,
+                   const CameraVertexVisitor& visit = nullptr);
 
 // ---- the connection (connect.cpp), Eq. 7.2, 7.4, 7.6 ----
 
@@ -125,12 +145,13 @@ Connection connectCamera(const Scene& scene, const PathVertex* y, int s);
 // pdfLightOrigin and beta = 1 / pdfFwd; c = Le G f. Not valid at a background z_{t-1}.
 Connection connectLight(const Scene& scene, const PathVertex* z, int t, float uLight, const Vec2& uPos);
 
-// s, t >= 2: y_{s-1} and z_{t-1} joined by a shadow ray: c = f G f.
+// s, t >= 2: y_{s-1} and z_{t-1} joined by a shadow ray: c = f G f, both f and the connection's
+// reverse pdfs (rev, Eq. 7.6) from scatteringAt at the two endpoints.
 Connection connectVertices(const Scene& scene, const PathVertex* y, int s, const PathVertex* z, int t);
 
 // Technique (s, t) for the given subpaths (plumbing, techniques.cpp; s <= light.size() except
-// s = 1, t >= 2; t <= camera.size(), t >= 1): the connection of its kind, then, if valid, rev =
-// connectionPdfs. For t = 1 sampledLight is light[0] (the MIS reads y from it whenever s = 1).
+// s = 1, t >= 2; t <= camera.size(), t >= 1): the connection of its kind, then, if valid and the
+// kind did not fill them (s or t < 2), rev = connectionPdfs. For t = 1 sampledLight is light[0] (the MIS reads y from it whenever s = 1).
 Connection connect(const Scene& scene, const Subpath& light, const Subpath& camera, int s, int t, float uLight,
                    const Vec2& uPos);
 
