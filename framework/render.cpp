@@ -101,8 +101,8 @@ std::string summaryLine(const RenderResult& r) {
     const bool cpu = r.clock == TimeClock::Cpu;
     std::snprintf(buf, sizeof buf, "%d spp in %.2f %s (%.2f Mrays%s), %llu NaN, %llu Inf samples", r.iterations,
                   r.seconds, cpu ? "CPU s" : "s", r.seconds > 0 ? double(r.stats.rays) / r.seconds * 1e-6 : 0.0,
-                  cpu ? " per CPU s" : "/s",
-                  static_cast<unsigned long long>(r.stats.nan), static_cast<unsigned long long>(r.stats.inf));
+                  cpu ? " per CPU s" : "/s", static_cast<unsigned long long>(r.stats.nan),
+                  static_cast<unsigned long long>(r.stats.inf));
     return buf;
 }
 

@@ -11,8 +11,8 @@
 namespace ps {
 
 struct RenderOptions {
-    int spp = 0;           // iterations to run (0: none, unless a time budget is given)
-    double seconds = 0.0;  // time budget (0: none); the loop stops at whichever comes first
+    int spp = 0;                        // iterations to run (0: none, unless a time budget is given)
+    double seconds = 0.0;               // time budget (0: none); the loop stops at whichever comes first
     TimeClock clock = TimeClock::Wall;  // the clock of the budget and of every time reported
     uint64_t seed = 0;
     int threads = 0;                   // 0: all cores
@@ -27,7 +27,7 @@ struct RenderOptions {
 struct RenderResult {
     Film film;
     int iterations = 0;
-    double seconds = 0.0;  // time of preprocessing and iterations, without I/O and metrics
+    double seconds = 0.0;               // time of preprocessing and iterations, without I/O and metrics
     TimeClock clock = TimeClock::Wall;  // the clock of seconds (RenderOptions::clock)
     SampleStats stats;
 };

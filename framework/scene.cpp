@@ -249,6 +249,11 @@ SurfacePoint Scene::surfacePoint(uint32_t prim, const Vec3& p) const {
     return sp;
 }
 
+float renderParameter(const RenderSettings& settings, const std::string& name, float fallback) {
+    const auto it = settings.parameters.find(name);
+    return it == settings.parameters.end() ? fallback : it->second;
+}
+
 bool Scene::closestHit(Ray& ray, SurfacePoint& sp) const {
     std::optional<WatertightRay> wr;  // built at the first triangle the ray reaches (many reach none)
     uint32_t hitItem = kNoPrimitive;

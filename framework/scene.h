@@ -1,6 +1,7 @@
 // The scene: shapes, materials, lights, camera, the BVH over the shapes, default settings,
 // and the capabilities recorded at load time (what kinds of light, BSDF and camera it has).
 #pragma once
+#include <map>
 #include <string>
 #include <vector>
 #include "bsdf.h"
@@ -23,6 +24,16 @@ struct Primitive {
 // The most elements radiosity cuts a quad's edge into (RenderSettings::elements).
 constexpr int kMaxElements = 256;
 
+// A number the scene's `render` statement may set for some lesson's algorithm (`render NAME
+// VALUE`), registered by that lesson (Registry<RenderParameter>, keyed by NAME), as camera models
+// are. The loader refuses an unregistered name and a value `check` refuses, naming the line, and
+// keeps the value in RenderSettings::parameters; the algorithm reads it with renderParameter.
+struct RenderParameter {
+    std::string help;  // one line: what it sets, for the loader's list of allowed options
+    // Empty if the value is allowed, else what is wrong with it ("must be a positive number").
+    std::string (*check)(float value) = nullptr;
+};
+
 // Defaults a scene file may set; the command line overrides them.
 struct RenderSettings {
     int spp = 16;
@@ -34,13 +45,9 @@ struct RenderSettings {
     // makes `shots` shooting steps.
     int elements[2] = {8, 8};
     int shots = 256;
-    // Lesson 8's progressive photon mapping (`ppm` only): the first pass's radius in scene units
-    // (0: 0.03 of the scene's bounding radius), the photon paths traced per pass (0: four per
-    // pixel, at least 8192) and the radius reduction's alpha (Eq. 8.13; 0: 2/3). SmallVCM's scenes
-    // set SmallVCM's own (bench/README.md), so that both renderers run the same algorithm.
-    float ppmRadius = 0.0f;
-    int ppmPhotons = 0;
-    float ppmAlpha = 0.0f;
+    // The render parameters the scene sets (`render NAME VALUE` for a registered NAME; see
+    // RenderParameter below), by name.
+    std::map<std::string, float> parameters;
     // Integrators leave out work the capabilities show cannot contribute (Integrator::leftOut);
     // false (`--no-prune`) makes them do all of it, to check that pruning changes nothing.
     bool prune = true;
@@ -48,6 +55,9 @@ struct RenderSettings {
     // non-specular surface it shades as ambient times the albedo. 0: none.
     Color ambient = Color(0.0f);
 };
+
+// The value the scene sets for render parameter `name`, or `fallback` if it sets none.
+float renderParameter(const RenderSettings& settings, const std::string& name, float fallback);
 
 // What a scene has, recorded at load time so integrators can leave out what it does not need.
 struct Capabilities {

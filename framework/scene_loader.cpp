@@ -604,15 +604,10 @@ private:
     }
 
     void render(Statement& st) {
-        st.readOptions({{"spp", 1},
-                        {"maxdepth", 1},
-                        {"algo", 1},
-                        {"ambient", 3},
-                        {"elements", 2},
-                        {"shots", 1},
-                        {"ppmradius", 1},
-                        {"ppmphotons", 1},
-                        {"ppmalpha", 1}});
+        std::map<std::string, int> arity{{"spp", 1},     {"maxdepth", 1}, {"algo", 1},
+                                         {"ambient", 3}, {"elements", 2}, {"shots", 1}};
+        for (const auto& p : Registry<RenderParameter>::sorted()) arity[p.name] = 1;
+        st.readOptions(arity);
         RenderSettings& s = scene_.settings;
         if (st.has("ambient")) s.ambient = checkColor(st, "ambient", st.optVec3("ambient", Color(0.0f)), false);
         if (st.has("elements")) {
@@ -626,13 +621,13 @@ private:
         }
         s.shots = st.optInt("shots", s.shots);
         if (s.shots < 1) st.fail("'shots' must be at least 1");
-        s.ppmRadius = st.optNumber("ppmradius", s.ppmRadius);
-        if (!(s.ppmRadius > 0.0f) && st.has("ppmradius")) st.fail("'ppmradius' must be a positive number");
-        s.ppmPhotons = st.optInt("ppmphotons", s.ppmPhotons);
-        if (s.ppmPhotons < 1 && st.has("ppmphotons")) st.fail("'ppmphotons' must be at least 1");
-        s.ppmAlpha = st.optNumber("ppmalpha", s.ppmAlpha);
-        if (!(s.ppmAlpha > 0.0f && s.ppmAlpha < 1.0f) && st.has("ppmalpha"))
-            st.fail("'ppmalpha' must lie between 0 and 1 (exclusive)");
+        for (const auto& p : Registry<RenderParameter>::sorted()) {
+            if (!st.has(p.name)) continue;
+            const float v = st.optNumber(p.name, 0.0f);
+            const std::string problem = p.value.check ? p.value.check(v) : std::string();
+            if (!problem.empty()) st.fail("'" + p.name + "' " + problem + ", got " + st.options.at(p.name)[0]);
+            s.parameters[p.name] = v;
+        }
         s.spp = st.optInt("spp", s.spp);
         s.maxDepth = st.optInt("maxdepth", s.maxDepth);
         s.algo = st.optWord("algo", s.algo);

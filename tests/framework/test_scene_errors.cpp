@@ -14,6 +14,14 @@
 using namespace ps;
 
 namespace {
+// A render parameter as a lesson registers one (lesson 8's ppm radius schedule, for instance).
+[[maybe_unused]] const bool testParameter = Registry<RenderParameter>::add(
+    "testfraction", {"a fraction for the loader's tests", [](float v) {
+                         return v > 0.0f && v < 1.0f ? std::string() : std::string("must lie between 0 and 1");
+                     }});
+}  // namespace
+
+namespace {
 
 // Lines 1 and 2 of most test scenes; the line under test is line 3.
 const std::string kHead =
@@ -337,10 +345,11 @@ TEST_CASE("scene errors: other values out of their range") {
     expectLine3("render elements 4 257", {"'elements' must be between 1 and 256", "got 4 257"});
     expectLine3("render elements 4", {"'elements' needs 2 value(s)"});
     expectLine3("render shots 0", {"'shots' must be at least 1"});
-    expectLine3("render ppmradius 0", {"'ppmradius' must be a positive number"});
-    expectLine3("render ppmphotons 0", {"'ppmphotons' must be at least 1"});
-    expectLine3("render ppmalpha 1", {"'ppmalpha' must lie between 0 and 1"});
-    expectLine3("render ppmalpha 0", {"'ppmalpha' must lie between 0 and 1"});
+    // A render parameter some lesson registers (this test registers its own, testfraction):
+    // the loader checks its value, and refuses a name no lesson registered.
+    expectLine3("render testfraction 1", {"'testfraction' must lie between 0 and 1", "got 1"});
+    expectLine3("render testfraction", {"'testfraction' needs 1 value(s)"});
+    expectLine3("render testfractoin 0.5", {"unknown option 'testfractoin' for 'render'", "testfraction"});
 }
 
 TEST_CASE("scene errors: a quad is kept as written (Scene::quads), its two triangles after it") {
@@ -349,7 +358,7 @@ TEST_CASE("scene errors: a quad is kept as written (Scene::quads), its two trian
         "material w diffuse albedo 0.5 0.5 0.5\n"
         "triangle 0 0 0  1 0 0  0 1 0  material w\n"
         "quad 0 0 1  2 0 1  2 1 1  0 1 1  material w\n"
-        "render elements 3 5 shots 7 ppmradius 0.25 ppmphotons 1000 ppmalpha 0.75\n",
+        "render elements 3 5 shots 7 testfraction 0.75\n",
         "quads.scene");
     REQUIRE(s.quads.size() == 1);
     CHECK(s.quads[0].line == 4);
@@ -361,9 +370,8 @@ TEST_CASE("scene errors: a quad is kept as written (Scene::quads), its two trian
     CHECK(s.settings.elements[0] == 3);
     CHECK(s.settings.elements[1] == 5);
     CHECK(s.settings.shots == 7);
-    CHECK(s.settings.ppmRadius == 0.25f);
-    CHECK(s.settings.ppmPhotons == 1000);
-    CHECK(s.settings.ppmAlpha == 0.75f);
+    CHECK(renderParameter(s.settings, "testfraction", 0.0f) == 0.75f);
+    CHECK(renderParameter(s.settings, "spp", -1.0f) == -1.0f);  // not a render parameter
 }
 
 TEST_CASE("scene errors: values too large for float light transport") {
