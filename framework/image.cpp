@@ -1,9 +1,11 @@
 #include "image.h"
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <iterator>
 #include <fstream>
 #include "errors.h"
+#include "file_writer.h"
 
 #define STB_IMAGE_WRITE_IMPLEMENTATION
 #include <stb_image_write.h>
@@ -41,13 +43,12 @@ uint64_t bytesLeft(std::ifstream& f) {
 }  // namespace
 
 void writePFM(const std::string& path, const Image& img) {
-    std::ofstream f(path, std::ios::binary);
-    if (!f) throw InputError(path, 0, "cannot open for writing");
+    FileWriter f(path);
     // Header: "PF" (colour), size, scale < 0 means little-endian. Rows go bottom to top.
-    f << "PF\n" << img.width << " " << img.height << "\n" << (littleEndianHost() ? "-1.0" : "1.0") << "\n";
-    for (int y = img.height - 1; y >= 0; --y)
-        f.write(reinterpret_cast<const char*>(&img.at(0, y)), sizeof(Color) * size_t(img.width));
-    if (!f) throw InputError(path, 0, "write failed");
+    f.write("PF\n" + std::to_string(img.width) + " " + std::to_string(img.height) + "\n" +
+            (littleEndianHost() ? "-1.0" : "1.0") + "\n");
+    for (int y = img.height - 1; y >= 0; --y) f.write(&img.at(0, y), sizeof(Color) * size_t(img.width));
+    f.close();
 }
 
 Image readPFM(const std::string& path) {
@@ -86,9 +87,33 @@ Image readPFM(const std::string& path) {
     return img;
 }
 
+namespace {
+// stb's writers hand their bytes to a callback (a PNG at once, a .hdr a scanline at a time):
+// this one writes them through a FileWriter and keeps the first failure, which the caller throws
+// once stb has returned (an exception must not cross stb's C code).
+struct StbTarget {
+    FileWriter file;
+    std::string error;
+    explicit StbTarget(const std::string& path) : file(path) {}
+    static void write(void* context, void* data, int size) {
+        StbTarget& t = *static_cast<StbTarget*>(context);
+        if (!t.error.empty() || size <= 0) return;
+        try {
+            t.file.write(data, size_t(size));
+        } catch (const InputError& e) { t.error = e.what(); }
+    }
+    void finish(bool encoded, const std::string& what) {
+        if (!error.empty()) throw InputError(error);
+        if (!encoded) throw InputError(file.path(), 0, "cannot encode the " + what + " image");
+        file.close();
+    }
+};
+}  // namespace
+
 void writeHDR(const std::string& path, const Image& img) {
-    if (!stbi_write_hdr(path.c_str(), img.width, img.height, 3, &img.pixels[0].r))
-        throw InputError(path, 0, "cannot write .hdr file");
+    StbTarget target(path);
+    const int ok = stbi_write_hdr_to_func(&StbTarget::write, &target, img.width, img.height, 3, &img.pixels[0].r);
+    target.finish(ok != 0, ".hdr");
 }
 
 // Radiance .hdr (RGBE), our own reader: the header lines up to an empty line, the size line
@@ -178,13 +203,16 @@ void writePNG(const std::string& path, const Image& img, float exposure) {
             v = v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f;  // sRGB
             bytes[3 * i + k] = static_cast<unsigned char>(std::lround(v * 255.0f));
         }
-    if (!stbi_write_png(path.c_str(), img.width, img.height, 3, bytes.data(), img.width * 3))
-        throw InputError(path, 0, "cannot write PNG file");
+    StbTarget target(path);
+    const int ok =
+        stbi_write_png_to_func(&StbTarget::write, &target, img.width, img.height, 3, bytes.data(), img.width * 3);
+    target.finish(ok != 0, "PNG");
 }
 
 // OpenEXR through tinyexr (Debian libtinyexr-dev): RGB, 32-bit float per channel (the pixels
-// exactly, like PFM), ZIP-compressed; opens in tev and the other HDR viewers. Written with
-// SaveEXRImageToFile and header arrays we own (the simpler SaveEXR of tinyexr 1.0.1 leaks its
+// exactly, like PFM), ZIP-compressed; opens in tev and the other HDR viewers. Encoded in memory
+// by SaveEXRImageToMemory (its file writer checks neither fwrite nor fclose) and written through
+// FileWriter, with header arrays we own (the simpler SaveEXR of tinyexr 1.0.1 leaks its
 // channel list on every call). Channels in the order viewers expect: B, G, R.
 void writeEXR(const std::string& path, const Image& img) {
     const size_t n = size_t(img.width) * img.height;
@@ -210,12 +238,24 @@ void writeEXR(const std::string& path, const Image& img) {
     header.pixel_types = pixelTypes;
     header.requested_pixel_types = requested;
     header.compression_type = TINYEXR_COMPRESSIONTYPE_ZIP;
+    FileWriter file(path);
     const char* err = nullptr;
-    if (SaveEXRImageToFile(&image, &header, path.c_str(), &err) != TINYEXR_SUCCESS) {
+    unsigned char* bytes = nullptr;
+    const size_t size = SaveEXRImageToMemory(&image, &header, &bytes, &err);
+    if (size == 0 || !bytes) {
         const std::string why = err ? err : "unknown error";
         if (err) FreeEXRErrorMessage(err);
-        throw InputError(path, 0, "cannot write EXR file (" + why + ")");
+        std::free(bytes);
+        throw InputError(path, 0, "cannot encode the EXR image (" + why + ")");
     }
+    try {
+        file.write(bytes, size);
+    } catch (...) {
+        std::free(bytes);
+        throw;
+    }
+    std::free(bytes);
+    file.close();
 }
 
 const std::vector<std::string>& imageExtensions() {

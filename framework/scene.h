@@ -70,6 +70,9 @@ struct Quad {
 class Scene {
 public:
     std::string path;  // the scene file, for messages
+    // The files it was read from: the scene file (loadScene), then its meshes and their material
+    // libraries, in the order named. The program's commands never write over any of them.
+    std::vector<std::string> inputFiles;
     Camera camera;
     RenderSettings settings;
     std::vector<Material> materials;

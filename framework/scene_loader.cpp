@@ -417,7 +417,8 @@ private:
         const std::string meshOf = " (mesh of " + path_ + ":" + std::to_string(st.line) + ")";
         // Our own pass first: tinyobjloader reads malformed numbers as 0 and drops short faces
         // without a word; this reports them, and gives each face its line for later messages.
-        const std::vector<int> faceLines = scanObj(objPath, meshOf);
+        scene_.inputFiles.push_back(objPath);
+        const std::vector<int> faceLines = scanObj(objPath, meshOf, scene_.inputFiles);
 
         tinyobj::attrib_t attrib;
         std::vector<tinyobj::shape_t> shapes;
@@ -503,7 +504,9 @@ private:
 
     // Checks what tinyobjloader lets pass (a 'v' line's numbers, a face's vertex count and
     // indices) and returns the line numbers of the OBJ's faces, in order, for later messages.
-    static std::vector<int> scanObj(const std::string& objPath, const std::string& meshOf) {
+    // The material libraries it names are added to `files`.
+    static std::vector<int> scanObj(const std::string& objPath, const std::string& meshOf,
+                                    std::vector<std::string>& files) {
         std::vector<int> lines;
         std::ifstream in(objPath);
         std::string s;
@@ -520,8 +523,10 @@ private:
                         fail("malformed or non-finite vertex coordinate '" + tok[k] + "'");
                 }
             } else if (tok[0] == "mtllib") {
-                for (size_t k = 1; k < tok.size(); ++k)
-                    scanMtl(folderOf(objPath) + tok[k], " (material library of " + objPath + ")" + meshOf);
+                for (size_t k = 1; k < tok.size(); ++k) {
+                    files.push_back(folderOf(objPath) + tok[k]);
+                    scanMtl(files.back(), " (material library of " + objPath + ")" + meshOf);
+                }
             } else if (tok[0] == "f") {
                 if (tok.size() < 4)
                     fail("face with " + std::to_string(tok.size() - 1) + " vertices (a face needs at least 3)");
@@ -628,6 +633,7 @@ private:
 Scene parseScene(const std::string& text, const std::string& path) {
     Scene scene;
     scene.path = path;
+    scene.inputFiles = {path};
     Loader(scene, path).run(text);
     scene.finalize();
     return scene;

@@ -3,12 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <optional>
 #include <sstream>
 #include "command.h"
 #include "errors.h"
+#include "file_writer.h"
 #include "image.h"
 #include "integrator.h"
 #include "render.h"
@@ -43,15 +43,6 @@ const char* const kUsage = R"(converge options:
 A pixel in which a point light is seen directly is left out of every algorithm's error (a path
 tracer cannot sample that path: both ends are delta positions); the report says which.
 )";
-
-// The whole of text into path, else InputError (a full disk must not pass silently).
-void writeText(const std::string& path, const std::string& text) {
-    std::ofstream f(path, std::ios::binary);
-    if (!f) throw InputError(path, 0, "cannot open for writing");
-    f << text;
-    f.close();
-    if (!f) throw InputError(path, 0, "write failed");
-}
 
 int runConverge(const std::vector<std::string>& args) {
     std::string scenePath, reference, refAlgo, outDir;
@@ -103,8 +94,15 @@ int runConverge(const std::vector<std::string>& args) {
                                       "equal-time.pfm"};
     if (reference.empty()) files.insert(files.end(), {"reference.pfm", "reference-variance.pfm"});
     if (!regionNames.empty()) files.push_back("regions.md");
-    checkOutputFolder("--out", outDir, files);
+    std::vector<InputFile> inputs = {{"the scene file", scenePath, ""}};
+    if (!reference.empty()) inputs.push_back({"the reference image", reference, "--reference"});
+    checkOutputFolder("--out", outDir, files, inputs);
     Scene scene = loadScene(scenePath);
+    {
+        std::vector<OutputFile> outputs;
+        for (const std::string& f : files) outputs.push_back({"--out", outDir + "/" + f, {}});
+        checkNotInputs(outputs, sceneInputs(scene));  // its meshes and material libraries
+    }
     if (maxDepth >= 0) scene.settings.maxDepth = maxDepth;
     if (!regionNames.empty()) {
         try {
@@ -145,8 +143,8 @@ int runConverge(const std::vector<std::string>& args) {
     }
 
     const ConvergenceReport report = runConvergence(scene, ref, opt);
-    writeText(outDir + "/convergence.csv", convergenceCsv(name, report));
-    writeText(
+    writeFile(outDir + "/convergence.csv", convergenceCsv(name, report));
+    writeFile(
         outDir + "/convergence.svg",
         convergencePlotSvg(name + ": relMSE against render time (" + std::to_string(opt.seeds) + " seed(s))", report));
     const std::string table = efficiencyTable(report);
@@ -157,7 +155,7 @@ int runConverge(const std::vector<std::string>& args) {
     md << "Efficiency on " << name << " at " << budget.str() << " per algorithm (relMSE with eps = 0.01):\n\n" << table;
     if (!report.leftOut.empty()) md << "\n";
     for (const PointLightPixel& p : report.leftOut) md << "Note: " << describe(p) << ".\n";
-    writeText(outDir + "/efficiency.md", md.str());
+    writeFile(outDir + "/efficiency.md", md.str());
     std::vector<Image> images = report.finalImages;
     images.push_back(ref);
     // The PNG says what each image is (algorithm and samples per pixel at the end of the budget,
@@ -175,7 +173,7 @@ int runConverge(const std::vector<std::string>& args) {
     std::cout << table;
     if (!regionNames.empty()) {
         const std::string regions = regionTable(report, opt.regions);
-        writeText(outDir + "/regions.md", "relMSE (eps = 0.01) of each region of " + name +
+        writeFile(outDir + "/regions.md", "relMSE (eps = 0.01) of each region of " + name +
                                               " (the pixels that see each material) at the end of the run:\n\n" +
                                               regions);
         std::cout << "\n" << regions;

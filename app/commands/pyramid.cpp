@@ -65,8 +65,9 @@ int runPyramid(const std::vector<std::string>& args) {
             outputs.push_back({"--out", name + ".pfm", {".pfm"}});
             outputs.push_back({"--out", name + "-weighted.pfm", {".pfm"}});
         }
-    checkOutputFiles(outputs);
+    checkOutputFiles(outputs, {{"the scene file", scenePath, ""}});
     Scene scene = loadScene(scenePath);
+    checkNotInputs(outputs, sceneInputs(scene));  // its meshes and material libraries
     scene.settings.prune = prune;
     if (spp == 0) spp = scene.settings.spp;
     BptOptions opt;

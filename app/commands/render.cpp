@@ -1,12 +1,12 @@
 // pathspace render SCENE [options]: one image with one integrator, progressively (framework/render.h).
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <iostream>
 #include <memory>
 #include <optional>
 #include "command.h"
 #include "errors.h"
+#include "file_writer.h"
 #include "image.h"
 #include "integrator.h"
 #include "render.h"
@@ -90,9 +90,12 @@ int runRender(const std::vector<std::string>& args) {
         if (csvPath.empty()) csvPath = stem(out) + ".csv";
         outputs.push_back({"--csv", csvPath, {}});
     }
-    checkOutputFiles(outputs);
+    std::vector<InputFile> inputs = {{"the scene file", scenePath, ""}};
+    if (!reference.empty()) inputs.push_back({"the reference image", reference, "--reference"});
+    checkOutputFiles(outputs, inputs);
 
     Scene scene = loadScene(scenePath);
+    checkNotInputs(outputs, sceneInputs(scene));  // its meshes and material libraries
     if (maxDepth >= 0) scene.settings.maxDepth = maxDepth;
     scene.settings.prune = prune;
     if (ambient) scene.settings.ambient = *ambient;
@@ -115,7 +118,7 @@ int runRender(const std::vector<std::string>& args) {
     checkCamera(scene, *integrator);  // a thin lens it cannot render: one error line, before anything else
 
     Image ref;
-    std::ofstream csv;
+    std::unique_ptr<FileStream> csv;  // the error log, written while the render runs
     RenderOptions opt;
     opt.spp = spp;
     opt.seconds = seconds;
@@ -129,10 +132,9 @@ int runRender(const std::vector<std::string>& args) {
                              "reference is " + std::to_string(ref.width) + "x" + std::to_string(ref.height) +
                                  " but the scene renders " + std::to_string(scene.camera.width()) + "x" +
                                  std::to_string(scene.camera.height()));
-        csv.open(csvPath);
-        if (!csv) throw InputError(csvPath, 0, "cannot open for writing");
+        csv = std::make_unique<FileStream>(csvPath);
         opt.reference = &ref;
-        opt.csv = &csv;
+        opt.csv = csv.get();
     }
     std::cerr << "pathspace: " << scenePath << " (" << scene.caps.describe() << "), algo " << algo
               << (paths ? ", paths '" + paths->text() + "'" : std::string()) << "\n";
@@ -150,7 +152,10 @@ int runRender(const std::vector<std::string>& args) {
         writePFM(variancePath, res.film.varianceOfMean());
         written += ", " + variancePath;
     }
-    if (opt.csv) written += ", " + csvPath;
+    if (csv) {
+        csv->close();
+        written += ", " + csvPath;
+    }
     std::cout << "pathspace: " << summaryLine(res) << "; wrote " << written << "\n";
     for (const std::string& line : integrator->report()) std::cout << "pathspace: " << algo << ": " << line << "\n";
     if (res.stats.bad() > 0)
