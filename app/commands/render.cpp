@@ -126,12 +126,7 @@ int runRender(const std::vector<std::string>& args) {
     opt.threads = threads;
     opt.progress = progress;
     if (!reference.empty()) {
-        ref = readImage(reference);
-        if (ref.width != scene.camera.width() || ref.height != scene.camera.height())
-            throw InputError(reference, 0,
-                             "reference is " + std::to_string(ref.width) + "x" + std::to_string(ref.height) +
-                                 " but the scene renders " + std::to_string(scene.camera.width()) + "x" +
-                                 std::to_string(scene.camera.height()));
+        ref = readImage(reference, scene.camera.width(), scene.camera.height());  // the size before the pixels
         csv = std::make_unique<FileStream>(csvPath);
         opt.reference = &ref;
         opt.csv = csv.get();

@@ -129,6 +129,22 @@ TEST_CASE("film: EXR output holds the pixels exactly (32-bit float RGB, read bac
                          doctest::Contains("/nonexistent-folder/x.exr: cannot open for writing"), InputError);
 }
 
+TEST_CASE("film: a reader given the expected size refuses another one from the header, before the pixels") {
+    // A reference is read with the size of the render it is compared with: a file of another
+    // size is refused before its pixels are allocated or decoded (issue 31: a 50 MB run-length
+    // .hdr described 9.4 GB of pixels, all decoded before the size was compared).
+    const Image img(3, 2, Color(0.25f));
+    for (const char* ext : {".pfm", ".hdr"}) {
+        const std::string path = tempPath(std::string("sized") + ext);
+        writeImage(path, img);
+        CHECK(readImage(path, 3, 2).width == 3);
+        CHECK_THROWS_WITH_AS(readImage(path, 2, 3), doctest::Contains("the image is 3x2 pixels, expected 2x3"),
+                             InputError);
+        CHECK(readImage(path).height == 2);  // without an expected size: any
+        fs::remove(path);
+    }
+}
+
 TEST_CASE("film: every writer reports a full device, naming the file (checked to the close)") {
     // /dev/full takes no byte: every write fails with ENOSPC. A small image sits in the stream's
     // buffer until the close, so only a check of the flush and the close sees it (stb's and
