@@ -244,6 +244,7 @@ private:
         if (lens > 0.0f && !(std::isnormal(kPi * lens * lens) && std::isnormal(1.0f / (kPi * lens * lens))))
             st.fail("'lens' radius " + st.options.at("lens")[0] +
                     ": pi r^2 or its inverse leaves float's normal range (scale the scene's units)");
+        if (lens > 0.0f) checkLensRadius(st, eye, lens, fov, w, h);
         if (st.has("focus") && !st.has("lens"))
             st.fail("'focus' without 'lens RADIUS': a pinhole is sharp at every distance");
         const float focus = st.optNumber("focus", glm::length(target - eye));
@@ -252,6 +253,33 @@ private:
         scene_.camera = Camera(eye, target, up, fov, w, h, lens, focus);
         scene_.camera.line = st.line;
         haveCamera_ = true;
+    }
+
+    // A lens must be resolvable where it is and its importance finite with room to spare (issue
+    // 31: 'lens 2e-19' was accepted; light tracing then gave NaN and Inf, bpt a wrong image):
+    // - wider than 16 float steps of the eye's coordinates, as a sphere's radius must be: a
+    //   narrower lens's points round to the eye and its density 1 / (pi r^2) is noise;
+    // - a pixel's importance through it at the image's corner, w h W_e = w h / (pi r^2 A cos^4)
+    //   (Eq. 11.14; A the image plane's area at distance 1), below 2^64: float's range is 2^128,
+    //   and the rest is the path's (its throughput, geometry terms and pdfs multiply it).
+    static void checkLensRadius(Statement& st, const Vec3& eye, float r, float fov, int w, int h) {
+        const std::string given = st.options.at("lens")[0];
+        const float at = maxAbsComponent(eye);
+        const float step = std::nextafter(at, kInf) - at;
+        if (r < 16.0f * step)
+            st.fail("'lens' radius " + given + " is below 16 float steps (" + std::to_string(step) +
+                    ") of the eye's coordinates: float cannot resolve such a lens there (it is a pinhole: leave "
+                    "'lens' out, or scale the scene)");
+        const double ty = std::tan(0.5 * double(fov) * double(kPi) / 180.0), tx = ty * w / h;
+        const double corner = 1.0 + tx * tx + ty * ty;  // 1 / cos^2 at the image's corner
+        const double importance = double(w) * h * corner * corner / (double(kPi) * r * r * 4.0 * tx * ty);
+        if (!(importance < 0x1p64)) {
+            char value[32];
+            std::snprintf(value, sizeof value, "%.3g", importance);
+            st.fail("'lens' radius " + given +
+                    ": a pixel's importance through so small a lens, w h / (pi r^2 A cos^4) = " + value +
+                    ", is beyond 2^64, where float products of transport overflow (scale the scene up)");
+        }
     }
 
     void material(Statement& st) {

@@ -253,6 +253,19 @@ TEST_CASE("scene errors: a bad thin lens (lens RADIUS focus DISTANCE)") {
     camera("lens 0.1 focus nan", {"'nan'", "'focus'", "not a finite number"});
     camera("focus 2", {"'focus' without 'lens RADIUS'"});
     camera("lens 0.1 0.2", {"'0.2'"});
+    // Issue 31: 'lens 2e-19' passed the normal-range test (pi r^2 = 1.3e-37) and light tracing gave
+    // NaN. Refused as a sphere that small is: below 16 float steps of the eye's coordinates (here
+    // 5: a step of 4.8e-7) ...
+    camera("lens 2e-19", {"'lens' radius 2e-19 is below 16 float steps", "eye's coordinates"});
+    camera("lens 7e-6", {"'lens' radius 7e-6 is below 16 float steps"});
+    // ... and, at the origin, where float steps are tiny, by the pixel's importance through it.
+    const auto atOrigin = [](const std::string& radius) {
+        return "camera eye 0 0 0  target 0 0 1  fov 40  resolution 8 8  lens " + radius + "\n";
+    };
+    checkMessage(errorOf(atOrigin("2e-19")), {"'lens' radius 2e-19: a pixel's importance", "beyond 2^64"});
+    checkMessage(errorOf(atOrigin("1e-9")), {"'lens' radius 1e-9: a pixel's importance"});
+    CHECK_NOTHROW(parseScene(atOrigin("1e-8"), "t.scene"));
+    CHECK_NOTHROW(parseScene("camera eye 0 0 -5  target 0 0 0  fov 40  resolution 8 8  lens 8e-6\n", "t.scene"));
     // Accepted: radius 0 (the pinhole), focus defaulting to the target's distance.
     const Scene pin = parseScene("camera eye 0 0 -5  target 0 0 0  fov 40  resolution 8 8  lens 0\n", "t.scene");
     CHECK(pin.camera.isPinhole());
