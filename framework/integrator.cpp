@@ -7,6 +7,13 @@
 
 namespace ps {
 
+void Integrator::setDeadline(double secondsFromNow) {
+    using namespace std::chrono;
+    hasDeadline_ = secondsFromNow > 0.0 && secondsFromNow < 1e9;  // also no NaN (a year is 3e7 s)
+    if (hasDeadline_)
+        deadline_ = steady_clock::now() + duration_cast<steady_clock::duration>(duration<double>(secondsFromNow));
+}
+
 void PixelIntegrator::renderIteration(const Scene& scene, uint32_t iteration, uint64_t seed, Image& out,
                                       SampleStats& stats) {
     renderPixelTasks(seed, iteration, out, stats, false, [&](int pixel, Rng& rng, Task&) {

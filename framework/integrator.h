@@ -1,6 +1,7 @@
 // Integrators are progressive: one iteration renders one sample per pixel (or one batch of
 // light paths) into an image of its own; the film averages the iterations.
 #pragma once
+#include <chrono>
 #include <memory>
 #include <string>
 #include <vector>
@@ -51,6 +52,20 @@ public:
     // integrator says so: PixelIntegrator does (the framework's pixel loop makes lens rays).
     virtual bool rendersThinLens() const { return false; }
     std::string name;  // the algorithm's name (makeIntegrator sets it), for messages
+
+    // The render loop's time budget (--time). render() sets the deadline before each iteration,
+    // or none without a budget. An integrator whose one iteration can outlast the budget (lesson
+    // 11's radiosity: hundreds of shooting steps, each a row of up to a million form factors)
+    // asks timeIsUp() between pieces of its work and ends the iteration early, with an image
+    // that is a valid estimate. Without a deadline every iteration is whole, and a function of
+    // (scene, iteration, seed) as renderIteration says; with one, a cut iteration depends on
+    // the time, as the number of iterations of a timed render does.
+    bool timeIsUp() const { return hasDeadline_ && std::chrono::steady_clock::now() >= deadline_; }
+    void setDeadline(double secondsFromNow);  // a budget that is not positive and finite: none
+
+private:
+    bool hasDeadline_ = false;
+    std::chrono::steady_clock::time_point deadline_;
 };
 
 // An integrator that estimates the radiance along one camera ray per pixel per iteration.
