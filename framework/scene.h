@@ -119,11 +119,12 @@ public:
     Ray spawnRayTo(const SurfacePoint& sp, const SurfacePoint& q) const;
     // A shadow ray from sp to a point not on a surface (a point light, the pinhole).
     Ray spawnRayTo(const SurfacePoint& sp, const Vec3& q) const;
-    // All three treat a point light that lies on a surface (Light::surfaceScale > 0) as a point
-    // of that surface: as origin (sp.light is the light) and as target (q is its position), the
-    // ray is offset off the surface to its own side, so it never hits that surface at t ~ 0
-    // (float rounding makes the watertight test's t of an origin in a triangle's plane a
-    // random +-ulps, which would scatter or block the light at its own position).
+    // All three treat a point light that lies on surfaces (Light::surfaceScale > 0) as a point
+    // in each of their planes: as origin (sp.light is the light) and as target (q is its
+    // position), the ray's end is offset off every one of those planes to the side the ray goes
+    // to (lightRayPoint), so it never hits them at t ~ 0 (float rounding makes the watertight
+    // test's t of an origin in a triangle's plane a random +-ulps, which would scatter or block
+    // the light at its own position).
     std::vector<int> surfacePointLights;  // indices of such lights (finalize)
 
     // Light index for u in [0,1) and its probability.
@@ -153,8 +154,8 @@ private:
     bool anyHit(const Ray& ray) const;
     bool closestHitAvx2(Ray& ray, SurfacePoint& sp) const;
     bool anyHitAvx2(const Ray& ray) const;
-    // sp itself, or for a point light lying on a surface the point rays leave it from.
-    const SurfacePoint& rayEnd(const SurfacePoint& sp, SurfacePoint& storage) const;
+    // The light sp stands for if it is a point light lying on a surface (surfaceScale > 0), else nullptr.
+    const Light* surfaceLight(const SurfacePoint& sp) const;
     void findSurfacePointLights();
 };
 
