@@ -214,8 +214,11 @@ private:
 
     void camera(Statement& st) {
         if (haveCamera_) st.fail("a second 'camera': a scene has one camera");
-        st.readOptions(
-            {{"eye", 3}, {"target", 3}, {"up", 3}, {"fov", 1}, {"resolution", 2}, {"lens", 1}, {"focus", 1}});
+        // The pinhole's keywords, and those of every registered camera model (camera.h).
+        std::map<std::string, int> arity = {{"eye", 3}, {"target", 3}, {"up", 3}, {"fov", 1}, {"resolution", 2}};
+        for (const auto& model : Registry<CameraModelType>::inOrder())
+            for (const auto& [key, n] : model.value.keywords) arity[key] = n;
+        st.readOptions(arity);
         for (const char* key : {"eye", "target", "fov", "resolution"}) st.require(key);
         const Vec3 eye = st.optVec3("eye", Vec3()), target = st.optVec3("target", Vec3());
         const Vec3 up = st.optVec3("up", Vec3(0, 1, 0));
@@ -237,49 +240,25 @@ private:
         const Vec3 f = glm::normalize(target - eye);
         if (!(glm::length(glm::cross(f, up)) > 1e-6f * glm::length(up)))
             st.fail("'up' is parallel to the view direction");
-        // The thin lens (lesson 11): radius 0 is the pinhole; the plane of focus defaults to the
-        // target's distance. pi r^2 and its inverse must be normal floats (W_e divides by it).
-        const float lens = st.optNumber("lens", 0.0f);
-        if (lens < 0.0f) st.fail("'lens' (the lens radius) must not be negative, got " + st.options.at("lens")[0]);
-        if (lens > 0.0f && !(std::isnormal(kPi * lens * lens) && std::isnormal(1.0f / (kPi * lens * lens))))
-            st.fail("'lens' radius " + st.options.at("lens")[0] +
-                    ": pi r^2 or its inverse leaves float's normal range (scale the scene's units)");
-        if (lens > 0.0f) checkLensRadius(st, eye, lens, fov, w, h);
-        if (st.has("focus") && !st.has("lens"))
-            st.fail("'focus' without 'lens RADIUS': a pinhole is sharp at every distance");
-        const float focus = st.optNumber("focus", glm::length(target - eye));
-        if (!(focus > 0.0f && std::isfinite(focus)))
-            st.fail("'focus' (the distance of the plane of focus) must be positive and finite");
-        scene_.camera = Camera(eye, target, up, fov, w, h, lens, focus);
+        scene_.camera = Camera(eye, target, up, fov, w, h);
+        // A camera model: the one whose keywords the line has (none: the pinhole).
+        CameraModelArgs args;
+        args.targetDistance = glm::length(target - eye);
+        args.has = [&](const std::string& key) { return st.has(key); };
+        args.number = [&](const std::string& key, float def) { return st.optNumber(key, def); };
+        args.text = [&](const std::string& key) { return st.has(key) ? st.options.at(key)[0] : std::string(); };
+        args.fail = [&](const std::string& problem) { st.fail(problem); };
+        std::string selected;
+        for (const auto& model : Registry<CameraModelType>::inOrder()) {
+            bool given = false;
+            for (const auto& kw : model.value.keywords) given = given || st.has(kw.first);
+            if (!given) continue;
+            if (!selected.empty()) st.fail("two camera models: '" + selected + "' and '" + model.name + "'");
+            selected = model.name;
+            scene_.camera.setModel(model.value.make(scene_.camera, args));
+        }
         scene_.camera.line = st.line;
         haveCamera_ = true;
-    }
-
-    // A lens must be resolvable where it is and its importance finite with room to spare (issue
-    // 31: 'lens 2e-19' was accepted; light tracing then gave NaN and Inf, bpt a wrong image):
-    // - wider than 16 float steps of the eye's coordinates, as a sphere's radius must be: a
-    //   narrower lens's points round to the eye and its density 1 / (pi r^2) is noise;
-    // - a pixel's importance through it at the image's corner, w h W_e = w h / (pi r^2 A cos^4)
-    //   (Eq. 11.14; A the image plane's area at distance 1), below 2^64: float's range is 2^128,
-    //   and the rest is the path's (its throughput, geometry terms and pdfs multiply it).
-    static void checkLensRadius(Statement& st, const Vec3& eye, float r, float fov, int w, int h) {
-        const std::string given = st.options.at("lens")[0];
-        const float at = maxAbsComponent(eye);
-        const float step = std::nextafter(at, kInf) - at;
-        if (r < 16.0f * step)
-            st.fail("'lens' radius " + given + " is below 16 float steps (" + std::to_string(step) +
-                    ") of the eye's coordinates: float cannot resolve such a lens there (it is a pinhole: leave "
-                    "'lens' out, or scale the scene)");
-        const double ty = std::tan(0.5 * double(fov) * double(kPi) / 180.0), tx = ty * w / h;
-        const double corner = 1.0 + tx * tx + ty * ty;  // 1 / cos^2 at the image's corner
-        const double importance = double(w) * h * corner * corner / (double(kPi) * r * r * 4.0 * tx * ty);
-        if (!(importance < 0x1p64)) {
-            char value[32];
-            std::snprintf(value, sizeof value, "%.3g", importance);
-            st.fail("'lens' radius " + given +
-                    ": a pixel's importance through so small a lens, w h / (pi r^2 A cos^4) = " + value +
-                    ", is beyond 2^64, where float products of transport overflow (scale the scene up)");
-        }
     }
 
     void material(Statement& st) {

@@ -46,7 +46,7 @@ FormFactorRow formFactorRow(const Scene& scene, const ElementMesh& mesh, int i, 
     const Element& ei = mesh[i];
     const int samples = formFactorSamples(mesh.size());
     std::atomic<bool> stopped{false};
-    runTasks(mesh.size(), seed, uint32_t(i), nullptr, 1.0f, stats, [&](int j, Rng& rng, Task&) {
+    runTasks(TaskLoop(mesh.size(), seed, uint32_t(i)), stats, [&](int j, Rng& rng, Task&) {
         if (stopped.load(std::memory_order_relaxed)) return;
         if (stop && (j & 63) == 0 && stop->timeIsUp()) {  // a task is 64 elements: once per task
             stopped = true;
@@ -190,9 +190,16 @@ struct RadiosityAmbient : RadiosityIntegrator {
 };
 }  // namespace
 
-PS_REGISTER_INTEGRATOR(RadiosityFlat, "radiosity",
-                       "progressive radiosity: diffuse quads, form factors by ray casting, shooting (lesson 11)");
-PS_REGISTER_INTEGRATOR(RadiosityAmbient, "radiosity-ambient",
-                       "progressive radiosity shown with the ambient term of Cohen et al. 1988 (lesson 11)");
+// Every iteration's image is the whole current solution; diffuse quads and area lights only; its
+// camera rays come from the framework's cameraRay, through a camera model too (each iteration's
+// image then has its m x m camera samples per pixel).
+PS_REGISTER_INTEGRATOR_CAPS(
+    RadiosityFlat, "radiosity",
+    "progressive radiosity: diffuse quads, form factors by ray casting, shooting (lesson 11)",
+    IntegratorCaps().withCameraModels().withLatestIterationIsImage().withSceneCheck(checkRadiosityScene));
+PS_REGISTER_INTEGRATOR_CAPS(
+    RadiosityAmbient, "radiosity-ambient",
+    "progressive radiosity shown with the ambient term of Cohen et al. 1988 (lesson 11)",
+    IntegratorCaps().withCameraModels().withLatestIterationIsImage().withSceneCheck(checkRadiosityScene));
 
 }  // namespace ps
