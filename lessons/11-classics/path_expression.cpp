@@ -236,7 +236,7 @@ PathExpressionError::PathExpressionError(const std::string& expression_, size_t 
       column(column_) {}
 
 std::string PathExpressionError::pointed(const std::string& indent) const {
-    if (expression.empty()) return problem;
+    if (expression.empty() && column == std::string::npos) return problem;
     std::string s = problem + "\n" + indent + expression;
     if (column != std::string::npos) s += "\n" + indent + std::string(column, ' ') + "^";
     return s;

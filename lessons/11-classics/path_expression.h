@@ -50,7 +50,7 @@ public:
     //   the '(' is never closed
     //     L(D|S*E
     //      ^
-    // (only the problem when the error holds no expression: one too long to show)
+    // (only the problem when the error holds neither expression nor column: one too long to show)
     std::string pointed(const std::string& indent = "  ") const;
 };
 
