@@ -8,6 +8,7 @@
 #include <iostream>
 #include <sstream>
 #include "errors.h"
+#include "image.h"
 #include "scene.h"
 #if defined(_WIN32)
 #include <io.h>
@@ -163,6 +164,25 @@ void checkOutputFolder(const std::string& option, const std::string& folder, con
         badOutput(option, folder,
                   "cannot make folder '" + missing.string() + "' (" + (ec ? ec.message() : "unknown reason") + ")");
     fs::remove(missing, ec);
+}
+
+Image readReference(const std::string& path, const Scene& scene) {
+    Image ref = readImage(path, scene.camera.width(), scene.camera.height());
+    size_t bad = 0, first = 0;
+    for (size_t i = 0; i < ref.pixels.size(); ++i) {
+        const Color& c = ref.pixels[i];
+        if (std::isfinite(c.r) && std::isfinite(c.g) && std::isfinite(c.b)) continue;
+        if (bad++ == 0) first = i;
+    }
+    if (bad > 0) {
+        const Color& c = ref.pixels[first];
+        std::ostringstream os;
+        os << "pixel (" << first % size_t(ref.width) << ", " << first / size_t(ref.width) << ") is " << c.r << " "
+           << c.g << " " << c.b << ": a reference must be finite (" << bad << " of " << ref.pixels.size()
+           << " pixels are NaN or Inf)";
+        throw InputError(path, 0, os.str());
+    }
+    return ref;
 }
 
 std::string stem(const std::string& path) {

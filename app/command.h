@@ -19,6 +19,7 @@
 namespace ps {
 
 class Scene;
+struct Image;
 
 struct Command {
     std::string name;              // what the user types: pathspace NAME ...
@@ -130,6 +131,12 @@ std::vector<InputFile> sceneInputs(const Scene& scene);
 // symbolic and hard links, "./x" and "x"); a file that does not exist yet by its folder's identity
 // and its name (a dangling symbolic link by where it points).
 bool sameFile(const std::string& a, const std::string& b);
+
+// A reference image (--reference) for a scene: read with the scene's size (refused from its
+// header if it differs, before its pixels are decoded: image.h), and refused if a pixel is NaN or
+// Inf (every error against it would be NaN: the log would hold nothing). InputError naming the
+// file, the first such pixel and how many there are.
+Image readReference(const std::string& path, const Scene& scene);
 
 // stem("dir/a.scene") = "dir/a", baseName("dir/a.scene") = "a.scene", splitList("a,b,,c") = {a, b, c}.
 std::string stem(const std::string& path);

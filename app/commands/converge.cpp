@@ -126,6 +126,8 @@ int runConverge(ConvergeArgs c) {
     scene.settings.prune = c.prune;
     for (const std::string& a : opt.algos) checkScene(scene, *makeAlgorithm(a, opt.options));  // e.g. a camera model
     if (reference.empty() && !refAlgo.empty()) checkScene(scene, *makeAlgorithm(refAlgo, opt.options));  // the same
+    Image ref, refVariance;
+    if (!reference.empty()) ref = readReference(reference, scene);  // its size before its pixels, then finite
     for (const std::string& a : opt.algos) printLeftOut(a, *makeAlgorithm(a, opt.options), scene);
     const std::vector<PointLightPixel> leftOut = pointLightsInView(scene);
     for (const PointLightPixel& p : leftOut) std::cerr << "pathspace: " << describe(p) << "\n";
@@ -133,10 +135,7 @@ int runConverge(ConvergeArgs c) {
     std::filesystem::create_directories(outDir, ec);
     if (!std::filesystem::is_directory(outDir, ec)) throw InputError(outDir, 0, "cannot create the output folder");
 
-    Image ref, refVariance;
-    if (!reference.empty()) {
-        ref = readImage(reference, scene.camera.width(), scene.camera.height());  // the size before the pixels
-    } else {
+    if (reference.empty()) {
         if (refAlgo.empty()) refAlgo = opt.algos[0];
         auto integrator = makeAlgorithm(refAlgo, opt.options);
         RenderOptions ro;

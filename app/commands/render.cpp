@@ -133,7 +133,7 @@ int runRender(RenderArgs r) {
     opt.threads = r.threads;
     opt.progress = r.progress;
     if (!r.reference.empty()) {
-        ref = readImage(r.reference, scene.camera.width(), scene.camera.height());  // the size before the pixels
+        ref = readReference(r.reference, scene);  // the size before the pixels, then finite
         csv = std::make_unique<FileStream>(r.csvPath);
         opt.reference = &ref;
         opt.csv = csv.get();
