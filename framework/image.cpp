@@ -1,8 +1,8 @@
 #include "image.h"
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <iterator>
 #include <fstream>
 #include "errors.h"
 #include "file_writer.h"
@@ -174,7 +174,12 @@ Image readHDR(const std::string& path, int expectW, int expectH) {
     if (bytesLeft(f) < minLine * uint64_t(h))
         fail("the size says " + std::to_string(w) + "x" + std::to_string(h) + " but the file is too short for it");
     checkHeaderSize(path, w, h, expectW, expectH);
-    std::vector<unsigned char> data((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+    // The most bytes w x h pixels can take (a scanline in copies of at most 128 bytes per channel,
+    // or flat): what follows is never read, however large the file.
+    const uint64_t maxLine = std::max<uint64_t>(4 + 4 * (uint64_t(w) + uint64_t((w + 127) / 128)), 4 * uint64_t(w));
+    std::vector<unsigned char> data(size_t(std::min(bytesLeft(f), maxLine * uint64_t(h))));
+    if (!f.read(reinterpret_cast<char*>(data.data()), std::streamsize(data.size())))
+        fail("the file could not be read to the end of its pixels");
     size_t at = 0;
     auto next = [&]() -> unsigned char {
         if (at >= data.size()) fail("the file ends inside the pixels (truncated?)");
