@@ -1,12 +1,12 @@
 // pathspace render SCENE [options]: one image with one integrator, progressively (framework/render.h).
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <iostream>
 #include <memory>
 #include <optional>
 #include "command.h"
 #include "errors.h"
+#include "file_writer.h"
 #include "image.h"
 #include "integrator.h"
 #include "render.h"
@@ -53,6 +53,7 @@ struct RenderArgs {
     bool progress = false, prune = true;
     AlgorithmOptions options;  // --paths EXPR and the like (integrator.h)
     std::optional<Color> ambient;
+    std::vector<OutputFile> outputs;  // every file it writes, checked (command.h)
 };
 
 RenderArgs parseRender(const std::vector<std::string>& args) {
@@ -100,12 +101,16 @@ RenderArgs parseRender(const std::vector<std::string>& args) {
         if (r.csvPath.empty()) r.csvPath = stem(r.out) + ".csv";
         outputs.push_back({"--csv", r.csvPath, {}});
     }
-    checkOutputFiles(outputs);
+    std::vector<InputFile> inputs = {{"the scene file", r.scenePath, ""}};
+    if (!r.reference.empty()) inputs.push_back({"the reference image", r.reference, "--reference"});
+    checkOutputFiles(outputs, inputs);
+    r.outputs = outputs;
     return r;
 }
 
 int runRender(RenderArgs r) {
     Scene scene = loadScene(r.scenePath);
+    checkNotInputs(r.outputs, sceneInputs(scene));  // its meshes and material libraries
     if (r.maxDepth >= 0) scene.settings.maxDepth = r.maxDepth;
     scene.settings.prune = r.prune;
     if (r.ambient) scene.settings.ambient = *r.ambient;
@@ -125,7 +130,7 @@ int runRender(RenderArgs r) {
     checkScene(scene, *integrator);  // a refusal (InputError) before anything is printed
 
     Image ref;
-    std::ofstream csv;
+    std::unique_ptr<FileStream> csv;  // the error log, written while the render runs
     RenderOptions opt;
     opt.spp = r.spp;
     opt.seconds = r.seconds;
@@ -134,16 +139,10 @@ int runRender(RenderArgs r) {
     opt.threads = r.threads;
     opt.progress = r.progress;
     if (!r.reference.empty()) {
-        ref = readImage(r.reference);
-        if (ref.width != scene.camera.width() || ref.height != scene.camera.height())
-            throw InputError(r.reference, 0,
-                             "reference is " + std::to_string(ref.width) + "x" + std::to_string(ref.height) +
-                                 " but the scene renders " + std::to_string(scene.camera.width()) + "x" +
-                                 std::to_string(scene.camera.height()));
-        csv.open(r.csvPath);
-        if (!csv) throw InputError(r.csvPath, 0, "cannot open for writing");
+        ref = readReference(r.reference, scene);  // the size before the pixels, then finite
+        csv = std::make_unique<FileStream>(r.csvPath);
         opt.reference = &ref;
-        opt.csv = &csv;
+        opt.csv = csv.get();
     }
     std::cerr << "pathspace: " << r.scenePath << " (" << scene.caps.describe() << "), algo " << r.algo;
     for (const auto& [name, value] : r.options) std::cerr << ", " << name << " '" << value << "'";
@@ -162,7 +161,10 @@ int runRender(RenderArgs r) {
         writePFM(r.variancePath, res.film.varianceOfMean());
         written += ", " + r.variancePath;
     }
-    if (opt.csv) written += ", " + r.csvPath;
+    if (csv) {
+        csv->close();
+        written += ", " + r.csvPath;
+    }
     std::cout << "pathspace: " << summaryLine(res) << "; wrote " << written << "\n";
     for (const std::string& line : integrator->report()) std::cout << "pathspace: " << r.algo << ": " << line << "\n";
     if (res.stats.bad() > 0)

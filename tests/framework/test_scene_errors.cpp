@@ -232,6 +232,11 @@ TEST_CASE("scene errors: bad resolution or field of view") {
     camera("fov 40 resolution 0 8", {"'resolution' must be between 1 and 16384", "got 0 8"});
     camera("fov 40 resolution 8 -1", {"'resolution'", "got 8 -1"});
     camera("fov 40 resolution 20000 8", {"'resolution'", "16384"});
+    // Each side within 16384, but more pixels than a render may have (the memory model, issue 31:
+    // 16384 x 16384 needed more than 8 GB).
+    camera("fov 40 resolution 16384 16384", {"'resolution' 16384 16384 is 268435456 pixels", "4194304", "4 GiB"});
+    camera("fov 40 resolution 2049 2048", {"is 4196352 pixels, more than the 4194304"});
+    CHECK_NOTHROW(parseScene("camera eye 0 0 -5  target 0 0 0  fov 40 resolution 4096 1024\n", "ok.scene"));
     camera("fov 40 resolution 8.5 8", {"malformed integer '8.5'", "'resolution' (width)"});
     camera("fov 40 resolution 8", {"option 'resolution' needs 2 value(s)"});
     camera("fov 40 resolution 8 8 up 0 0 1", {"'up' is parallel to the view direction"});
