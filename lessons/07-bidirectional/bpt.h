@@ -174,6 +174,12 @@ struct BptOptions {
     // a thin lens, t = 0 asks it too (s = m + 2, t = 0, camera empty: the lens point is the last
     // vertex), after connectLens has drawn its step's numbers.
     std::function<bool(const Subpath& light, const Subpath& camera, int s, int t)> pathTest;
+    // More techniques than (s, t) for the same paths (a caller whose estimator also samples them
+    // another way): if set, each connection's weight w_{s,t} (Eq. 7.8) becomes
+    // techniqueWeight(w_{s,t}, y, s, z, t, rev), the weight among all of the caller's techniques;
+    // the arguments are those of misWeightRecursive.
+    std::function<float(float w, const PathVertex* y, int s, const PathVertex* z, int t, const ReversePdfs& rev)>
+        techniqueWeight;
 };
 
 // What one pixel sample's techniques gave, for per-technique images (Veach's pyramid).
@@ -189,6 +195,12 @@ struct TechniqueRecorder {
 // thin lens (lesson 11's connectLens at every light vertex). recorder may be null.
 Color bptSample(const Scene& scene, const Vec2& raster, Rng& rng, const BptOptions& opt, const SplatTarget& splat,
                 TechniqueRecorder* recorder);
+
+// bptSample's techniques (s, t), t >= 1, for two subpaths traced elsewhere (the camera subpath
+// through `raster`): the same connections, random numbers and weights, for a caller that keeps
+// its subpaths (bptSample is cameraSubpath, lightSubpath, then this).
+Color connectSubpaths(const Scene& scene, const Subpath& camera, const Subpath& light, const Vec2& raster, Rng& rng,
+                      const BptOptions& opt, const SplatTarget& splat, TechniqueRecorder* recorder);
 
 // The pruning decisions of Eq. 7.12 for this scene, one line each (empty if !opt.prune).
 std::vector<std::string> bptLeftOut(const Scene& scene, const BptOptions& opt);

@@ -54,6 +54,14 @@ Color bptSample(const Scene& scene, const Vec2& raster, Rng& rng, const BptOptio
     const int maxDepth = scene.settings.maxDepth;
     cameraSubpath(scene, rng, raster, maxDepth, opt.heuristic, camera);
     lightSubpath(scene, rng, maxDepth, opt.heuristic, light);
+    const Color L = connectSubpaths(scene, camera, light, raster, rng, opt, splat, recorder);
+    if (!scene.camera.isPinhole()) lensTechniques(scene, light, rng, opt, splat, recorder);
+    return L;
+}
+
+Color connectSubpaths(const Scene& scene, const Subpath& camera, const Subpath& light, const Vec2& raster, Rng& rng,
+                      const BptOptions& opt, const SplatTarget& splat, TechniqueRecorder* recorder) {
+    const int maxDepth = scene.settings.maxDepth;
     const Pruning prune = pruning(scene, opt);
     Color L(0.0f);
     const int nCamera = static_cast<int>(camera.size()), nLight = static_cast<int>(light.size());
@@ -76,8 +84,9 @@ Color bptSample(const Scene& scene, const Vec2& raster, Rng& rng, const BptOptio
             const Connection c = connect(scene, light, camera, s, t, uLight, uPos);
             if (!c.valid) continue;
             const PathVertex* y = s == 1 ? &c.sampledLight : light.data();
-            const float w = opt.recursive ? misWeightRecursive(y, s, camera.data(), t, c.rev, opt.heuristic)
-                                          : misWeightFull(y, s, camera.data(), t, c.rev, opt.heuristic);
+            float w = opt.recursive ? misWeightRecursive(y, s, camera.data(), t, c.rev, opt.heuristic)
+                                    : misWeightFull(y, s, camera.data(), t, c.rev, opt.heuristic);
+            if (opt.techniqueWeight) w = opt.techniqueWeight(w, y, s, camera.data(), t, c.rev);
             const Color weighted = c.value * w;
             if (t == 1) {
                 splat.add(c.raster, weighted);
@@ -88,7 +97,6 @@ Color bptSample(const Scene& scene, const Vec2& raster, Rng& rng, const BptOptio
             }
         }
     }
-    if (!scene.camera.isPinhole()) lensTechniques(scene, light, rng, opt, splat, recorder);
     return L;
 }
 
