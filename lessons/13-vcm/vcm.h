@@ -17,6 +17,7 @@
 // lesson 8's photonsInRadius. What this lesson adds per vertex, the merging partial sum D_i of
 // Eq. 13.8, lives beside the subpath in a MergeSums array (MergeSums[i] belongs to path[i]).
 #pragma once
+#include <atomic>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -83,16 +84,30 @@ struct LightVertexRef {
 };
 
 struct LightVertices {
-    std::vector<Subpath> paths;     // one light subpath per pixel (lesson 7's lightSubpath)
-    std::vector<MergeSums> sums;    // their merging partial sums (Eq. 13.8)
-    std::vector<LightVertexRef> refs;  // the vertices merges may use (mergeable), in path order
-    PhotonMap tree;  // lesson 8's kd-tree over refs' positions; a node's Photon::dir holds its index
-                     // into refs (power and direction are read from the vertex itself)
-    const PathVertex& vertex(const LightVertexRef& r) const { return paths[r.path][r.index]; }
+    // Every light subpath of the iteration, one after the other in pixel order (lesson 7's
+    // lightSubpath), and their merging sums (Eq. 13.8) aligned with them: light subpath i is
+    // vertices[starts[i] .. starts[i + 1]).
+    std::vector<PathVertex> vertices;
+    std::vector<double> sums;
+    std::vector<uint32_t> starts;
+    // The vertices merges may use (mergeable), in the order of the tree's nodes: refs[k - 1] is
+    // node k's.
+    std::vector<LightVertexRef> refs;
+    PhotonMap tree;  // lesson 8's kd-tree over their positions (a node's photon power and
+                     // direction are not used: everything is read from the vertex itself)
+    // Searches and vertices found since the tree was built (for the integrator's report).
+    mutable std::atomic<uint64_t> searches{0}, found{0};
+
+    size_t paths() const { return starts.empty() ? 0 : starts.size() - 1; }
+    // Light subpath i: its first vertex, its merging sums, its number of vertices.
+    const PathVertex* subpath(uint32_t i) const { return vertices.data() + starts[i]; }
+    const double* subpathSums(uint32_t i) const { return sums.data() + starts[i]; }
+    int length(uint32_t i) const { return int(starts[i + 1] - starts[i]); }
+    const PathVertex& vertex(const LightVertexRef& r) const { return vertices[starts[r.path] + r.index]; }
 };
 
-// Fills refs with every mergeable vertex of every path (pixel order, then vertex order) and
-// builds the tree over them (lesson 8's buildPhotonMap).
+// Fills refs with every mergeable vertex of every light subpath and builds the tree over them
+// (lesson 8's buildPhotonMap).
 void buildLightVertexTree(LightVertices& lights);
 
 // Every stored light vertex within distance sqrt(r2) of x (lesson 8's photonsInRadius): found is
@@ -143,7 +158,7 @@ Color mergeAtVertex(const Scene& scene, const Subpath& camera, const MergeSums& 
 struct VcmOptions {
     VcmMode mode = VcmMode::Vcm;
     Heuristic heuristic = Heuristic::Power;
-    double radiusFactor = 0.01;  // r_1 as a fraction of the scene's bounding radius
+    double radiusFactor = 0.003;  // r_1 as a fraction of the scene's bounding radius
     double alpha = 0.75;         // the radius schedule's alpha (Eq. 13.12)
 };
 
@@ -151,20 +166,21 @@ struct VcmOptions {
 void mergeSums(const Subpath& path, Heuristic h, MergeSums& sums);
 
 // One pixel sample of the camera pass: the camera subpath through raster, then what the mode
-// asks: lesson 7's connections with the light subpath `light` (weighted by Eq. 13.10), and the
-// merges at the camera vertices with `lights` (null: no merging). In VcmMode::Bpt with light ==
-// nullptr the light subpath is traced here, after the camera subpath, from the same random numbers
-// as lesson 7's bptSample: the sample is then bptSample's, bit for bit.
+// asks: lesson 7's connections with light subpath `pixel` of `lights` (weighted by Eq. 13.10), and
+// the merges at the camera vertices with every vertex of `lights`. Without lights (vcm-bpt) the
+// light subpath is traced here, after the camera subpath, from the same random numbers as lesson
+// 7's bptSample: the sample is then bptSample's, bit for bit.
 struct VcmSampleRecorders {
     TechniqueRecorder* connections = nullptr;
     MergeRecorder* merges = nullptr;
 };
+// `pixel` selects the light subpath of `lights` the connections use (ignored without lights).
 Color vcmSample(const Scene& scene, const Vec2& raster, Rng& rng, const VcmOptions& opt, const MergeOptions& merge,
-                const Subpath* light, const MergeSums* lightSums, const LightVertices* lights, const SplatTarget& splat,
+                const LightVertices* lights, uint32_t pixel, const SplatTarget& splat,
                 const VcmSampleRecorders& recorders);
 
-// The light pass of an iteration: lights.paths[i] = light subpath i, from taskRng(seed ^
-// kVcmLightSalt, iteration, i), and lights.sums[i] its merging sums; the tree is built apart
+// The light pass of an iteration: light subpath i from taskRng(seed ^ kVcmLightSalt, iteration,
+// i), with its merging sums, into lights (vertices, sums, starts); the tree is built apart
 // (buildLightVertexTree). Bit-identical for any thread count.
 constexpr uint64_t kVcmLightSalt = 0x510E527FADE682D1ull;
 void traceLightSubpaths(const Scene& scene, int lightPaths, Heuristic h, uint64_t seed, uint32_t iteration,

@@ -27,31 +27,34 @@
 namespace ps {
 
 Color vcmSample(const Scene& scene, const Vec2& raster, Rng& rng, const VcmOptions& opt, const MergeOptions& merge,
-                const Subpath* light, const MergeSums* lightSums, const LightVertices* lights, const SplatTarget& splat,
+                const LightVertices* lights, uint32_t pixel, const SplatTarget& splat,
                 const VcmSampleRecorders& recorders) {
-    thread_local Subpath camera, traced;
-    thread_local MergeSums cameraSums, tracedSums;
+    thread_local Subpath camera, light;
+    thread_local MergeSums cameraSums, lightSums;
     const int maxDepth = scene.settings.maxDepth;
     cameraSubpath(scene, rng, raster, maxDepth, opt.heuristic, camera);
     mergeSums(camera, opt.heuristic, cameraSums);
     Color L(0.0f);
     const bool merging = lights != nullptr && opt.mode != VcmMode::Bpt && merge.radius > 0.0 && merge.lightPaths > 0;
     if (opt.mode == VcmMode::Vcm || opt.mode == VcmMode::Bpt) {
-        if (light == nullptr) {  // no light pass: lesson 7's order of random numbers
-            lightSubpath(scene, rng, maxDepth, opt.heuristic, traced);
-            mergeSums(traced, opt.heuristic, tracedSums);
-            light = &traced;
-            lightSums = &tracedSums;
+        if (lights == nullptr) {  // no light pass: lesson 7's order of random numbers
+            lightSubpath(scene, rng, maxDepth, opt.heuristic, light);
+            mergeSums(light, opt.heuristic, lightSums);
+        } else {  // the pixel's light subpath of the light pass
+            const PathVertex* y = lights->subpath(pixel);
+            const double* d = lights->subpathSums(pixel);
+            light.assign(y, y + lights->length(pixel));
+            lightSums.assign(d, d + lights->length(pixel));
         }
         const double eta = merging ? mergeFactor(merge.radius, merge.lightPaths) : 0.0;
         BptOptions bpt;
         bpt.heuristic = opt.heuristic;
         bpt.techniqueWeight = [&](float w, const PathVertex* y, int s, const PathVertex* z, int t,
                                   const ReversePdfs& rev) {
-            const double m = mergeTerms(y, lightSums->data(), s, z, cameraSums.data(), t, rev, opt.heuristic);
+            const double m = mergeTerms(y, lightSums.data(), s, z, cameraSums.data(), t, rev, opt.heuristic);
             return misWeightConnection(w, eta, m, opt.heuristic);
         };
-        L += connectSubpaths(scene, camera, *light, raster, rng, bpt, splat, recorders.connections);
+        L += connectSubpaths(scene, camera, light, raster, rng, bpt, splat, recorders.connections);
     } else {
         // Photon mapping: a camera subpath that reaches a light through specular vertices alone
         // (L S* E) is the one path no merge can make; it counts in full.
@@ -85,7 +88,7 @@ struct VcmIntegrator : Integrator {
     LightVertices lights;  // kept from iteration to iteration: the vectors keep their capacity
     // What the report prints: per iteration, the light vertices a merge may use, the memory of
     // the light pass, and the wall times of its parts.
-    size_t iterations = 0, storedVertices = 0, pathVertices = 0, bytes = 0, maxBytes = 0;
+    size_t iterations = 0, storedVertices = 0, pathVertices = 0, bytes = 0, maxBytes = 0, searches = 0, found = 0;
     double lightSeconds = 0.0, treeSeconds = 0.0, cameraSeconds = 0.0;
 
     explicit VcmIntegrator(const VcmOptions& o) : opt(o) {}
@@ -123,9 +126,7 @@ struct VcmIntegrator : Integrator {
         }
         renderPixelTasks(seed, iteration, out, stats, true, [&](int pixel, Rng& rng, Task& task) {
             const Vec2 raster = jitteredRaster(pixel, out.width, rng);
-            if (!lightPass) return vcmSample(scene, raster, rng, opt, m, nullptr, nullptr, nullptr, task.splat, {});
-            return vcmSample(scene, raster, rng, opt, m, &lights.paths[size_t(pixel)], &lights.sums[size_t(pixel)],
-                             &lights, task.splat, {});
+            return vcmSample(scene, raster, rng, opt, m, lightPass ? &lights : nullptr, uint32_t(pixel), task.splat, {});
         });
         const auto t3 = clock::now();
         ++iterations;
@@ -133,14 +134,14 @@ struct VcmIntegrator : Integrator {
         treeSeconds += seconds(t1, t2);
         cameraSeconds += seconds(t2, t3);
         if (lightPass) {
-            size_t vertices = 0, b = 0;
-            for (size_t i = 0; i < lights.paths.size(); ++i) {
-                vertices += lights.paths[i].size();
-                b += lights.paths[i].capacity() * sizeof(PathVertex) + lights.sums[i].capacity() * sizeof(double);
-            }
-            b += lights.refs.capacity() * sizeof(LightVertexRef) + lights.tree.nodes.capacity() * sizeof(Photon);
+            const size_t b = lights.vertices.capacity() * sizeof(PathVertex) + lights.sums.capacity() * sizeof(double) +
+                             lights.starts.capacity() * sizeof(uint32_t) +
+                             lights.refs.capacity() * sizeof(LightVertexRef) +
+                             lights.tree.nodes.capacity() * sizeof(Photon);
             storedVertices += lights.refs.size();
-            pathVertices += vertices;
+            searches += lights.searches;
+            found += lights.found;
+            pathVertices += lights.vertices.size();
             bytes += b;
             maxBytes = std::max(maxBytes, b);
         }
@@ -156,6 +157,10 @@ struct VcmIntegrator : Integrator {
                       "memory %.1f MB per iteration (at most %.1f MB)",
                       double(pathVertices) / n, double(storedVertices) / n, double(bytes) / n / 1e6,
                       double(maxBytes) / 1e6);
+        out.push_back(line);
+        std::snprintf(line, sizeof line,
+                      "merging: %.0f searches per iteration, %.2f light vertices found within r per search",
+                      double(searches) / n, searches ? double(found) / double(searches) : 0.0);
         out.push_back(line);
         std::snprintf(line, sizeof line,
                       "wall time per iteration: light subpaths %.1f ms, kd-tree build %.1f ms, camera pass "

@@ -59,20 +59,19 @@ Color mergeAtVertex(const Scene& scene, const Subpath& camera, const MergeSums& 
     for (const LightVertexRef& ref : found) {
         const int e = int(ref.index);
         if (e + f - 1 > opt.maxDepth) continue;
-        const Subpath& light = lights.paths[ref.path];
-        const PathVertex& y = light[size_t(e)];
-        const Color fs = evalBSDF(material, z.sp.n, wo, direction(y, light[size_t(e) - 1]));
+        const PathVertex* light = lights.subpath(ref.path);
+        const PathVertex& y = light[e];
+        const Color fs = evalBSDF(material, z.sp.n, wo, direction(y, light[e - 1]));
         if (isBlack(fs)) continue;
         const Color unweighted = y.beta * fs * z.beta * normalisation;
         float w = 1.0f;
         if (opt.mode != VcmMode::Ppm) {
             const int t = f + 1;
-            const ReversePdfs rev = mergePdfs(scene, light.data(), e, camera.data(), f);
-            const float wBpt = misWeightRecursive(light.data(), e, camera.data(), t, rev, opt.heuristic);
-            const double m = mergeTerms(light.data(), lights.sums[ref.path].data(), e, camera.data(),
-                                        cameraSums.data(), t, rev, opt.heuristic);
-            w = misWeightMerge(wBpt, !light[size_t(e) - 1].specular, rev, eta, m, opt.heuristic,
-                               opt.mode == VcmMode::Vcm);
+            const ReversePdfs rev = mergePdfs(scene, light, e, camera.data(), f);
+            const float wBpt = misWeightRecursive(light, e, camera.data(), t, rev, opt.heuristic);
+            const double m = mergeTerms(light, lights.subpathSums(ref.path), e, camera.data(), cameraSums.data(), t,
+                                        rev, opt.heuristic);
+            w = misWeightMerge(wBpt, !light[e - 1].specular, rev, eta, m, opt.heuristic, opt.mode == VcmMode::Vcm);
         }
         sum += unweighted * w;
         if (recorder) recorder->add(ref, f, unweighted, w);

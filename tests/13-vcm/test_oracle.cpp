@@ -63,8 +63,9 @@ void checkScene(const std::string& file, ps::VcmMode mode, ps::Heuristic h, uint
         ps::cameraSubpath(scene, rng, raster, maxDepth, h, camera);
         ps::mergeSums(camera, h, cameraSums);
         // The connections with one light subpath of the pass.
-        const ps::Subpath& light = pass.lights.paths[size_t(i % n)];
-        const ps::MergeSums& lightSums = pass.lights.sums[size_t(i % n)];
+        const uint32_t li = uint32_t(i % n);
+        const ps::Subpath light(pass.lights.subpath(li), pass.lights.subpath(li) + pass.lights.length(li));
+        const ps::MergeSums lightSums(pass.lights.subpathSums(li), pass.lights.subpathSums(li) + pass.lights.length(li));
         if (vcm)
             for (int t = 1; t <= int(camera.size()); ++t)
                 for (int s = 0; s <= std::max(int(light.size()), 1); ++s) {
@@ -91,10 +92,10 @@ void checkScene(const std::string& file, ps::VcmMode mode, ps::Heuristic h, uint
             if (ps::mergeable(camera.data(), f))
                 ps::mergeAtVertex(scene, camera, cameraSums, f, pass.lights, pass.merge, &list);
         for (const Merge& mg : list.merges) {
-            const ps::Subpath& lp = pass.lights.paths[mg.light.path];
+            const PathVertex* lp = pass.lights.subpath(mg.light.path);
             const int e = int(mg.light.index);
             ps::Path x;
-            if (!mergedPath(lp.data(), e, camera.data(), mg.f, x)) {
+            if (!mergedPath(lp, e, camera.data(), mg.f, x)) {
                 ++count.otherSurface;
                 continue;
             }
