@@ -937,8 +937,10 @@ Svg mergeTechniques() {
     s.text(z3 + P{0, -18}, "x_3 = z_1", "middle", 20, kInk, true);
     s.text(z4 + P{0, 36}, "x_4 = z_0", "middle", 20, kInk, true);
     s.text({560, 310}, "x_2: y_2 seen from the light side, z_2 from the camera side", "middle", 18, kGrey);
-    s.text({30, 350}, "P(‖y_2 − z_2‖ ≤ r) ≈ π r² p_L(x_2)   so   N p_{M,2} = η p_L(x_2) p_{2,3} = η p_E(x_2) p_{3,2},"
-                      "   η = N π r²", "start", 18);
+    s.text({30, 350},
+           "P(‖y_2 − z_2‖ ≤ r) ≈ π r² p_L(x_2)   so   N p_{M,2} = η p_L(x_2) p_{2,3} = η p_E(x_2) p_{3,2},"
+           "   η = N π r²",
+           "start", 18);
     // The techniques of the path: connections (7.7) and merges (13.6).
     const char* conn[] = {"(0,5)", "(1,4)", "(2,3)", "(3,2)", "(4,1)"};
     for (int c = 0; c < 5; ++c) techniqueStrip(s, 12 + 120 * c, 410, false, c, c == 2 || c == 3 ? 1 : 0, conn[c]);

@@ -159,7 +159,7 @@ struct VcmOptions {
     VcmMode mode = VcmMode::Vcm;
     Heuristic heuristic = Heuristic::Power;
     double radiusFactor = 0.003;  // r_1 as a fraction of the scene's bounding radius
-    double alpha = 0.75;         // the radius schedule's alpha (Eq. 13.12)
+    double alpha = 0.75;          // the radius schedule's alpha (Eq. 13.12)
 };
 
 // The merging sums of a whole subpath (updateMergeSum for every vertex).

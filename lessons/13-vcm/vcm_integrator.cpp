@@ -126,7 +126,8 @@ struct VcmIntegrator : Integrator {
         }
         renderPixelTasks(seed, iteration, out, stats, true, [&](int pixel, Rng& rng, Task& task) {
             const Vec2 raster = jitteredRaster(pixel, out.width, rng);
-            return vcmSample(scene, raster, rng, opt, m, lightPass ? &lights : nullptr, uint32_t(pixel), task.splat, {});
+            return vcmSample(scene, raster, rng, opt, m, lightPass ? &lights : nullptr, uint32_t(pixel), task.splat,
+                             {});
         });
         const auto t3 = clock::now();
         ++iterations;

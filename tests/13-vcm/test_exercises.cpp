@@ -21,9 +21,9 @@ TEST_CASE("exercise: the iteration at which merging gives up half its weight (Eq
         double pdf[3], pL1, eta1, alpha, b;
     };
     const Case cases[] = {
-        {{1e-6, 2e-6, 3e-7}, 4e-6, 3e5, 0.75, 1.0},  {{1e-6, 2e-6, 3e-7}, 4e-6, 3e5, 0.75, 2.0},
+        {{1e-6, 2e-6, 3e-7}, 4e-6, 3e5, 0.75, 1.0},     {{1e-6, 2e-6, 3e-7}, 4e-6, 3e5, 0.75, 2.0},
         {{0.0, 5e-3, 1e-3}, 1e-2, 1e4, 2.0 / 3.0, 2.0}, {{1.0, 1.0, 1.0}, 1.0, 0.5, 0.75, 2.0},  // below 1/2 at once
-        {{1.0, 2.0, 0.5}, 3.0, 10.0, 1.0, 1.0},          // a fixed radius: never
+        {{1.0, 2.0, 0.5}, 3.0, 10.0, 1.0, 1.0},  // a fixed radius: never
     };
     for (const Case& c : cases) {
         const double got = ps::halfMergeIteration(c.pdf, c.pL1, c.eta1, c.alpha, c.b);
@@ -38,11 +38,11 @@ TEST_CASE("exercise: the iteration at which merging gives up half its weight (Eq
             }
             expected = std::exp(0.5 * (lo + hi));
         }
-        const bool ok = std::isinf(expected) ? std::isinf(got) && got > 0.0
-                                             : std::abs(got - expected) <= 1e-6 * expected;
+        const bool ok =
+            std::isinf(expected) ? std::isinf(got) && got > 0.0 : std::abs(got - expected) <= 1e-6 * expected;
         CHECK_MESSAGE(ok, "halfMergeIteration(pdfs " << c.pdf[0] << ", " << c.pdf[1] << ", " << c.pdf[2]
-                                                      << ", p_L(x_1) " << c.pL1 << ", eta_1 " << c.eta1 << ", alpha "
-                                                      << c.alpha << ", b " << c.b << "): expected " << expected
-                                                      << ", got " << got);
+                                                     << ", p_L(x_1) " << c.pL1 << ", eta_1 " << c.eta1 << ", alpha "
+                                                     << c.alpha << ", b " << c.b << "): expected " << expected
+                                                     << ", got " << got);
     }
 }

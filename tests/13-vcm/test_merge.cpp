@@ -115,8 +115,8 @@ void checkScene(const std::string& file, ps::VcmMode mode, uint64_t seed) {
     const std::string where = file + (mode == ps::VcmMode::Ppm ? " (vcm-ppm)" : " (vcm)");
     CHECK_MESSAGE(missing + extra + twice + wrongValue + wrongSum + wrongWeight == 0,
                   where << ", r = " << num(r) << ", " << vertices << " camera vertices, " << merges
-                        << " merges: " << missing << " missing, " << extra << " not expected, " << twice
-                        << " twice, " << wrongValue << " with a wrong value, " << wrongSum
+                        << " merges: " << missing << " missing, " << extra << " not expected, " << twice << " twice, "
+                        << wrongValue << " with a wrong value, " << wrongSum
                         << " camera vertices whose sum is not the weighted merges', " << wrongWeight
                         << " wrong weights; first: " << firstProblem);
     CHECK_MESSAGE(merges >= 300, where << ": expected at least 300 merges, got " << merges);
@@ -124,8 +124,9 @@ void checkScene(const std::string& file, ps::VcmMode mode, uint64_t seed) {
 
 }  // namespace
 
-TEST_CASE("a camera vertex merges once with every stored light vertex within r, with lesson 8's density estimate "
-          "(brute force) [3 pts]") {
+TEST_CASE(
+    "a camera vertex merges once with every stored light vertex within r, with lesson 8's density estimate "
+    "(brute force) [3 pts]") {
     checkScene("tests/13-vcm/data/open-box.scene", ps::VcmMode::Vcm, ps::testseed::seed(13301));
     checkScene("tests/13-vcm/data/pool.scene", ps::VcmMode::Vcm, ps::testseed::seed(13302));
     checkScene("tests/13-vcm/data/pool.scene", ps::VcmMode::Ppm, ps::testseed::seed(13303));

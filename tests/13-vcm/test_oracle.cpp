@@ -65,7 +65,8 @@ void checkScene(const std::string& file, ps::VcmMode mode, ps::Heuristic h, uint
         // The connections with one light subpath of the pass.
         const uint32_t li = uint32_t(i % n);
         const ps::Subpath light(pass.lights.subpath(li), pass.lights.subpath(li) + pass.lights.length(li));
-        const ps::MergeSums lightSums(pass.lights.subpathSums(li), pass.lights.subpathSums(li) + pass.lights.length(li));
+        const ps::MergeSums lightSums(pass.lights.subpathSums(li),
+                                      pass.lights.subpathSums(li) + pass.lights.length(li));
         if (vcm)
             for (int t = 1; t <= int(camera.size()); ++t)
                 for (int s = 0; s <= std::max(int(light.size()), 1); ++s) {
@@ -82,9 +83,9 @@ void checkScene(const std::string& file, ps::VcmMode mode, ps::Heuristic h, uint
                     const std::vector<Technique> ts = oracleTechniques(scene, x, eta, true);
                     if (!(ts[size_t(s)].density > 0.0)) continue;  // lesson 7's test counts these
                     ++count.connections;
-                    connection.offer(w, oracleWeight(ts, false, s, b),
-                                     describe(x) + " made by connection (" + std::to_string(s) + ", " +
-                                         std::to_string(t) + ")");
+                    connection.offer(
+                        w, oracleWeight(ts, false, s, b),
+                        describe(x) + " made by connection (" + std::to_string(s) + ", " + std::to_string(t) + ")");
                 }
         // The merges at every camera vertex.
         MergeList list;
@@ -130,24 +131,24 @@ void checkScene(const std::string& file, ps::VcmMode mode, ps::Heuristic h, uint
                                             << merge.what << ": expected " << num(merge.oracle, 7) << ", got "
                                             << num(merge.student, 7) << "." << hints);
     if (vcm)
-        CHECK_MESSAGE(count.connections >= 200, where << ": expected at least 200 valid connections, got "
-                                                      << count.connections);
+        CHECK_MESSAGE(count.connections >= 200,
+                      where << ": expected at least 200 valid connections, got " << count.connections);
     CHECK_MESSAGE(count.merges >= 200, where << ": expected at least 200 merges from " << kSamples
-                                              << " camera subpaths at r = " << num(r) << ", got " << count.merges);
+                                             << " camera subpaths at r = " << num(r) << ", got " << count.merges);
     CHECK_MESSAGE(count.specular >= 20, where << ": expected at least 20 merges on paths through the mirror or "
                                                  "the glass, got "
                                               << count.specular);
-    CHECK_MESSAGE(count.point >= 20, where << ": expected at least 20 merges on paths from the point light, got "
-                                           << count.point);
+    CHECK_MESSAGE(count.point >= 20,
+                  where << ": expected at least 20 merges on paths from the point light, got " << count.point);
     if (scene.background >= 0)
         CHECK_MESSAGE(count.background >= 20,
                       where << ": expected at least 20 merges on paths from the background, got " << count.background);
     // A merge across an edge (the light vertex on one wall, the camera vertex on another) has no
     // path of its own to compare with (lesson13.h, mergedPath); the test needs most merges on one
     // surface.
-    CHECK_MESSAGE(count.otherSurface <= count.merges / 5,
-                  where << ": " << count.otherSurface << " merges joined vertices of two different surfaces, "
-                        << count.merges << " one surface");
+    CHECK_MESSAGE(count.otherSurface <= count.merges / 5, where << ": " << count.otherSurface
+                                                                << " merges joined vertices of two different surfaces, "
+                                                                << count.merges << " one surface");
     // The radius is chosen so that merges and connections share many paths; a test that saw only
     // weights near 0 and 1 could not see eta.
     CHECK_MESSAGE(count.shared >= 20, where << ": expected at least 20 merges whose weight lies between 0.05 and "

@@ -13,7 +13,8 @@ TEST_CASE("the radius of iteration i (Eq. 13.12) and the merging factor eta (Eq.
             const double expected = r1 * std::exp(0.5 * (alpha - 1.0) * std::log(double(i)));
             const double got = ps::vcmRadius(r1, i, alpha);
             // The exponent the student's radius falls with between i = 10 and i = 1000.
-            const double slope = std::log(ps::vcmRadius(r1, 1000, alpha) / ps::vcmRadius(r1, 10, alpha)) / std::log(100.0);
+            const double slope =
+                std::log(ps::vcmRadius(r1, 1000, alpha) / ps::vcmRadius(r1, 10, alpha)) / std::log(100.0);
             std::string hint;
             if (std::abs(slope - (alpha - 1.0)) < 1e-6 && alpha != 1.0)
                 hint = " (r falls like i^(alpha - 1): that is r^2's exponent, Eq. 13.12)";
@@ -22,9 +23,9 @@ TEST_CASE("the radius of iteration i (Eq. 13.12) and the merging factor eta (Eq.
             else if (std::abs(ps::vcmRadius(r1, 1, alpha) - r1) > 1e-12)
                 hint = " (iteration 1 must have r_1: iterations count from 1)";
             CHECK_MESSAGE(std::abs(got - expected) <= 1e-12 * expected,
-                          "vcmRadius(r1 = " << num(r1) << ", i = " << i << ", alpha = " << num(alpha)
-                                            << "): expected " << num(expected, 12) << ", got " << num(got, 12)
-                                            << "; r falls like i^" << num(slope, 6) << hint);
+                          "vcmRadius(r1 = " << num(r1) << ", i = " << i << ", alpha = " << num(alpha) << "): expected "
+                                            << num(expected, 12) << ", got " << num(got, 12) << "; r falls like i^"
+                                            << num(slope, 6) << hint);
         }
     }
     for (const double r : {1e-3, 0.5, 20.0})
@@ -36,7 +37,7 @@ TEST_CASE("the radius of iteration i (Eq. 13.12) and the merging factor eta (Eq.
                 hint = " (the number of light paths, n_VM, is missing)";
             else if (std::abs(got - double(n) * r * r) <= 1e-6 * got) hint = " (pi is missing)";
             CHECK_MESSAGE(std::abs(got - expected) <= 1e-6 * expected,
-                          "mergeFactor(r = " << num(r) << ", light paths " << n << "): expected "
-                                             << num(expected, 9) << ", got " << num(got, 9) << hint);
+                          "mergeFactor(r = " << num(r) << ", light paths " << n << "): expected " << num(expected, 9)
+                                             << ", got " << num(got, 9) << hint);
         }
 }

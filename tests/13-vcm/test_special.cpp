@@ -35,8 +35,8 @@ void checkSameBits(const std::string& file, uint64_t seed) {
     CHECK_MESSAGE(differ == 0, file << " (16 x 16, 4 spp, seed " << seed << "): expected vcm-bpt's image to be bpt's "
                                     << "bit for bit, got " << differ << " pixel channels that differ, the first at "
                                     << "pixel " << first << ": bpt "
-                                    << (first >= 0 ? str(a.mean.pixels[size_t(first)]) : "")
-                                    << ", vcm-bpt " << (first >= 0 ? str(b.mean.pixels[size_t(first)]) : "")
+                                    << (first >= 0 ? str(a.mean.pixels[size_t(first)]) : "") << ", vcm-bpt "
+                                    << (first >= 0 ? str(b.mean.pixels[size_t(first)]) : "")
                                     << " (a connection's weight with eta = 0 must be lesson 7's, Eq. 13.10)");
 }
 
@@ -73,13 +73,11 @@ TEST_CASE("vcm-ppm at a fixed radius equals lesson 8's progressive photon mappin
         ps::Image img(w, h);
         const ps::PhotonMap map = ps::tracePhotonMap(scene, ps::MapKind::Global, n, scene.settings.maxDepth,
                                                      seed ^ 0x5BE0CD19137E2179ull, uint32_t(it), stats);
-        ps::renderPixelTasks(seed ^ 0x1F83D9ABFB41BD6Bull, uint32_t(it), img, stats, false,
-                             [&](int pixel, ps::Rng& rng, ps::Task&) {
-                                 const ps::Ray ray =
-                                     ps::cameraRay(scene.camera, ps::jitteredRaster(pixel, w, rng), rng);
-                                 return ps::LiProgressive(scene, ray, rng, map, float(radius * radius),
-                                                          scene.settings.maxDepth);
-                             });
+        ps::renderPixelTasks(
+            seed ^ 0x1F83D9ABFB41BD6Bull, uint32_t(it), img, stats, false, [&](int pixel, ps::Rng& rng, ps::Task&) {
+                const ps::Ray ray = ps::cameraRay(scene.camera, ps::jitteredRaster(pixel, w, rng), rng);
+                return ps::LiProgressive(scene, ray, rng, map, float(radius * radius), scene.settings.maxDepth);
+            });
         film.addIteration(img);
     }
     const ps::Image mine = r.film.mean(), mineVar = r.film.varianceOfMean();

@@ -99,7 +99,8 @@ void checkScene(const std::string& file, ps::Heuristic h, bool connections, uint
         std::string worstText;
         for (const lesson07::JoinedPath& j : paths) {
             bool merges = false;
-            for (int e = 1; e <= int(j.x.size()) - 2; ++e) merges = merges || (mergesAt(j.x, e) && mergeDensity(j, e) > 0.0);
+            for (int e = 1; e <= int(j.x.size()) - 2; ++e)
+                merges = merges || (mergesAt(j.x, e) && mergeDensity(j, e) > 0.0);
             if (!merges) continue;  // bpm has no technique for it; vcm's weights are lesson 7's
             ++withMerge;
             std::string terms;
@@ -110,8 +111,8 @@ void checkScene(const std::string& file, ps::Heuristic h, bool connections, uint
                 worstText = describe(j.x) + ":" + terms + ", sum " + num(total, 7);
             }
         }
-        CHECK_MESSAGE(withMerge >= 50, file << ": expected at least 50 paths with a vertex to merge at, got "
-                                            << withMerge);
+        CHECK_MESSAGE(withMerge >= 50,
+                      file << ": expected at least 50 paths with a vertex to merge at, got " << withMerge);
         CHECK_MESSAGE(worst <= 1e-5, file << ", " << nameOf(h) << " heuristic, " << (connections ? "vcm" : "vcm-bpm")
                                           << ", eta " << num(eta)
                                           << ": expected the weights of every path's techniques to sum to 1 (+- "
