@@ -25,11 +25,10 @@ Color mergeAtVertex(const Scene& scene, const Subpath& camera, const MergeSums& 
                     const LightVertices& lights, const MergeOptions& opt, MergeRecorder* recorder) {
     // TODO(13) Eq. 13.3, 13.11: every light vertex y_e within opt.radius of z_f
     //          (lightVerticesWithin), except those whose merged path would have more than
-    //          opt.maxDepth bounces: C*_VM = beta^L_e f beta^E_f / (N pi r^2), f the camera vertex's
-    //          BSDF (towards z_{f-1}, towards the light vertex's predecessor y_{e-1}); weight 1 in
-    //          Ppm mode, else misWeightMerge of the merged path read as the connection (e, f + 1):
-    //          its mergePdfs, lesson 7's misWeightRecursive, and mergeTerms. Report each merge to
-    //          the recorder (if any); return the weighted sum.
+    //          opt.maxDepth bounces: its unweighted value C*_VM (Eq. 13.3, N = opt.lightPaths)
+    //          and its weight: 1 in Ppm mode, else misWeightMerge of the merged path read as the
+    //          connection (e, f + 1): its mergePdfs, lesson 7's misWeightRecursive, and
+    //          mergeTerms. Report each merge to the recorder (if any); return the weighted sum.
     //          Pitfalls: the search takes the squared radius; the merged path has e + f + 1
     //          vertices; the BSDF is the camera vertex's, the arriving direction the light's.
     (void)scene; (void)camera; (void)cameraSums; (void)f; (void)lights; (void)opt; (void)recorder;

@@ -20,9 +20,11 @@ double powerOf(double x, Heuristic h) { return h == Heuristic::Power ? x * x : x
 // reverse densities (Eq. 13.9); mergeEnd: whether the endpoint itself can be merged at.
 [[maybe_unused]] double sideTerms(const PathVertex* path, const double* sums, int e, double revEnd, double revPrev,
                                   bool mergeEnd, Heuristic h) {
-    //! TODO(13) Eq. 13.9 for one side: mu_e (p'_e)^b + r'_e^b (mu_{e-1} (p'_{e-1})^b + r'_{e-1}^b D_e),
-    //!          p' the connection's reverse densities, r' = p' / pdfFwd (use ratio), mu from
-    //!          mergeable (here mergeEnd for the endpoint). e = 0: the endpoint's term alone.
+    //! TODO(13) Eq. 13.9 for one side: the merges at the endpoint e, at e - 1 and before (D_e,
+    //!          sums[e]), with the connection's two new reverse densities in place of the stored
+    //!          ones (ratio gives r'^b); mu from mergeable, mergeEnd for the endpoint itself.
+    //!          e = 0: the endpoint alone. Pitfall: D_e is read as it is (it knows nothing of the
+    //!          connection); the ratios of e and e - 1 multiply what lies before them.
     //! STUB (void)path; (void)sums; (void)e; (void)revEnd; (void)revPrev; (void)mergeEnd; (void)h;
     //! STUB return PS_TODO("lesson 13: mergeTerms (one side)", 0.0);
     //! BEGIN
