@@ -158,8 +158,11 @@ Color mergeAtVertex(const Scene& scene, const Subpath& camera, const MergeSums& 
 struct VcmOptions {
     VcmMode mode = VcmMode::Vcm;
     Heuristic heuristic = Heuristic::Power;
-    double radiusFactor = 0.003;  // r_1 as a fraction of the scene's bounding radius
-    double alpha = 0.75;          // the radius schedule's alpha (Eq. 13.12)
+    // r_1 = radiusFactor R sqrt(512^2 / N): a fraction of the scene's bounding radius R at 512 x 512
+    // pixels (SmallVCM's default there), scaled with the pixels' footprint sqrt(1 / N), N = width x
+    // height light paths, so that a merge finds about as many light vertices at any resolution.
+    double radiusFactor = 0.003;
+    double alpha = 0.75;  // the radius schedule's alpha (Eq. 13.12)
 };
 
 // The merging sums of a whole subpath (updateMergeSum for every vertex).
@@ -185,6 +188,9 @@ Color vcmSample(const Scene& scene, const Vec2& raster, Rng& rng, const VcmOptio
 constexpr uint64_t kVcmLightSalt = 0x510E527FADE682D1ull;
 void traceLightSubpaths(const Scene& scene, int lightPaths, Heuristic h, uint64_t seed, uint32_t iteration,
                         LightVertices& lights, SampleStats& stats);
+
+// r_1 of Eq. 13.12 for these options, a scene and N light paths (VcmOptions::radiusFactor).
+double vcmFirstRadius(const VcmOptions& opt, const Scene& scene, int lightPaths);
 
 // An integrator with these options (the registered ones: vcm, vcm-balance, vcm-bpt, vcm-bpm, vcm-ppm).
 std::unique_ptr<Integrator> makeVcmIntegrator(const VcmOptions& opt);

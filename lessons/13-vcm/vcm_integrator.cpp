@@ -20,6 +20,7 @@
 #include <omp.h>
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include "13-vcm/vcm.h"
 #include "tasks.h"
@@ -107,7 +108,7 @@ struct VcmIntegrator : Integrator {
         m.lightPaths = out.width * out.height;
         m.maxDepth = scene.settings.maxDepth;
         if (opt.mode != VcmMode::Bpt)
-            m.radius = vcmRadius(opt.radiusFactor * double(scene.radius), int(iteration) + 1, opt.alpha);
+            m.radius = vcmRadius(vcmFirstRadius(opt, scene, m.lightPaths), int(iteration) + 1, opt.alpha);
         return m;
     }
 
@@ -189,6 +190,10 @@ using VcmBpm = Registered<VcmMode::Bpm>;
 using VcmPpm = Registered<VcmMode::Ppm>;
 
 }  // namespace
+
+double vcmFirstRadius(const VcmOptions& opt, const Scene& scene, int lightPaths) {
+    return opt.radiusFactor * double(scene.radius) * 512.0 / std::sqrt(double(std::max(lightPaths, 1)));
+}
 
 std::unique_ptr<Integrator> makeVcmIntegrator(const VcmOptions& opt) { return std::make_unique<VcmIntegrator>(opt); }
 

@@ -28,7 +28,8 @@ using namespace lesson13;
 
 namespace {
 
-constexpr double kRadiusFactor = 0.04;  // r_1 as a fraction of the scene's bounding radius
+// r_1 = 0.04 R at 32 x 32 pixels (VcmOptions::radiusFactor is that at 512 x 512: 0.04 x 32 / 512).
+constexpr double kRadiusFactor = 0.04 * 32.0 / 512.0;
 constexpr int kIterations = 1024;
 constexpr double kRateBound = 0.5, kFinalBound = 0.5, kBiasBound = 0.06;
 
@@ -108,7 +109,7 @@ TEST_CASE(
     };
     const ps::RenderResult r = ps::render(scene, *vcm, ro);
     const std::string where =
-        "vcm on tests/13-vcm/data/sds-test.scene (32 x 32, r_1 = " + num(kRadiusFactor * double(scene.radius)) +
+        "vcm on tests/13-vcm/data/sds-test.scene (32 x 32, r_1 = " + num(ps::vcmFirstRadius(opt, scene, 32 * 32)) +
         ", alpha 0.75), the caustic's " + std::to_string(int(std::count(region.begin(), region.end(), true))) +
         " pixels";
     const std::string hint =

@@ -51,7 +51,8 @@ TEST_CASE("without merging, vcm renders lesson 7's bpt image bit for bit [2 pts]
 TEST_CASE("vcm-ppm at a fixed radius equals lesson 8's progressive photon mapping at that radius (z-test) [2 pts]") {
     const ps::Scene scene = loadSceneAt("tests/13-vcm/data/ppm-open.scene", 16, 16);
     constexpr int kIterations = 256;
-    constexpr double kRadiusFactor = 0.05;  // of the scene's bounding radius: a caustic a few radii wide
+    // r = 0.05 R at 16 x 16 (VcmOptions::radiusFactor is that at 512 x 512): a caustic a few radii wide.
+    constexpr double kRadiusFactor = 0.05 * 16.0 / 512.0;
     const uint64_t seed = ps::testseed::seed(13404);
     const int w = scene.camera.width(), h = scene.camera.height(), n = w * h;
     // vcm-ppm, alpha = 1.
@@ -66,7 +67,7 @@ TEST_CASE("vcm-ppm at a fixed radius equals lesson 8's progressive photon mappin
     ro.threads = 1;
     const ps::RenderResult r = ps::render(scene, *vcm, ro);
     // Lesson 8's ppm at the same radius, pass by pass (ppm_integrator.cpp without the schedule).
-    const double radius = kRadiusFactor * double(scene.radius);
+    const double radius = ps::vcmFirstRadius(opt, scene, n);
     ps::Film film(w, h);
     ps::SampleStats stats;
     for (int it = 0; it < kIterations; ++it) {
@@ -91,4 +92,18 @@ TEST_CASE("vcm-ppm at a fixed radius equals lesson 8's progressive photon mappin
                                 << " fixed; a = vcm-ppm, b = lesson 8's), got\n  " << z.report);
     CHECK_MESSAGE(r.stats.nan + r.stats.inf == 0,
                   "vcm-ppm: " << r.stats.nan << " NaN and " << r.stats.inf << " Inf samples");
+}
+
+TEST_CASE("vcm's image does not depend on the number of threads [1 pt]") {
+    const ps::Scene scene = loadSceneAt("tests/13-vcm/data/open-box.scene", 16, 16);
+    for (const char* algo : {"vcm", "vcm-bpm", "vcm-ppm"}) {
+        const ps::testrender::Render a = ps::testrender::render(scene, algo, 3, ps::testseed::seed(13405), 1);
+        const ps::testrender::Render b = ps::testrender::render(scene, algo, 3, ps::testseed::seed(13405), 2);
+        CHECK_MESSAGE(ps::testrender::total(a.mean) > 0.0, algo << ": a black image");
+        int differ = 0;
+        for (size_t i = 0; i < a.mean.pixels.size(); ++i)
+            for (int c = 0; c < 3; ++c) differ += a.mean.pixels[i][c] != b.mean.pixels[i][c];
+        CHECK_MESSAGE(differ == 0, algo << " on the open box (16 x 16, 3 spp): " << differ
+                                        << " pixel channels differ between 1 and 2 threads");
+    }
 }
