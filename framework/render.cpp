@@ -1,6 +1,7 @@
 #include "render.h"
 #include <omp.h>
 #include <chrono>
+#include <ctime>
 #include <cstdio>
 #include <ostream>
 #include <sstream>
@@ -14,6 +15,13 @@ const char* const kErrorCsvHeader = "iteration,spp,seconds,mse,relmse,relmse_tri
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
+// Seconds on the wall clock, or of this process's CPU time (RenderOptions::cpuTime), since some
+// fixed moment: only differences mean anything.
+double clockSeconds(bool cpuTime) {
+    if (cpuTime) return double(std::clock()) / CLOCKS_PER_SEC;
+    return std::chrono::duration<double>(Clock::now().time_since_epoch()).count();
+}
 
 void drawProgress(int done, int total, double seconds, double budget) {
     const double frac = total > 0 ? double(done) / total : (budget > 0 ? std::min(1.0, seconds / budget) : 0.0);
@@ -58,21 +66,21 @@ RenderResult render(const Scene& scene, Integrator& integrator, const RenderOpti
     double elapsed = 0.0, lastDraw = -1.0;
     int lastCheckpoint = 0;
     checkCamera(scene, integrator);
-    auto t0 = Clock::now();
+    double t0 = clockSeconds(opt.cpuTime);
     integrator.prepare(scene);
-    elapsed += std::chrono::duration<double>(Clock::now() - t0).count();
+    elapsed += clockSeconds(opt.cpuTime) - t0;
 
     Image iterImage(res.film.width(), res.film.height());
     for (int it = 0;; ++it) {
         if (opt.spp > 0 && it >= opt.spp) break;
         if (opt.seconds > 0.0 && elapsed >= opt.seconds) break;
         if (opt.spp <= 0 && opt.seconds <= 0.0) break;
-        t0 = Clock::now();
+        t0 = clockSeconds(opt.cpuTime);
         std::fill(iterImage.pixels.begin(), iterImage.pixels.end(), Color(0.0f));
         integrator.renderIteration(scene, static_cast<uint32_t>(it), opt.seed, iterImage, res.stats);
         if (integrator.latestIterationIsImage()) res.film = Film(res.film.width(), res.film.height());
         res.film.addIteration(iterImage);
-        elapsed += std::chrono::duration<double>(Clock::now() - t0).count();
+        elapsed += clockSeconds(opt.cpuTime) - t0;
         res.iterations = it + 1;
 
         // Metrics and the progress bar are not counted as render time.

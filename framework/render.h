@@ -12,6 +12,10 @@ namespace ps {
 struct RenderOptions {
     int spp = 0;           // iterations to run (0: none, unless a time budget is given)
     double seconds = 0.0;  // time budget (0: none); the loop stops at whichever comes first
+    // Render time (the budget, the CSV's and the checkpoints' seconds) as this process's CPU time,
+    // all threads together, instead of the wall clock: runs stay comparable on a machine that
+    // other jobs share (with T threads busy it runs T times as fast as the wall clock).
+    bool cpuTime = false;
     uint64_t seed = 0;
     int threads = 0;                   // 0: all cores
     bool progress = false;             // draw a progress bar on stderr

@@ -37,6 +37,8 @@ const char* const kUsage = R"(converge options:
                      slope -1 guide), efficiency.md, equal-time.png (the algorithms' images at
                      the end of the budget, left to right in --algos order, then the reference,
                      each under its label: algorithm and spp)
+  --cpu-time         every budget and time in seconds of the process's CPU time (all threads),
+                     not of the wall clock: fair comparisons on a machine other jobs share
   --threads T, --maxdepth D, --no-prune, --progress/--no-progress   as for render
   --paths EXPR       every algorithm (and --ref-algo) renders only the paths EXPR matches, as
                      for render (a given --reference must be rendered with it too)
@@ -80,6 +82,7 @@ int runConverge(const std::vector<std::string>& args) {
         else if (a == "--progress") opt.progress = true;
         else if (a == "--no-progress") opt.progress = false;
         else if (a == "--no-prune") prune = false;
+        else if (a == "--cpu-time") opt.cpuTime = true;
         else if (a == "--paths") paths = parsePathsOption(value());
         else if (!a.empty() && a[0] == '-') throw UsageError("unknown option '" + a + "'");
         else if (scenePath.empty()) scenePath = a;
@@ -132,6 +135,7 @@ int runConverge(const std::vector<std::string>& args) {
         auto integrator = makeIntegrator(refAlgo, opt.paths);
         RenderOptions ro;
         ro.seconds = refSeconds > 0.0 ? refSeconds : 10.0 * opt.seconds;
+        ro.cpuTime = opt.cpuTime;
         ro.seed = 1000003;  // independent of the compared runs (seeds 0 .. K-1)
         ro.threads = opt.threads;
         ro.progress = opt.progress;

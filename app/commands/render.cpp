@@ -20,6 +20,8 @@ const char* const kUsage = R"(render options:
   --spp N            iterations (samples per pixel) to render (default: the scene's)
   --time SECONDS     stop after this much render time instead (with --spp: whichever first);
                      a positive finite number
+  --cpu-time         render time in seconds of the process's CPU time (all threads), not of
+                     the wall clock (--time, the summary, the --csv log)
   --maxdepth D       maximum number of bounces, 0 = emission seen directly (default: the scene's)
   --seed S           random seed (default 0); the same seed gives the same image
   --threads T        worker threads, 1 to 1024 (default: all cores); the image does not
@@ -44,6 +46,7 @@ int runRender(const std::vector<std::string>& args) {
     std::string scenePath, algo, out, reference, csvPath, variancePath;
     int spp = 0, threads = 0, maxDepth = -1, shots = 0, elements[2] = {0, 0};
     double seconds = 0.0;
+    bool cpuTime = false;
     uint64_t seed = 0;
     bool progress = stderrIsTerminal(), prune = true;
     std::optional<PathExpression> paths;
@@ -54,6 +57,7 @@ int runRender(const std::vector<std::string>& args) {
         if (a == "--algo") algo = value();
         else if (a == "--spp") spp = parseAtLeast<int>(a, value(), 1);
         else if (a == "--time") seconds = parsePositive(a, value());
+        else if (a == "--cpu-time") cpuTime = true;
         else if (a == "--maxdepth") maxDepth = parseAtLeast<int>(a, value(), 0);
         else if (a == "--seed") seed = parseNumber<uint64_t>(a, value());
         else if (a == "--threads") threads = parseWithin<int>(a, value(), 1, kMaxThreads);
@@ -119,6 +123,7 @@ int runRender(const std::vector<std::string>& args) {
     RenderOptions opt;
     opt.spp = spp;
     opt.seconds = seconds;
+    opt.cpuTime = cpuTime;
     opt.seed = seed;
     opt.threads = threads;
     opt.progress = progress;

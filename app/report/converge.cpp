@@ -95,6 +95,7 @@ ConvergenceReport runConvergence(const Scene& scene, const Image& reference, con
             auto integrator = makeIntegrator(algo, opt.paths);
             RenderOptions ro;
             ro.seconds = opt.seconds;
+            ro.cpuTime = opt.cpuTime;
             ro.spp = opt.spp;
             ro.seed = static_cast<uint64_t>(seed);
             ro.threads = opt.threads;

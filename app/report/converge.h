@@ -48,6 +48,7 @@ std::vector<bool> leftOutMask(const Scene& scene, const std::vector<PointLightPi
 struct ConvergeOptions {
     std::vector<std::string> algos;
     double seconds = 1.0;  // time budget of each algorithm and seed (0: none)
+    bool cpuTime = false;  // seconds of process CPU time, not wall-clock time (RenderOptions::cpuTime)
     int spp = 0;           // samples per pixel of each run (0: none); with both, whichever first
     Regions regions;       // empty: no per-region errors
     int seeds = 1;         // independent runs per algorithm (seeds 0 .. seeds-1), averaged
