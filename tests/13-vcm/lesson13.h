@@ -8,6 +8,7 @@
 #include <sstream>
 #include <string>
 #include <vector>
+#include "../08-photon-mapping/lesson08.h"
 #include "13-vcm/vcm.h"
 #include "format.h"
 #include "lesson_files.h"
@@ -36,15 +37,8 @@ using ps::fmt::str;
 // share of the whole course's 1 % (tests/support/alpha.h).
 constexpr int kStatisticalTests = 2;
 inline double alpha() { return ps::testalpha::perTest(kStatisticalTests); }
-// The two-sided normal quantile of alpha(): |z| above it fails.
-inline double zCritical() {
-    double lo = 0.0, hi = 20.0;
-    for (int i = 0; i < 200; ++i) {
-        const double mid = 0.5 * (lo + hi);
-        (ps::stats::normalTwoSided(mid) > alpha() ? lo : hi) = mid;
-    }
-    return hi;
-}
+// The two-sided normal quantile of alpha(): |z| above it fails (lesson 8's helper).
+inline double zCritical() { return lesson08::zCriticalAt(alpha()); }
 
 inline double exponentOf(ps::Heuristic h) { return h == ps::Heuristic::Power ? 2.0 : 1.0; }
 inline const char* nameOf(ps::Heuristic h) { return h == ps::Heuristic::Power ? "power" : "balance"; }

@@ -13,6 +13,7 @@
 //
 // The oracle is lesson 6 AS LINKED (lesson 7's test says why that is right for grading), and
 // lesson 7's subpaths and connections as linked.
+#include "../07-bidirectional/lesson07.h"
 #include "lesson13.h"
 
 using namespace lesson13;
@@ -68,25 +69,19 @@ void checkScene(const std::string& file, ps::VcmMode mode, ps::Heuristic h, uint
         const ps::MergeSums lightSums(pass.lights.subpathSums(li),
                                       pass.lights.subpathSums(li) + pass.lights.length(li));
         if (vcm)
-            for (int t = 1; t <= int(camera.size()); ++t)
-                for (int s = 0; s <= std::max(int(light.size()), 1); ++s) {
-                    if (s + t < 2 || (t == 1 && s == 0) || s + t - 2 > maxDepth) continue;
-                    if (s > int(light.size()) && !(s == 1 && t >= 2)) continue;
-                    const ps::Connection c = ps::connect(scene, light, camera, s, t, rng.uniform(), rng.uniform2());
-                    if (!c.valid) continue;
-                    const PathVertex* y = s == 1 ? &c.sampledLight : light.data();
-                    const float w7 = ps::misWeightRecursive(y, s, camera.data(), t, c.rev, h);
-                    const double m =
-                        ps::mergeTerms(y, lightSums.data(), s, camera.data(), cameraSums.data(), t, c.rev, h);
-                    const float w = ps::misWeightConnection(w7, eta, m, h);
-                    const ps::Path x = joinPath(y, s, camera.data(), t);
-                    const std::vector<Technique> ts = oracleTechniques(scene, x, eta, true);
-                    if (!(ts[size_t(s)].density > 0.0)) continue;  // lesson 7's test counts these
-                    ++count.connections;
-                    connection.offer(
-                        w, oracleWeight(ts, false, s, b),
-                        describe(x) + " made by connection (" + std::to_string(s) + ", " + std::to_string(t) + ")");
-                }
+            lesson07::forEachConnection(scene, light, camera, rng, [&](const ps::Connection& c, int s, int t) {
+                const PathVertex* y = s == 1 ? &c.sampledLight : light.data();
+                const float w7 = ps::misWeightRecursive(y, s, camera.data(), t, c.rev, h);
+                const double m = ps::mergeTerms(y, lightSums.data(), s, camera.data(), cameraSums.data(), t, c.rev, h);
+                const float w = ps::misWeightConnection(w7, eta, m, h);
+                const ps::Path x = joinPath(y, s, camera.data(), t);
+                const std::vector<Technique> ts = oracleTechniques(scene, x, eta, true);
+                if (!(ts[size_t(s)].density > 0.0)) return;  // lesson 7's test counts these
+                ++count.connections;
+                connection.offer(
+                    w, oracleWeight(ts, false, s, b),
+                    describe(x) + " made by connection (" + std::to_string(s) + ", " + std::to_string(t) + ")");
+            });
         // The merges at every camera vertex.
         MergeList list;
         for (int f = 1; f < int(camera.size()); ++f)
