@@ -15,8 +15,8 @@
 # samples, such as scene 2's caustics of a point light seen through glass). Each render's process
 # CPU time (user + system, bash's `time`) is measured too: on a shared machine the efficiency per
 # CPU second, 1 / (relMSE x CPU seconds), is the comparable figure.
-# The reference is pathspace's bpt for 8 x SECONDS (kept in $OUT/reference.pfm and reused when
-# present). SmallVCM's -t counts process CPU time (clock()), which with 2 threads is twice the
+# The reference is pathspace's bpt for 8 x SECONDS on THREADS threads, in CPU time (kept in
+# $OUT/reference.pfm and reused when present). SmallVCM's -t counts process CPU time (clock()), which with 2 threads is twice the
 # wall time, so SmallVCM is given a number of iterations instead: its rate is measured on a short
 # run first, and the iterations are chosen to fill SECONDS; both wall times are measured here
 # and printed, and the efficiency 1 / (relMSE x seconds) evens out what is left.
@@ -43,9 +43,10 @@ now() { date +%s.%N; }
 calc() { awk "BEGIN { print $1 }"; }  # floating-point arithmetic (awk is in every Debian)
 REF_ALGO=${REF_ALGO:-bpt}
 if [[ ! -f reference.pfm ]]; then
-  echo "reference: pathspace $REF_ALGO for $((8 * SECONDS_EACH)) s ..."
-  "$BUILD/pathspace" render "$SCENE" --algo "$REF_ALGO" --time $((8 * SECONDS_EACH)) --threads "$THREADS" \
-    --seed 1000 --out reference.pfm --no-progress 2>&1 | grep ' spp in '
+  # 8 x SECONDS on THREADS threads' worth of CPU time (the same on an idle machine, fair on a busy one)
+  echo "reference: pathspace $REF_ALGO for $((8 * SECONDS_EACH * THREADS)) CPU seconds ..."
+  "$BUILD/pathspace" render "$SCENE" --algo "$REF_ALGO" --time $((8 * SECONDS_EACH * THREADS)) --cpu-time \
+    --threads "$THREADS" --seed 1000 --out reference.pfm --no-progress 2>&1 | grep ' spp in '
 fi
 TIMEFORMAT='%U %S'                     # bash's `time`: the process's user and system CPU seconds
 cpu() { awk '{ print $1 + $2 }' "$1"; }
