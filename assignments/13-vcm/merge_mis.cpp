@@ -48,33 +48,31 @@ void updateMergeSum(const Subpath& path, size_t i, Heuristic h, MergeSums& sums)
     sums[i] = PS_TODO("lesson 13: updateMergeSum", 0.0);
 }
 
-double mergeTerms(const PathVertex* y, const double* yMerge, int s, const PathVertex* z, const double* zMerge, int t,
-                  const ReversePdfs& rev, Heuristic h) {
+double mergeTerms(const SubpathSide& light, const SubpathSide& camera, const ReversePdfs& rev, Heuristic h) {
     // TODO(13) Eq. 13.9: M = M^L + M^E, each side from its endpoint (sideTerms) with the
     //          connection's reverse densities (light side: lightEnd, lightPrev; camera side:
     //          cameraEnd, cameraPrev). Pitfalls: s = 0 has no light side, and its camera endpoint
     //          is the path's first vertex (on the light): no merge there; t = 1's endpoint is the
     //          camera.
-    (void)y; (void)yMerge; (void)s; (void)z; (void)zMerge; (void)t; (void)rev; (void)h;
+    (void)light; (void)camera; (void)rev; (void)h;
     return PS_TODO("lesson 13: mergeTerms", 0.0);
 }
 
-float misWeightConnection(float wBpt, double eta, double mergeTermsM, Heuristic h) {
+float misWeightConnection(float wBpt, double mergeTermsM, const VcmMis& mis) {
     // TODO(13) Eq. 13.10: lesson 7's weight has the connections' sum in its denominator (1 / w);
     //          add the merges' eta^b M. In double. Pitfall: eta to the power b as well.
-    (void)wBpt; (void)eta; (void)mergeTermsM; (void)h;
+    (void)wBpt; (void)mergeTermsM; (void)mis;
     return PS_TODO("lesson 13: misWeightConnection", 0.0f);
 }
 
-float misWeightMerge(float wBpt, bool connects, const ReversePdfs& rev, double eta, double mergeTermsM, Heuristic h,
-                     bool connections) {
+float misWeightMerge(float wBpt, bool connects, const ReversePdfs& rev, double mergeTermsM, const VcmMis& mis) {
     // TODO(13) Eq. 13.11: the merge's own term (eta p_L(z_f))^b over the sum of every technique's,
     //          all relative to the connection (s, f + 1) of the same path: the connections' sum is
     //          1 / wBpt - 1 (lesson 7's weight counts its own technique as the 1) plus 1 if that
     //          connection is a technique; the merges' eta^b M. Without connections, only the
     //          merges. Pitfalls: p_L(z_f) is the LIGHT side's density of the camera vertex (rev);
     //          0 if the denominator is 0.
-    (void)wBpt; (void)connects; (void)rev; (void)eta; (void)mergeTermsM; (void)h; (void)connections;
+    (void)wBpt; (void)connects; (void)rev; (void)mergeTermsM; (void)mis;
     return PS_TODO("lesson 13: misWeightMerge", 0.0f);
 }
 

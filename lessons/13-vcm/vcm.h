@@ -54,27 +54,39 @@ bool mergeable(const PathVertex* path, int i);
 // Resizes sums to i + 1 and sets sums[i].
 void updateMergeSum(const Subpath& path, size_t i, Heuristic h, MergeSums& sums);
 
+// One subpath's side of a joined path y_0 .. y_{s-1} z_{t-1} .. z_0: its vertices y_0 .. y_{s-1}
+// (or z_0 .. z_{t-1}) and their merging sums (not read when count <= 1).
+struct SubpathSide {
+    const PathVertex* vertices = nullptr;
+    const double* mergeSums = nullptr;
+    int count = 0;  // s (or t)
+};
+
 // The merging part of the denominator of a joined path's weight, M = M^L + M^E of Eq. 13.9, for
 // the path y_0 .. y_{s-1} z_{t-1} .. z_0 joined by a connection with reverse densities rev (lesson
 // 7's connectionPdfs): the sum over the merges at every vertex the path can merge at, of their
-// densities relative to technique (s, t) without the factor eta^b. yMerge and zMerge are the
-// subpaths' sums (yMerge is not read for s <= 1, zMerge not for t <= 1). Pitfall: the last vertex
-// of a camera subpath that hit a light (s = 0) is the path's first vertex: no merge there.
-double mergeTerms(const PathVertex* y, const double* yMerge, int s, const PathVertex* z, const double* zMerge, int t,
-                  const ReversePdfs& rev, Heuristic h);
+// densities relative to technique (s, t), without the factor eta^b. Pitfall: the last vertex of a
+// camera subpath that hit a light (s = 0) is the path's first vertex: no merge there.
+double mergeTerms(const SubpathSide& light, const SubpathSide& camera, const ReversePdfs& rev, Heuristic h);
+
+// What the weights of connections and merges depend on besides the path.
+struct VcmMis {
+    Heuristic heuristic = Heuristic::Power;
+    double eta = 0.0;         // Eq. 13.5 (0: no merging)
+    bool connections = true;  // the connections are techniques (false: bidirectional photon mapping)
+};
 
 // The weight of connection (s, t) among connections AND merges (Eq. 13.10), from its weight wBpt
 // among the connections alone (lesson 7's) and M = mergeTerms of its path.
-float misWeightConnection(float wBpt, double eta, double mergeTermsM, Heuristic h);
+float misWeightConnection(float wBpt, double mergeTermsM, const VcmMis& mis);
 
 // The weight of a merge (Eq. 13.11) of light vertex y_e with camera vertex z_f, read as the
 // connection (s = e, t = f + 1) of the merged path y_0 .. y_{e-1} z_f .. z_0 (section 1.5): wBpt
 // that connection's lesson 7 weight, rev the merge's junction densities (mergePdfs; rev.cameraEnd
 // is the light side's density of the merge vertex), connects whether that connection is itself a
-// technique (y_{e-1} not specular), M its mergeTerms. With connections false (bidirectional
-// photon mapping) merges are weighted against merges only.
-float misWeightMerge(float wBpt, bool connects, const ReversePdfs& rev, double eta, double mergeTermsM, Heuristic h,
-                     bool connections);
+// technique (y_{e-1} not specular), M its mergeTerms. Without connections (mis.connections false)
+// merges are weighted against merges only.
+float misWeightMerge(float wBpt, bool connects, const ReversePdfs& rev, double mergeTermsM, const VcmMis& mis);
 
 // ---- the light vertices of an iteration, searched by lesson 8's kd-tree (light_vertices.cpp) ----
 

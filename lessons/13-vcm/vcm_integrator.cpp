@@ -47,13 +47,15 @@ Color vcmSample(const Scene& scene, const Vec2& raster, Rng& rng, const VcmOptio
             light.assign(y, y + lights->length(pixel));
             lightSums.assign(d, d + lights->length(pixel));
         }
-        const double eta = merging ? mergeFactor(merge.radius, merge.lightPaths) : 0.0;
+        VcmMis mis;
+        mis.heuristic = opt.heuristic;
+        mis.eta = merging ? mergeFactor(merge.radius, merge.lightPaths) : 0.0;
         BptOptions bpt;
         bpt.heuristic = opt.heuristic;
         bpt.techniqueWeight = [&](float w, const PathVertex* y, int s, const PathVertex* z, int t,
                                   const ReversePdfs& rev) {
-            const double m = mergeTerms(y, lightSums.data(), s, z, cameraSums.data(), t, rev, opt.heuristic);
-            return misWeightConnection(w, eta, m, opt.heuristic);
+            const double m = mergeTerms({y, lightSums.data(), s}, {z, cameraSums.data(), t}, rev, opt.heuristic);
+            return misWeightConnection(w, m, mis);
         };
         L += connectSubpaths(scene, camera, light, raster, rng, bpt, splat, recorders.connections);
     } else {

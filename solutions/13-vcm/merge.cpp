@@ -53,7 +53,11 @@ Color mergeAtVertex(const Scene& scene, const Subpath& camera, const MergeSums& 
     if (found.empty()) return sum;
     const Material& material = scene.materials[size_t(z.sp.material)];
     const Vec3 wo = direction(z, camera[size_t(f) - 1]);
-    const double eta = mergeFactor(r, opt.lightPaths);
+    VcmMis mis;
+    mis.heuristic = opt.heuristic;
+    mis.eta = mergeFactor(r, opt.lightPaths);
+    mis.connections = opt.mode == VcmMode::Vcm;
+    const SubpathSide cameraSide{camera.data(), cameraSums.data(), f + 1};
     const float normalisation = static_cast<float>(1.0 / (double(kPi) * r * r * double(opt.lightPaths)));
     for (const LightVertexRef& ref : found) {
         const int e = int(ref.index);
@@ -65,12 +69,10 @@ Color mergeAtVertex(const Scene& scene, const Subpath& camera, const MergeSums& 
         const Color unweighted = y.beta * fs * z.beta * normalisation;
         float w = 1.0f;
         if (opt.mode != VcmMode::Ppm) {
-            const int t = f + 1;
             const ReversePdfs rev = mergePdfs(scene, light, e, camera.data(), f);
-            const float wBpt = misWeightRecursive(light, e, camera.data(), t, rev, opt.heuristic);
-            const double m = mergeTerms(light, lights.subpathSums(ref.path), e, camera.data(), cameraSums.data(), t,
-                                        rev, opt.heuristic);
-            w = misWeightMerge(wBpt, !light[e - 1].specular, rev, eta, m, opt.heuristic, opt.mode == VcmMode::Vcm);
+            const float wBpt = misWeightRecursive(light, e, camera.data(), f + 1, rev, opt.heuristic);
+            const double m = mergeTerms({light, lights.subpathSums(ref.path), e}, cameraSide, rev, opt.heuristic);
+            w = misWeightMerge(wBpt, !light[e - 1].specular, rev, m, mis);
         }
         sum += unweighted * w;
         if (recorder) recorder->add(ref, f, unweighted, w);

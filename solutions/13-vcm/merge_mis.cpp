@@ -69,47 +69,49 @@ void updateMergeSum(const Subpath& path, size_t i, Heuristic h, MergeSums& sums)
     //! END
 }
 
-double mergeTerms(const PathVertex* y, const double* yMerge, int s, const PathVertex* z, const double* zMerge, int t,
-                  const ReversePdfs& rev, Heuristic h) {
+double mergeTerms(const SubpathSide& light, const SubpathSide& camera, const ReversePdfs& rev, Heuristic h) {
     //! TODO(13) Eq. 13.9: M = M^L + M^E, each side from its endpoint (sideTerms) with the
     //!          connection's reverse densities (light side: lightEnd, lightPrev; camera side:
     //!          cameraEnd, cameraPrev). Pitfalls: s = 0 has no light side, and its camera endpoint
     //!          is the path's first vertex (on the light): no merge there; t = 1's endpoint is the
     //!          camera.
-    //! STUB (void)y; (void)yMerge; (void)s; (void)z; (void)zMerge; (void)t; (void)rev; (void)h;
+    //! STUB (void)light; (void)camera; (void)rev; (void)h;
     //! STUB return PS_TODO("lesson 13: mergeTerms", 0.0);
     //! BEGIN
+    const PathVertex *y = light.vertices, *z = camera.vertices;
+    const int s = light.count, t = camera.count;
     double m = 0.0;
-    if (s >= 1) m += sideTerms(y, yMerge, s - 1, rev.lightEnd, rev.lightPrev, mergeable(y, s - 1), h);
-    if (t >= 1) m += sideTerms(z, zMerge, t - 1, rev.cameraEnd, rev.cameraPrev, s >= 1 && mergeable(z, t - 1), h);
+    if (s >= 1) m += sideTerms(y, light.mergeSums, s - 1, rev.lightEnd, rev.lightPrev, mergeable(y, s - 1), h);
+    if (t >= 1)
+        m += sideTerms(z, camera.mergeSums, t - 1, rev.cameraEnd, rev.cameraPrev, s >= 1 && mergeable(z, t - 1), h);
     return m;
     //! END
 }
 
-float misWeightConnection(float wBpt, double eta, double mergeTermsM, Heuristic h) {
+float misWeightConnection(float wBpt, double mergeTermsM, const VcmMis& mis) {
     //! TODO(13) Eq. 13.10: lesson 7's weight has the connections' sum in its denominator (1 / w);
     //!          add the merges' eta^b M. In double. Pitfall: eta to the power b as well.
-    //! STUB (void)wBpt; (void)eta; (void)mergeTermsM; (void)h;
+    //! STUB (void)wBpt; (void)mergeTermsM; (void)mis;
     //! STUB return PS_TODO("lesson 13: misWeightConnection", 0.0f);
     //! BEGIN
-    return static_cast<float>(1.0 / (1.0 / double(wBpt) + powerOf(eta, h) * mergeTermsM));
+    return static_cast<float>(1.0 / (1.0 / double(wBpt) + powerOf(mis.eta, mis.heuristic) * mergeTermsM));
     //! END
 }
 
-float misWeightMerge(float wBpt, bool connects, const ReversePdfs& rev, double eta, double mergeTermsM, Heuristic h,
-                     bool connections) {
+float misWeightMerge(float wBpt, bool connects, const ReversePdfs& rev, double mergeTermsM, const VcmMis& mis) {
     //! TODO(13) Eq. 13.11: the merge's own term (eta p_L(z_f))^b over the sum of every technique's,
     //!          all relative to the connection (s, f + 1) of the same path: the connections' sum is
     //!          1 / wBpt - 1 (lesson 7's weight counts its own technique as the 1) plus 1 if that
     //!          connection is a technique; the merges' eta^b M. Without connections, only the
     //!          merges. Pitfalls: p_L(z_f) is the LIGHT side's density of the camera vertex (rev);
     //!          0 if the denominator is 0.
-    //! STUB (void)wBpt; (void)connects; (void)rev; (void)eta; (void)mergeTermsM; (void)h; (void)connections;
+    //! STUB (void)wBpt; (void)connects; (void)rev; (void)mergeTermsM; (void)mis;
     //! STUB return PS_TODO("lesson 13: misWeightMerge", 0.0f);
     //! BEGIN
-    const double self = powerOf(eta * double(rev.cameraEnd), h);
-    double sum = powerOf(eta, h) * mergeTermsM;
-    if (connections) sum += 1.0 / double(wBpt) - 1.0 + (connects ? 1.0 : 0.0);
+    const Heuristic h = mis.heuristic;
+    const double self = powerOf(mis.eta * double(rev.cameraEnd), h);
+    double sum = powerOf(mis.eta, h) * mergeTermsM;
+    if (mis.connections) sum += 1.0 / double(wBpt) - 1.0 + (connects ? 1.0 : 0.0);
     return sum > 0.0 ? static_cast<float>(self / sum) : 0.0f;
     //! END
 }

@@ -72,8 +72,12 @@ void checkScene(const std::string& file, ps::VcmMode mode, ps::Heuristic h, uint
             lesson07::forEachConnection(scene, light, camera, rng, [&](const ps::Connection& c, int s, int t) {
                 const PathVertex* y = s == 1 ? &c.sampledLight : light.data();
                 const float w7 = ps::misWeightRecursive(y, s, camera.data(), t, c.rev, h);
-                const double m = ps::mergeTerms(y, lightSums.data(), s, camera.data(), cameraSums.data(), t, c.rev, h);
-                const float w = ps::misWeightConnection(w7, eta, m, h);
+                const double m =
+                    ps::mergeTerms({y, lightSums.data(), s}, {camera.data(), cameraSums.data(), t}, c.rev, h);
+                ps::VcmMis mis;
+                mis.heuristic = h;
+                mis.eta = eta;
+                const float w = ps::misWeightConnection(w7, m, mis);
                 const ps::Path x = joinPath(y, s, camera.data(), t);
                 const std::vector<Technique> ts = oracleTechniques(scene, x, eta, true);
                 if (!(ts[size_t(s)].density > 0.0)) return;  // lesson 7's test counts these

@@ -51,6 +51,10 @@ double sumOfWeights(const ps::Scene& scene, const lesson07::JoinedPath& j, ps::H
                     bool connections, std::string& terms) {
     const int n = int(j.x.size());
     const ps::Path& x = j.x;
+    ps::VcmMis mis;
+    mis.heuristic = h;
+    mis.eta = eta;
+    mis.connections = connections;
     double total = 0.0;
     std::ostringstream o;
     if (connections)
@@ -62,8 +66,8 @@ double sumOfWeights(const ps::Scene& scene, const lesson07::JoinedPath& j, ps::H
             const ps::ReversePdfs rev = ps::connectionPdfs(scene, y.path.data(), s, z.path.data(), n - s);
             const float w7 = ps::misWeightRecursive(y.path.data(), s, z.path.data(), n - s, rev, h);
             const double m =
-                ps::mergeTerms(y.path.data(), y.sums.data(), s, z.path.data(), z.sums.data(), n - s, rev, h);
-            const float w = ps::misWeightConnection(w7, eta, m, h);
+                ps::mergeTerms({y.path.data(), y.sums.data(), s}, {z.path.data(), z.sums.data(), n - s}, rev, h);
+            const float w = ps::misWeightConnection(w7, m, mis);
             total += w;
             o << " connection (" << s << "," << n - s << "): " << num(w, 6);
         }
@@ -75,8 +79,9 @@ double sumOfWeights(const ps::Scene& scene, const lesson07::JoinedPath& j, ps::H
         const int f = n - 1 - e;
         const ps::ReversePdfs rev = ps::mergePdfs(scene, y.path.data(), e, z.path.data(), f);
         const float w7 = ps::misWeightRecursive(y.path.data(), e, z.path.data(), f + 1, rev, h);
-        const double m = ps::mergeTerms(y.path.data(), y.sums.data(), e, z.path.data(), z.sums.data(), f + 1, rev, h);
-        const float w = ps::misWeightMerge(w7, !x[size_t(e) - 1].specular, rev, eta, m, h, connections);
+        const double m =
+            ps::mergeTerms({y.path.data(), y.sums.data(), e}, {z.path.data(), z.sums.data(), f + 1}, rev, h);
+        const float w = ps::misWeightMerge(w7, !x[size_t(e) - 1].specular, rev, m, mis);
         total += w;
         o << " merge at x_" << e << ": " << num(w, 6);
     }
