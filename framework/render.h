@@ -12,10 +12,6 @@ namespace ps {
 struct RenderOptions {
     int spp = 0;           // iterations to run (0: none, unless a time budget is given)
     double seconds = 0.0;  // time budget (0: none); the loop stops at whichever comes first
-    // Render time (the budget, the CSV's and the checkpoints' seconds) as this process's CPU time,
-    // all threads together, instead of the wall clock: runs stay comparable on a machine that
-    // other jobs share (with T threads busy it runs T times as fast as the wall clock).
-    bool cpuTime = false;
     uint64_t seed = 0;
     int threads = 0;                   // 0: all cores
     bool progress = false;             // draw a progress bar on stderr
@@ -36,9 +32,12 @@ struct RenderResult {
 // CSV header of the error log: one row per iteration.
 extern const char* const kErrorCsvHeader;
 
-// Throws InputError when the scene's camera has a thin lens and the integrator cannot render
-// one (Integrator::rendersThinLens), or the program lacks lesson 11's lens; render() calls it first.
+// Throws InputError when the scene's camera has a camera model and the integrator cannot render
+// one (IntegratorCaps::cameraModels), naming those that can.
 void checkCamera(const Scene& scene, const Integrator& integrator);
+// The integrator's own check of the scene (IntegratorCaps::checkScene), then checkCamera: whether
+// it can render the scene at all. render() calls it first; commands call it before they print.
+void checkScene(const Scene& scene, const Integrator& integrator);
 
 RenderResult render(const Scene& scene, Integrator& integrator, const RenderOptions& opt);
 

@@ -1,8 +1,11 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages pathspace needs, if any is missing.
 # As root: apt-get. Otherwise with sudo if there is one. Otherwise: print the apt line, stop.
+#   bash scripts/deps.sh              # what the build and the tests need
+#   bash scripts/deps.sh PACKAGE ...  # these instead (the lecturer's tools: scripts/site.sh, slides.sh)
 set -euo pipefail
 PACKAGES=(cmake make g++ libglm-dev libstb-dev libtinyobjloader-dev doctest-dev libtinyexr-dev ccache bubblewrap)
+[ $# -gt 0 ] && PACKAGES=("$@")
 
 missing=()
 for p in "${PACKAGES[@]}"; do

@@ -38,12 +38,13 @@ struct CameraConnection {
                               // Eq. 4.6) times the geometry term cos(theta_e) |cos(theta_y)| / d^2,
                               // without |cos(theta_y)| when y is not on a surface (a point light),
                               // over the density of the camera point e, camera.pdfPoint() (1 for
-                              // the pinhole; a lens point's, lesson 11)
+                              // the pinhole; a camera model's point's, framework/camera.h)
 };
 
-// Connects y to the camera point z (Eq. 5.5): the pinhole camera.position(), or (lesson 11) a
-// point on a thin lens, for which camera.rasterPosition(z, ...) and camera.We(z, ...) hold the
-// lens's own raster position and importance (for the pinhole they are the one-point forms).
+// Connects y to the camera point z (Eq. 5.5): the pinhole camera.position(), or a point of the
+// camera's model (framework/camera.h), for which camera.rasterPosition(z, ...) and
+// camera.We(z, ...) hold the model's own raster position and importance (for the pinhole they are
+// the one-point forms).
 // onSurface: y lies on a surface with normal y.n (false for a point light's position).
 CameraConnection connectToCamera(const Scene& scene, const SurfacePoint& y, bool onSurface, const Vec3& z);
 // The same for the pinhole, z = camera.position() (plumbing).
@@ -77,8 +78,7 @@ void lightWalk(const Scene& scene, Rng& rng, const WalkOptions& opt, const Light
 // One light path (Eq. 5.1-5.4): the light walk, whose visitor connects y0 and every
 // non-specular vertex to the camera and adds each connection's contribution through
 // out.add(raster, value) (a SplatTarget, framework/film.h). Every connection goes to one camera
-// point z, drawn before the walk: the pinhole (no number drawn), or for a thin lens (lesson 11) a
-// point on the lens.
+// point z, drawn before the walk: the pinhole (no number drawn), or a point of the camera's model.
 void traceLightPath(const Scene& scene, Rng& rng, int maxDepth, const SplatTarget& out);
 
 }  // namespace ps

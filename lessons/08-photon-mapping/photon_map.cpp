@@ -59,7 +59,7 @@ PhotonMap tracePhotonMap(const Scene& scene, MapKind kind, int emitted, int maxD
     map.emitted = emitted;
     if (emitted <= 0) return map;
     std::vector<std::vector<Photon>> perTask(size_t(taskCount(emitted)));
-    runTasks(emitted, seed, iteration, nullptr, 0.0f, stats,
+    runTasks(TaskLoop(emitted, seed, iteration), stats,
              [&](int, Rng& rng, Task& task) { tracePhoton(scene, rng, maxDepth, kind, emitted, perTask[task.index]); });
     std::vector<Photon> photons;
     size_t n = 0;

@@ -29,7 +29,6 @@ constexpr uint64_t kPpmSalt = 0x6A09E667F3BCC909ull;
 int photonsPerPass(const Image& out) { return std::max(kMinPhotons, 4 * out.width * out.height); }
 
 struct ProgressivePhotonMapper : Integrator {
-    bool rendersThinLens() const override { return true; }  // lens rays (tasks.h, cameraRay), lesson 11
     void renderIteration(const Scene& scene, uint32_t iteration, uint64_t seed, Image& out,
                          SampleStats& stats) override {
         const double r1 = double(kInitialRadius) * scene.radius;
@@ -46,7 +45,9 @@ struct ProgressivePhotonMapper : Integrator {
 
 }  // namespace
 
-PS_REGISTER_INTEGRATOR(ProgressivePhotonMapper, "ppm",
-                       "progressive photon mapping: the radius shrinks from pass to pass (Knaus-Zwicker, lesson 8)");
+PS_REGISTER_INTEGRATOR_CAPS(
+    ProgressivePhotonMapper, "ppm",
+    "progressive photon mapping: the radius shrinks from pass to pass (Knaus-Zwicker, lesson 8)",
+    IntegratorCaps().withCameraModels());
 
 }  // namespace ps

@@ -197,8 +197,6 @@ public:
     void renderIteration(const Scene& scene, uint32_t iteration, uint64_t seed, Image& out,
                          SampleStats& stats) override;
     std::vector<std::string> report() const override;
-    // A thin lens (lesson 11): the pre-pass and the pixels take lens rays (tasks.h, cameraRay).
-    bool rendersThinLens() const override { return true; }
 
     const AdjointCache& cache() const { return cache_; }
     const PathCounts& counts() const { return counts_; }

@@ -79,7 +79,7 @@ void traceLightSubpaths(const Scene& scene, int lightPaths, Heuristic h, uint64_
     };
     std::vector<TaskPaths> perTask(size_t(taskCount(lightPaths)));
     std::vector<uint32_t> lengths(static_cast<size_t>(lightPaths));
-    runTasks(lightPaths, seed ^ kVcmLightSalt, iteration, nullptr, 0.0f, stats, [&](int i, Rng& rng, Task& task) {
+    runTasks(TaskLoop(lightPaths, seed ^ kVcmLightSalt, iteration), stats, [&](int i, Rng& rng, Task& task) {
         thread_local Subpath path;
         thread_local MergeSums sums;
         lightSubpath(scene, rng, scene.settings.maxDepth, h, path);

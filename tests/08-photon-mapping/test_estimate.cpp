@@ -230,7 +230,7 @@ TEST_CASE("radiance estimate: unbiased on a linear irradiance with every filter 
 }
 
 TEST_CASE(
-    "radiance estimate: the box filter's bias on a quadratic irradiance is (E_xx + E_yy) r^2 / 8 (Eq. 8.12, t-test) [2 pts]") {
+    "radiance estimate: the box filter's bias on a quadratic irradiance is the curvature term of Eq. 8.12 (t-test) [2 pts]") {
     // E = 1 + 0.5 x^2 + 0.3 y^2 + 0.2 x y: E_xx + E_yy = 1.6, so with r = 0.3 every estimate is
     // 1.6 * 0.09 / 8 = 0.018 too high on average (the mean of E over the disc, Eq. 8.12).
     const Field quadratic{"E = 1 + 0.5 x^2 + 0.3 y^2 + 0.2 x y",
@@ -241,7 +241,8 @@ TEST_CASE(
     const ps::stats::Welford w = sampleEstimates(quadratic, ps::Filter::Box, r, 60, 20000, ps::testseed::seed(826),
                                                  [](double est, double E) { return est - E; });
     const ps::stats::TTestResult t = ps::stats::tTest(w, bias, alpha(), 0.25);
-    CHECK_MESSAGE(t.passed, "box filter, fixed radius "
-                                << r << ", " << quadratic.name << ": expected estimate - E = (E_xx + E_yy) r^2 / 8 = "
-                                << num(bias) << " on average, got " << num(w.mean) << "\n  " << t.report);
+    CHECK_MESSAGE(t.passed, "box filter, fixed radius " << r << ", " << quadratic.name
+                                                        << ": expected estimate - E = Eq. 8.12's curvature term, "
+                                                        << num(bias) << " on average, got " << num(w.mean) << "\n  "
+                                                        << t.report);
 }

@@ -50,7 +50,7 @@ struct LensCase {
     int w, h;
     float radius, focus;
 
-    ps::Camera camera() const { return ps::Camera(eye, target, up, fov, w, h, radius, focus); }
+    ps::ThinLens camera() const { return ps::ThinLens(ps::Camera(eye, target, up, fov, w, h), radius, focus); }
     std::string describe() const {
         return std::string(name) + " (eye " + str(eye) + ", target " + str(target) + ", fov " + num(fov) + ", " +
                std::to_string(w) + " x " + std::to_string(h) + ", lens radius " + num(radius) + ", focus " +
@@ -99,6 +99,6 @@ struct Replay : ps::UniformSource {
 };
 
 // The lens point lensPoint(u) in double.
-inline DVec3 lensPointD(const ps::Camera& cam, const Vec2& u) { return DVec3(cam.lensPoint(u)); }
+inline DVec3 lensPointD(const ps::ThinLens& cam, const Vec2& u) { return DVec3(cam.lensPoint(u)); }
 
 }  // namespace lens11

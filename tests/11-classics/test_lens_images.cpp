@@ -210,7 +210,7 @@ TEST_CASE(
                 for (const double q : p) sum += std::pow(q, b);
                 const double want = std::pow(p[size_t(s)], b) / sum;
                 ++checked;
-                lensPaths += x.back().lens;
+                lensPaths += x.back().onCamera;
                 withT0 += s == n;
                 bool spec = false;
                 for (const ps::PathVertex& v : x) spec = spec || v.specular;
