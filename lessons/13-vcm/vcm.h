@@ -203,6 +203,16 @@ void traceLightSubpaths(const Scene& scene, int lightPaths, Heuristic h, uint64_
 
 // r_1 of Eq. 13.12 for these options, a scene and N light paths (VcmOptions::radiusFactor).
 double vcmFirstRadius(const VcmOptions& opt, const Scene& scene, int lightPaths);
+// What the merges of iteration `iteration` (from 0) use: r_i (Eq. 13.12), N = lightPaths, the
+// scene's maxDepth (radius 0 for vcm-bpt).
+MergeOptions vcmMergeOptions(const VcmOptions& opt, const Scene& scene, uint32_t iteration, int lightPaths);
+
+// The per-technique images of `pathspace pyramid` (framework/integrator.h, Integrator::techniques):
+// row k (path length k, edges) holds the connections (s, t), s + t = k + 1, as lesson 7's pyramid
+// (s = 0 only in vcm-bpm and vcm-ppm), then the merges M(e, f) of light vertex y_e with camera
+// vertex z_f, e + f = k, e = 1 .. k - 1 (none in vcm-bpt). Each iteration is the integrator's (its
+// light pass and radius r_i); the images do not depend on the thread count (vcm_pyramid.cpp).
+TechniqueRenderer vcmTechniqueRenderer(const VcmOptions& opt);
 
 // An integrator with these options (the registered ones: vcm, vcm-balance, vcm-bpt, vcm-bpm, vcm-ppm).
 std::unique_ptr<Integrator> makeVcmIntegrator(const VcmOptions& opt);

@@ -94,7 +94,7 @@ struct VcmIntegrator : Integrator {
     size_t iterations = 0, storedVertices = 0, pathVertices = 0, bytes = 0, maxBytes = 0, searches = 0, found = 0;
     double lightSeconds = 0.0, treeSeconds = 0.0, cameraSeconds = 0.0;
 
-    explicit VcmIntegrator(const VcmOptions& o) : opt(o) {}
+    explicit VcmIntegrator(const VcmOptions& o) : opt(o) { techniques = vcmTechniqueRenderer(opt); }
 
     std::vector<std::string> leftOut(const Scene& scene) const override {
         if (opt.mode != VcmMode::Vcm && opt.mode != VcmMode::Bpt) return {};
@@ -103,21 +103,10 @@ struct VcmIntegrator : Integrator {
         return bptLeftOut(scene, bpt);
     }
 
-    MergeOptions mergeOptions(const Scene& scene, uint32_t iteration, const Image& out) const {
-        MergeOptions m;
-        m.mode = opt.mode;
-        m.heuristic = opt.heuristic;
-        m.lightPaths = out.width * out.height;
-        m.maxDepth = scene.settings.maxDepth;
-        if (opt.mode != VcmMode::Bpt)
-            m.radius = vcmRadius(vcmFirstRadius(opt, scene, m.lightPaths), int(iteration) + 1, opt.alpha);
-        return m;
-    }
-
     void renderIteration(const Scene& scene, uint32_t iteration, uint64_t seed, Image& out,
                          SampleStats& stats) override {
         using clock = std::chrono::steady_clock;
-        const MergeOptions m = mergeOptions(scene, iteration, out);
+        const MergeOptions m = vcmMergeOptions(opt, scene, iteration, out.width * out.height);
         const bool lightPass = opt.mode != VcmMode::Bpt;
         const auto t0 = clock::now();
         auto t1 = t0, t2 = t0;
@@ -197,18 +186,36 @@ double vcmFirstRadius(const VcmOptions& opt, const Scene& scene, int lightPaths)
     return opt.radiusFactor * double(scene.radius) * 512.0 / std::sqrt(double(std::max(lightPaths, 1)));
 }
 
+MergeOptions vcmMergeOptions(const VcmOptions& opt, const Scene& scene, uint32_t iteration, int lightPaths) {
+    MergeOptions m;
+    m.mode = opt.mode;
+    m.heuristic = opt.heuristic;
+    m.lightPaths = lightPaths;
+    m.maxDepth = scene.settings.maxDepth;
+    if (opt.mode != VcmMode::Bpt)
+        m.radius = vcmRadius(vcmFirstRadius(opt, scene, m.lightPaths), int(iteration) + 1, opt.alpha);
+    return m;
+}
+
 std::unique_ptr<Integrator> makeVcmIntegrator(const VcmOptions& opt) { return std::make_unique<VcmIntegrator>(opt); }
 
-PS_REGISTER_INTEGRATOR(Vcm, "vcm",
-                       "vertex connection and merging: bpt's connections and merges at every camera vertex, "
-                       "power-heuristic MIS over both, shrinking radius (lesson 13)");
-PS_REGISTER_INTEGRATOR(VcmBalance, "vcm-balance", "vcm with the balance heuristic (lesson 13)");
-PS_REGISTER_INTEGRATOR(VcmBpt, "vcm-bpt", "vcm without merging: lesson 7's bpt, bit for bit (lesson 13)");
-PS_REGISTER_INTEGRATOR(VcmBpm, "vcm-bpm",
-                       "bidirectional photon mapping: merges at every camera vertex weighted by MIS, no "
-                       "connections (lesson 13)");
-PS_REGISTER_INTEGRATOR(VcmPpm, "vcm-ppm",
-                       "progressive photon mapping as vcm's special case: one merge at the first non-specular "
-                       "camera vertex (lesson 13)");
+// Each renders its techniques alone too (`pathspace pyramid --algo vcm`: merging cells beside
+// the connections, vcm_pyramid.cpp).
+PS_REGISTER_INTEGRATOR_CAPS(Vcm, "vcm",
+                            "vertex connection and merging: bpt's connections and merges at every camera vertex, "
+                            "power-heuristic MIS over both, shrinking radius (lesson 13)",
+                            IntegratorCaps().withTechniqueImages());
+PS_REGISTER_INTEGRATOR_CAPS(VcmBalance, "vcm-balance", "vcm with the balance heuristic (lesson 13)",
+                            IntegratorCaps().withTechniqueImages());
+PS_REGISTER_INTEGRATOR_CAPS(VcmBpt, "vcm-bpt", "vcm without merging: lesson 7's bpt, bit for bit (lesson 13)",
+                            IntegratorCaps().withTechniqueImages());
+PS_REGISTER_INTEGRATOR_CAPS(VcmBpm, "vcm-bpm",
+                            "bidirectional photon mapping: merges at every camera vertex weighted by MIS, no "
+                            "connections (lesson 13)",
+                            IntegratorCaps().withTechniqueImages());
+PS_REGISTER_INTEGRATOR_CAPS(VcmPpm, "vcm-ppm",
+                            "progressive photon mapping as vcm's special case: one merge at the first non-specular "
+                            "camera vertex (lesson 13)",
+                            IntegratorCaps().withTechniqueImages());
 
 }  // namespace ps
