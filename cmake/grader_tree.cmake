@@ -22,7 +22,6 @@ endforeach()
 # Compiled code.
 file(COPY_FILE ${FRAMEWORK} ${TREE}/lib/framework.a)
 file(COPY_FILE ${TEST_SUPPORT} ${TREE}/lib/test_support.a)
-file(COPY_FILE ${TEST_MAIN} ${TREE}/lib/test_main.o)
 # objects(LIST DEST): copy each object as DEST/<its source's file name>.o
 function(copy_objects LIST DEST)
   foreach(_o ${LIST})
@@ -34,6 +33,10 @@ function(copy_objects LIST DEST)
     file(COPY_FILE ${_o} ${DEST}/${_n})
   endforeach()
 endfunction()
+
+# main() of the tests, with the harness's side of the grader's result channel.
+file(MAKE_DIRECTORY ${TREE}/lib/main)
+copy_objects("${TEST_MAIN}" ${TREE}/lib/main)
 
 # Data the tests read at run time (tests/support/lesson_files.h: PATHSPACE_TEST_SOURCE_DIR).
 file(COPY ${SOURCE}/scenes DESTINATION ${TREE}/data)
@@ -70,7 +73,14 @@ foreach(L ${LESSONS})
       string(APPEND _includes " -isystem ${_d}")  # a dependency outside the system's folders (e.g. Homebrew)
     endif()
   endforeach()
+  # The compiler by its real path, unless that loses the C++ name: clang++ is a link to clang,
+  # which, called by that name, links as a C compiler (without the C++ library).
   file(REAL_PATH ${CXX} _cxx)
+  get_filename_component(_name ${CXX} NAME)
+  get_filename_component(_real ${_cxx} NAME)
+  if(_name MATCHES "[+][+]" AND NOT _real MATCHES "[+][+]")
+    set(_cxx ${CXX})
+  endif()
   string(REPLACE ";" " " _libs "${LIBS}")
   file(WRITE ${TREE}/rules/${NN}.mk
     "# Lesson ${L}: compiler and flags of the reference build (cmake/grader_tree.cmake).\n"

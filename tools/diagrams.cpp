@@ -238,7 +238,10 @@ Svg cosineWarp() {
     std::vector<P> disk;
     const int n = 10;
     for (int i = 0; i < n; ++i)
-        for (int j = 0; j < n; ++j) disk.push_back(concentric((i + rng.next()) / n, (j + rng.next()) / n));
+        for (int j = 0; j < n; ++j) {
+            const double ux = rng.next(), uy = rng.next();  // in this order (a call's arguments have none)
+            disk.push_back(concentric((i + ux) / n, (j + uy) / n));
+        }
     for (P d : disk) s.dot(c + R * P{d.x, -d.y}, kCamera, 3.5);
     s.text({c.x, 420}, "uniform points on the unit disk", "middle", 20);
     s.text({c.x, 448}, "(stratified, concentric map)", "middle", 18, kGrey);

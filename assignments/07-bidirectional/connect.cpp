@@ -42,11 +42,13 @@ Connection connectCamera(const Scene& scene, const PathVertex* y, int s, const P
 Connection connectLight(const Scene& scene, const PathVertex* z, int t, float uLight, const Vec2& uPos) {
     // TODO(07) Eq. 7.2, 7.4 (s = 1): next-event estimation from z_{t-1} as in lesson 2: a light
     //          chosen with scene.selectLight(uLight, ...), a point on it with sampleLight(..., uPos),
-    //          stored as the new light vertex c.sampledLight (flags as a light subpath's y_0;
-    //          pdfFwd = pdfLightOrigin, beta = 1 / pdfFwd); C* = beta_y Le G f_z beta_z with
-    //          lesson 6's geometryTerm, after the shadow ray. Not valid at a background z_{t-1}.
-    //          Pitfalls: the background's y_0.sp.n points towards the background (ls.wi); a
-    //          shadow ray to a point light or the background is not spawnRayTo(a surface point).
+    //          stored as the new light vertex c.sampledLight (lesson 6's lightVertex of the light
+    //          sample; pdfFwd = pdfLightOrigin, beta = 1 / pdfFwd); C* = beta_y Le G f_z beta_z
+    //          with lesson 6's geometryTerm, after the shadow ray. Not valid at a background
+    //          z_{t-1}, nor where the light sample has no density (pdfA and pdfW both 0).
+    //          Pitfalls: y_0's density is the light subpath's (with the light's selection
+    //          probability), not the light sample's; a shadow ray to a point light or the
+    //          background is not spawnRayTo(a surface point).
     (void)scene; (void)z; (void)t; (void)uLight; (void)uPos;
     return PS_TODO("lesson 07: connectLight", Connection());
 }

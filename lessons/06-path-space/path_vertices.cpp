@@ -26,6 +26,19 @@ PathVertex lightVertex(const Scene& scene, int l, const EmissionSample& e) {
     return v;
 }
 
+PathVertex lightVertex(const Scene& scene, int l, const LightSample& ls) {
+    const Light& light = scene.lights[size_t(l)];
+    if (light.isInfinite()) return backgroundVertex(scene, ls.wi);
+    PathVertex v;
+    v.sp.p = ls.p;
+    v.sp.n = ls.n;
+    v.sp.errScale = maxAbsComponent(ls.p);
+    v.sp.light = l;
+    v.onLight = true;
+    v.pointLight = light.isDelta();
+    return v;
+}
+
 PathVertex backgroundVertex(const Scene& scene, const Vec3& towardsBackground) {
     PathVertex v;
     v.sp.n = towardsBackground;

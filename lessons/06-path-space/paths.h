@@ -93,6 +93,9 @@ double pdfTechnique(const Scene& scene, const Path& x, int s);
 // model (the one-argument form is the pinhole's vertex, also for a camera with a model).
 PathVertex surfaceVertex(const Scene& scene, const SurfacePoint& sp);
 PathVertex lightVertex(const Scene& scene, int l, const EmissionSample& e);
+// The same for a point of light l that sampleLight chose (next-event estimation; the background:
+// the direction ls.wi).
+PathVertex lightVertex(const Scene& scene, int l, const LightSample& ls);
 PathVertex backgroundVertex(const Scene& scene, const Vec3& towardsBackground);
 PathVertex cameraVertex(const Scene& scene);
 PathVertex cameraVertex(const Scene& scene, const Vec3& z);

@@ -44,7 +44,7 @@ using Subpath = std::vector<PathVertex>;
 // ---- vertex pdfs (vertex_pdfs.cpp), one function for sampling and for MIS (Eq. 7.3) ----
 
 // Density of choosing the light vertex v itself (Eq. 7.3), from pdfEmission (framework/light.h):
-// P(l) / area for an area light, P(l) for a point light, P(l) * pdfBackgroundDirection() for the
+// P(l) / area for an area light, P(l) for a point light, P(l) * 1 / (4 pi) for the
 // background (solid angle).
 // v.sp.light is the light's index; v may be a camera-path vertex that hit an emitter.
 float pdfLightOrigin(const Scene& scene, const PathVertex& v);

@@ -4,11 +4,10 @@
 // merging sums of each (Eq. 13.8), kept one after the other in one array; and lesson 8's kd-tree
 // over the vertices a merge may use.
 //
-// The tree is lesson 8's PhotonMap: its nodes are Photons, which buildPhotonMap reorders. While it
-// builds, each point carries its index into the list of mergeable vertices in the photon's
-// direction field (2 x 16 bits); afterwards that list is put into the nodes' order, so that node
-// k's vertex is refs[k - 1]. (When lesson 8's kd-tree is made to index any point set, this
-// becomes that.)
+// The tree is lesson 8's kd-tree over any set of points (KdTree, buildKdTree, pointsInRadius) built
+// over the positions of the vertices a merge may use; afterwards that list is put into the tree's
+// node order (node k's vertex is refs[k - 1]), so that a search reads the refs it finds in the
+// order the tree stores them.
 #include "13-vcm/vcm.h"
 #include "tasks.h"
 
@@ -25,45 +24,33 @@ void mergeSums(const Subpath& path, Heuristic h, MergeSums& sums) {
 
 void buildLightVertexTree(LightVertices& lights) {
     std::vector<LightVertexRef> refs;
-    std::vector<Photon> points;
+    std::vector<Vec3> points;
     for (uint32_t p = 0; p < uint32_t(lights.paths()); ++p) {
         const PathVertex* path = lights.subpath(p);
         for (int i = 1; i < lights.length(p); ++i) {
             if (!mergeable(path, i)) continue;
-            const uint32_t index = uint32_t(refs.size());
             refs.push_back({p, uint32_t(i)});
-            Photon ph;
-            ph.p = path[i].p();
-            ph.dir[0] = uint16_t(index & 0xFFFFu);
-            ph.dir[1] = uint16_t(index >> 16);
-            points.push_back(ph);
+            points.push_back(path[i].p());
         }
     }
-    lights.tree.emitted = int(lights.paths());
-    buildPhotonMap(std::move(points), lights.tree);
+    buildKdTree(points, lights.tree);
     lights.refs.resize(refs.size());
-    for (size_t k = 1; k < lights.tree.nodes.size(); ++k) {
-        const Photon& ph = lights.tree.nodes[k];
-        lights.refs[k - 1] = refs[size_t(ph.dir[0]) | size_t(ph.dir[1]) << 16];
-    }
+    for (size_t k = 1; k <= lights.tree.size(); ++k) lights.refs[k - 1] = refs[lights.tree.item[k]];
     lights.searches = 0;
     lights.found = 0;
 }
 
 void lightVerticesWithin(const LightVertices& lights, const Vec3& x, float r2, std::vector<LightVertexRef>& found) {
-    thread_local std::vector<NearPhoton> near;
     found.clear();
-    photonsInRadius(lights.tree, x, r2, near);
+    pointsInRadius(lights.tree, x, r2, [&](uint32_t node, float) { found.push_back(lights.refs[node - 1]); });
     lights.searches.fetch_add(1, std::memory_order_relaxed);
-    lights.found.fetch_add(near.size(), std::memory_order_relaxed);
+    lights.found.fetch_add(found.size(), std::memory_order_relaxed);
     // One number of each vertex found (and of its predecessor) is read here, before the merges
     // use them: the loads of this short loop overlap, so the vertices' memory arrives together
     // instead of one cache miss at a time inside the merges (measured: a fifth of vcm's time at
     // 512 x 512 pixels, where the light vertices fill 100 MB).
     float touch = 0.0f;
-    for (const NearPhoton& n : near) {
-        const LightVertexRef& r = lights.refs[n.node - 1];
-        found.push_back(r);
+    for (const LightVertexRef& r : found) {
         const PathVertex* y = lights.subpath(r.path) + r.index;
         touch += y[-1].pdfFwd + y[0].pdfFwd;
     }

@@ -14,7 +14,7 @@
 // One vertex type, one walk each way, one kd-tree: the subpaths are lesson 7's (lesson 6's
 // PathVertex with lesson 7's pdfFwd, pdfRev and misSum), connections and their weights are
 // lesson 7's (connectSubpaths, connectionPdfs, misWeightRecursive), the light vertices' search is
-// lesson 8's photonsInRadius. What this lesson adds per vertex, the merging partial sum D_i of
+// lesson 8's pointsInRadius. What this lesson adds per vertex, the merging partial sum D_i of
 // Eq. 13.8, lives beside the subpath in a MergeSums array (MergeSums[i] belongs to path[i]).
 #pragma once
 #include <atomic>
@@ -105,8 +105,7 @@ struct LightVertices {
     // The vertices merges may use (mergeable), in the order of the tree's nodes: refs[k - 1] is
     // node k's.
     std::vector<LightVertexRef> refs;
-    PhotonMap tree;  // lesson 8's kd-tree over their positions (a node's photon power and
-                     // direction are not used: everything is read from the vertex itself)
+    KdTree tree;  // lesson 8's kd-tree over their positions (node k: refs[k - 1])
     // Searches and vertices found since the tree was built (for the integrator's report).
     mutable std::atomic<uint64_t> searches{0}, found{0};
 
@@ -119,10 +118,10 @@ struct LightVertices {
 };
 
 // Fills refs with every mergeable vertex of every light subpath and builds the tree over them
-// (lesson 8's buildPhotonMap).
+// (lesson 8's buildKdTree).
 void buildLightVertexTree(LightVertices& lights);
 
-// Every stored light vertex within distance sqrt(r2) of x (lesson 8's photonsInRadius): found is
+// Every stored light vertex within distance sqrt(r2) of x (lesson 8's pointsInRadius): found is
 // cleared first. The order is the tree's.
 void lightVerticesWithin(const LightVertices& lights, const Vec3& x, float r2, std::vector<LightVertexRef>& found);
 

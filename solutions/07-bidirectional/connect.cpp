@@ -90,11 +90,13 @@ Connection connectCamera(const Scene& scene, const PathVertex* y, int s, const P
 Connection connectLight(const Scene& scene, const PathVertex* z, int t, float uLight, const Vec2& uPos) {
     //! TODO(07) Eq. 7.2, 7.4 (s = 1): next-event estimation from z_{t-1} as in lesson 2: a light
     //!          chosen with scene.selectLight(uLight, ...), a point on it with sampleLight(..., uPos),
-    //!          stored as the new light vertex c.sampledLight (flags as a light subpath's y_0;
-    //!          pdfFwd = pdfLightOrigin, beta = 1 / pdfFwd); C* = beta_y Le G f_z beta_z with
-    //!          lesson 6's geometryTerm, after the shadow ray. Not valid at a background z_{t-1}.
-    //!          Pitfalls: the background's y_0.sp.n points towards the background (ls.wi); a
-    //!          shadow ray to a point light or the background is not spawnRayTo(a surface point).
+    //!          stored as the new light vertex c.sampledLight (lesson 6's lightVertex of the light
+    //!          sample; pdfFwd = pdfLightOrigin, beta = 1 / pdfFwd); C* = beta_y Le G f_z beta_z
+    //!          with lesson 6's geometryTerm, after the shadow ray. Not valid at a background
+    //!          z_{t-1}, nor where the light sample has no density (pdfA and pdfW both 0).
+    //!          Pitfalls: y_0's density is the light subpath's (with the light's selection
+    //!          probability), not the light sample's; a shadow ray to a point light or the
+    //!          background is not spawnRayTo(a surface point).
     //! STUB (void)scene; (void)z; (void)t; (void)uLight; (void)uPos;
     //! STUB return PS_TODO("lesson 07: connectLight", Connection());
     //! BEGIN
@@ -107,16 +109,9 @@ Connection connectLight(const Scene& scene, const PathVertex* z, int t, float uL
     const LightSample ls = sampleLight(scene, l, zEnd.sp.p, uPos);
     const Light& light = scene.lights[size_t(l)];
     PathVertex& y0 = c.sampledLight;
-    y0.sp.p = ls.p;
-    y0.sp.n = ls.n;
-    y0.sp.errScale = maxAbsComponent(ls.p);
-    y0.sp.light = l;
-    y0.onLight = true;
-    y0.pointLight = light.isDelta();
-    y0.infinite = light.isInfinite();
-    if (y0.infinite) y0.sp.n = ls.wi;  // towards the background (lesson 6's convention)
+    y0 = lightVertex(scene, l, ls);  // the background's points towards it (lesson 6's convention)
     y0.pdfFwd = pdfLightOrigin(scene, y0);
-    if (!(y0.pdfFwd > 0.0f && ls.pdf > 0.0f)) return c;
+    if (!(y0.pdfFwd > 0.0f && (ls.pdfA > 0.0f || ls.pdfW > 0.0f))) return c;
     y0.beta = Color(1.0f / y0.pdfFwd);
     const Color fz = evalBSDF(scene.materials[size_t(zEnd.sp.material)], zEnd.sp.n, direction(zEnd, z[t - 2]), ls.wi);
     c.value = zEnd.beta * fz * ls.Le * geometryTerm(y0, zEnd) * y0.beta;
