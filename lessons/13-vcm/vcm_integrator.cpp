@@ -129,9 +129,8 @@ struct VcmIntegrator : Integrator {
         if (lightPass) {
             const size_t b = lights.vertices.capacity() * sizeof(PathVertex) + lights.sums.capacity() * sizeof(double) +
                              lights.starts.capacity() * sizeof(uint32_t) +
-                             lights.refs.capacity() * sizeof(LightVertexRef) +
-                             lights.tree.p.capacity() * sizeof(Vec3) + lights.tree.item.capacity() * sizeof(uint32_t) +
-                             lights.tree.axis.capacity();
+                             lights.refs.capacity() * sizeof(LightVertexRef) + lights.tree.p.capacity() * sizeof(Vec3) +
+                             lights.tree.item.capacity() * sizeof(uint32_t) + lights.tree.axis.capacity();
             storedVertices += lights.refs.size();
             searches += lights.searches;
             found += lights.found;
