@@ -13,7 +13,8 @@ Color gatherRadiance(const Scene& scene, const SurfacePoint& sp, const Vec3& wi,
     //          bounces + 2, ... up to opt.maxDepth, while weight is not black: intersect (a miss:
     //          black); the first hit's distance goes to *hitDistance (if given; infinity when
     //          nothing is hit). At a non-specular surface y: return weight * radianceEstimate(
-    //          global, y, its material, -ray direction, opt.globalEstimate). At a specular one:
+    //          global, y, its material, -ray direction, opt.globalEstimate), or the gather visitor's
+    //          global estimate there if it has one. At a specular one:
     //          sampleBSDF(material, y.n, -ray direction, rng.uniform2(), rng.uniform(),
     //          Transport::Radiance, s) (in this order; a failed sample: black), weight *= s.weight,
     //          and go on from y in direction s.wi. Emission met on the way is left out.
@@ -39,6 +40,11 @@ Color LiPhotonMap(const Scene& scene, const Ray& ray, Rng& rng, const PhotonMaps
     //                  rng.uniform(), Transport::Radiance, s) and add gatherRadiance(scene, x,
     //                  s.wi, v.beta * s.weight, v.bounces, rng, maps.global, opt);
     //            and end the walk.
+    //          The gather visitor (opt.visitor): the emission counts only where it says so
+    //          (countsEmission), the light sample likewise (countsLightSample; drawn either way),
+    //          its caustic estimate, if it has one, replaces the caustic map's, and the walk goes
+    //          on through a specular vertex, or from x to (c), only where it says so
+    //          (continuesPast).
     (void)scene; (void)ray; (void)rng; (void)maps; (void)opt;
     return PS_TODO("lesson 08: LiPhotonMap", Color(0.0f));
 }

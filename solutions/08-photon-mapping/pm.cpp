@@ -13,7 +13,8 @@ Color gatherRadiance(const Scene& scene, const SurfacePoint& sp, const Vec3& wi,
     //!          bounces + 2, ... up to opt.maxDepth, while weight is not black: intersect (a miss:
     //!          black); the first hit's distance goes to *hitDistance (if given; infinity when
     //!          nothing is hit). At a non-specular surface y: return weight * radianceEstimate(
-    //!          global, y, its material, -ray direction, opt.globalEstimate). At a specular one:
+    //!          global, y, its material, -ray direction, opt.globalEstimate), or the gather visitor's
+    //!          global estimate there if it has one. At a specular one:
     //!          sampleBSDF(material, y.n, -ray direction, rng.uniform2(), rng.uniform(),
     //!          Transport::Radiance, s) (in this order; a failed sample: black), weight *= s.weight,
     //!          and go on from y in direction s.wi. Emission met on the way is left out.
@@ -28,7 +29,9 @@ Color gatherRadiance(const Scene& scene, const SurfacePoint& sp, const Vec3& wi,
         if (!scene.intersect(gather, y)) break;
         if (hitDistance && b == bounces + 1) *hitDistance = gather.tMax;
         const Material& my = scene.materials[size_t(y.material)];
-        if (!my.isDelta()) return weight * radianceEstimate(global, y, my, -gather.d, opt.globalEstimate);
+        if (!my.isDelta())
+            return weight * (opt.visitor.global ? opt.visitor.global(sp, bounces, y, my, -gather.d, b)
+                                                : radianceEstimate(global, y, my, -gather.d, opt.globalEstimate));
         BSDFSample t;
         const Vec2 ut = rng.uniform2();
         const float uLobeT = rng.uniform();
@@ -57,26 +60,33 @@ Color LiPhotonMap(const Scene& scene, const Ray& ray, Rng& rng, const PhotonMaps
     //!                  rng.uniform(), Transport::Radiance, s) and add gatherRadiance(scene, x,
     //!                  s.wi, v.beta * s.weight, v.bounces, rng, maps.global, opt);
     //!            and end the walk.
+    //!          The gather visitor (opt.visitor): the emission counts only where it says so
+    //!          (countsEmission), the light sample likewise (countsLightSample; drawn either way),
+    //!          its caustic estimate, if it has one, replaces the caustic map's, and the walk goes
+    //!          on through a specular vertex, or from x to (c), only where it says so
+    //!          (continuesPast).
     //! STUB (void)scene; (void)ray; (void)rng; (void)maps; (void)opt;
     //! STUB return PS_TODO("lesson 08: LiPhotonMap", Color(0.0f));
     //! BEGIN
     Color L(0.0f);
     cameraWalk(scene, ray, rng, {opt.maxDepth}, [&](const WalkVertex& v) {
         if (!v.hit) {
-            if (v.specular) L += v.beta * scene.backgroundRadiance();
+            if (v.specular && opt.visitor.countsEmission(v)) L += v.beta * scene.backgroundRadiance();
             return false;
         }
-        if (v.specular && v.sp.light >= 0)
+        if (v.specular && v.sp.light >= 0 && opt.visitor.countsEmission(v))
             L += v.beta * emittedRadiance(scene.lights[size_t(v.sp.light)], v.sp.n, v.wo);
         const Material& m = scene.materials[size_t(v.sp.material)];
-        if (m.isDelta()) return true;
+        if (m.isDelta()) return opt.visitor.continuesPast(v);
         if (v.bounces < opt.maxDepth) {
             const float uLight = rng.uniform();
             const Vec2 uPoint = rng.uniform2();
-            L += v.beta * sampleDirectLight(scene, v.sp, v.wo, uLight, uPoint).value;
+            if (opt.visitor.countsLightSample(v))
+                L += v.beta * sampleDirectLight(scene, v.sp, v.wo, uLight, uPoint).value;
         }
-        L += v.beta * radianceEstimate(maps.caustic, v.sp, m, v.wo, opt.causticEstimate);
-        if (v.bounces >= opt.maxDepth) return false;
+        L += v.beta * (opt.visitor.caustic ? opt.visitor.caustic(v, m)
+                                           : radianceEstimate(maps.caustic, v.sp, m, v.wo, opt.causticEstimate));
+        if (v.bounces >= opt.maxDepth || !opt.visitor.continuesPast(v)) return false;
         if (opt.cache && m.kind == BSDFKind::Diffuse) {
             const Vec3 n = glm::dot(v.sp.n, v.wo) < 0.0f ? -v.sp.n : v.sp.n;
             Color E;
