@@ -1,6 +1,6 @@
 # Writes CMakePresets.json from the lesson folders (lessons/NN-name): the release preset, `mine`
 # (every lesson from assignments/), one `mine-NN` per lesson (lesson NN from assignments/, every
-# other lesson from the reference), `asan`, and a build preset for each. A new lesson folder gets
+# other lesson from its reference where the tree has one), `asan`, and a build preset for each. A new lesson folder gets
 # its preset by running this again:
 #   cmake --build build --target presets        (or: cmake -DSOURCE=. -DOUT=CMakePresets.json -P cmake/presets.cmake)
 # The test course_presets_in_sync (-DCHECK=1) fails while CMakePresets.json is stale.
@@ -37,12 +37,12 @@ endmacro()
 
 set(_release "        \"CMAKE_BUILD_TYPE\": \"Release\"\n")
 add_preset(release "Release (the default: what scripts/setup.sh and scripts/test.sh build)" build "${_release}")
-add_preset(mine "Every lesson from assignments/ (your files; what the student handout builds)" build
+add_preset(mine "Every lesson from assignments/ (your files, even the lessons whose reference is released)" build
            "        \"CMAKE_BUILD_TYPE\": \"Release\",\n        \"PATHSPACE_STUDENT\": \"all\"\n")
 foreach(_lesson ${_lessons})
   string(SUBSTRING ${_lesson} 0 2 _nn)
   lesson_title(${_lesson} _title)
-  add_preset(mine-${_nn} "${_title} from assignments/, every other lesson from the reference" build
+  add_preset(mine-${_nn} "${_title} from assignments/, every other lesson from its reference where this tree has one (the handout: the released lessons)" build
              "        \"CMAKE_BUILD_TYPE\": \"Release\",\n        \"PATHSPACE_STUDENT\": \"${_nn}\"\n")
 endforeach()
 add_preset(asan "AddressSanitizer + UndefinedBehaviorSanitizer (every test, several times slower)" build-asan
@@ -51,13 +51,15 @@ add_preset(asan "AddressSanitizer + UndefinedBehaviorSanitizer (every test, seve
 # No comma after the last entry of a list.
 string(REGEX REPLACE ",\n$" "\n" _configure "${_configure}")
 string(REGEX REPLACE ",\n$" "\n" _build "${_build}")
-set(_json "{\n  \"version\": 3,\n  \"cmakeMinimumRequired\": {\n    \"major\": 3,\n    \"minor\": 21,\n    \"patch\": 0\n  },\n"
+string(CONCAT _json "{\n  \"version\": 3,\n  \"cmakeMinimumRequired\": {\n    \"major\": 3,\n    \"minor\": 21,\n    \"patch\": 0\n  },\n"
                   "  \"configurePresets\": [\n${_configure}  ],\n  \"buildPresets\": [\n${_build}  ],\n"
                   "  \"testPresets\": [\n    {\n      \"name\": \"asan\",\n      \"configurePreset\": \"asan\",\n"
                   "      \"output\": {\n        \"outputOnFailure\": true\n      },\n      \"execution\": {\n"
                   "        \"timeout\": 1500\n      },\n      \"environment\": {\n"
                   "        \"UBSAN_OPTIONS\": \"print_stacktrace=1\",\n        \"ASAN_OPTIONS\": \"detect_leaks=1\"\n"
                   "      }\n    }\n  ]\n}\n")
+# Valid JSON, or cmake --preset fails for every student (string(JSON) parses it).
+string(JSON _count LENGTH "${_json}" configurePresets)
 if(CHECK)
   file(READ ${OUT} _have)
   if(NOT _have STREQUAL _json)

@@ -5,6 +5,9 @@
 #include <fstream>
 #include <map>
 #include <sstream>
+#ifdef PATHSPACE_TINYOBJLOADER_FROM_HEADER  // framework/CMakeLists.txt: a libc++ build
+#define TINYOBJLOADER_IMPLEMENTATION
+#endif
 #include <tiny_obj_loader.h>
 #include "errors.h"
 #include "numbers.h"

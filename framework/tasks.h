@@ -64,9 +64,12 @@ void renderLightPathTasks(uint64_t seed, uint32_t iteration, Image& out, SampleS
                           const LightPathSample& path);
 
 // A uniformly jittered raster position in pixel `pixel` (row-major, `width` pixels a row): the
-// first two random numbers of the pixel's generator.
+// first two random numbers of the pixel's generator, x's first.
 inline Vec2 jitteredRaster(int pixel, int width, Rng& rng) {
-    return Vec2(static_cast<float>(pixel % width) + rng.uniform(), static_cast<float>(pixel / width) + rng.uniform());
+    // Named, in this order: C++ evaluates a call's arguments in no fixed order.
+    const float ux = rng.uniform();
+    const float uy = rng.uniform();
+    return Vec2(static_cast<float>(pixel % width) + ux, static_cast<float>(pixel / width) + uy);
 }
 
 // The camera ray through raster position `raster`: the pinhole's (no random number drawn), or a

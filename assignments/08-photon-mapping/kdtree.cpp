@@ -1,6 +1,7 @@
 // Lesson 8 — the kd-tree over a set of points (the photon map's): left-balanced, in arrays in heap order. Interface:
 // lessons/08-photon-mapping/photonmap.h. Equation numbers refer to lessons/08-photon-mapping/README.md.
 #include <algorithm>
+#include <tuple>
 #include "08-photon-mapping/photonmap.h"
 #include "todo.h"
 

@@ -65,10 +65,10 @@ bool sampleAdjointBSDF(const Material& m, const Vec3& n, const Vec3& wLight, con
 using LightWalkVisitor = std::function<bool(const WalkVertex& v, const LightPathStart& start)>;
 
 // The particle's random walk (Eq. 5.1, 5.2, 5.6-5.8): startLightPath with rng.uniform(),
-// rng.uniform2(), rng.uniform2() (nothing if it is not valid), visit y0, then lesson 3's walk
-// (randomWalk) from y0's ray with the particle's power start.beta, scattering with the adjoint
-// BSDF (sampleAdjointBSDF), visiting every surface the particle hits (not a miss: a particle that
-// leaves the scene is gone), at most opt.maxDepth bounces; Russian roulette as lesson 3's on the
+// rng.uniform2(), rng.uniform2(), drawn in that order (nothing if it is not valid), visit y0,
+// then lesson 3's walk (randomWalk) from y0's ray with the particle's power start.beta,
+// scattering with the adjoint BSDF (sampleAdjointBSDF), visiting every surface the particle hits
+// (not a miss: a particle that leaves the scene is gone), at most opt.maxDepth bounces; Russian roulette as lesson 3's on the
 // product of the scattering weights alone (the throughput since y0, without start.beta): q =
 // opt.survival(throughput, bounces). The options' direction sampler and continuation rule work as
 // in lesson 3's walk. Lesson 7's light subpath is this walk too; lesson 8's photons take it with a

@@ -19,7 +19,10 @@ TechniqueSample sampleTechnique(const Scene& scene, int k, int s, Rng& rng) {
         float P = 0.0f;
         const int l = scene.selectLight(rng.uniform(), P);
         if (l < 0 || P <= 0.0f) return ts;
-        const EmissionSample e = sampleEmission(scene, l, rng.uniform2(), rng.uniform2());
+        // Named, in this order: C++ evaluates a call's arguments in no fixed order.
+        const Vec2 uPos = rng.uniform2();
+        const Vec2 uDir = rng.uniform2();
+        const EmissionSample e = sampleEmission(scene, l, uPos, uDir);
         if (!(e.pdfA > 0.0f && e.pdfW > 0.0f)) return ts;
         x[0] = lightVertex(scene, l, e);
         Ray ray = x[0].infinite ? Ray(e.p, e.dir) : scene.spawnRay(x[0].sp, e.dir);
@@ -30,9 +33,11 @@ TechniqueSample sampleTechnique(const Scene& scene, int k, int s, Rng& rng) {
             if (!scene.intersect(ray, sp)) return ts;
             x[size_t(i)] = surfaceVertex(scene, sp);
             if (i == s - 1) break;
+            // Named, in this order: C++ evaluates a call's arguments in no fixed order.
+            const Vec2 u = rng.uniform2();  // in this order, as uPos and uDir above
+            const float uLobe = rng.uniform();
             BSDFSample b;
-            if (!sampleBSDF(scene.materials[size_t(sp.material)], sp.n, -ray.d, rng.uniform2(), rng.uniform(),
-                            Transport::Importance, b))
+            if (!sampleBSDF(scene.materials[size_t(sp.material)], sp.n, -ray.d, u, uLobe, Transport::Importance, b))
                 return ts;
             ray = scene.spawnRay(sp, b.wi);
         }
@@ -50,7 +55,10 @@ TechniqueSample sampleTechnique(const Scene& scene, int k, int s, Rng& rng) {
     // directions, lesson 3).
     x[size_t(k)] = cameraVertex(scene, camera.samplePoint(rng));
     if (t >= 2) {
-        ts.raster = Vec2(rng.uniform() * float(camera.width()), rng.uniform() * float(camera.height()));
+        // Named, in this order: C++ evaluates a call's arguments in no fixed order.
+        const float ux = rng.uniform();  // in this order, as uPos and uDir above
+        const float uy = rng.uniform();
+        ts.raster = Vec2(ux * float(camera.width()), uy * float(camera.height()));
         Ray ray = camera.generateRay(ts.raster, x[size_t(k)].p());
         for (int j = k - 1; j >= s; --j) {
             SurfacePoint sp;
@@ -61,9 +69,11 @@ TechniqueSample sampleTechnique(const Scene& scene, int k, int s, Rng& rng) {
             }
             x[size_t(j)] = surfaceVertex(scene, sp);
             if (j == s) break;
+            // Named, in this order: C++ evaluates a call's arguments in no fixed order.
+            const Vec2 u = rng.uniform2();  // in this order, as uPos and uDir above
+            const float uLobe = rng.uniform();
             BSDFSample b;
-            if (!sampleBSDF(scene.materials[size_t(sp.material)], sp.n, -ray.d, rng.uniform2(), rng.uniform(),
-                            Transport::Radiance, b))
+            if (!sampleBSDF(scene.materials[size_t(sp.material)], sp.n, -ray.d, u, uLobe, Transport::Radiance, b))
                 return ts;
             ray = scene.spawnRay(sp, b.wi);
         }

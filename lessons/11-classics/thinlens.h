@@ -84,10 +84,11 @@ struct LensConnection {
 
 // The technique t = 0 at y_m (Eq. 11.16, 11.17), for a thin-lens camera: a fresh step of the light
 // walk from y_m, then its ray against the lens (camera.hit), the shadow ray up to it, and
-// value = beta' W_e^(j). m = 0: a fresh light path start (lesson 5's startLightPath(rng.uniform(),
-// rng.uniform2(), rng.uniform2()), beta' = its beta; the subpath's own y_0 is not used); m >= 1:
-// lesson 5's sampleAdjointBSDF at y_m (numbers rng.uniform2(), rng.uniform()), beta' = y_m.beta
-// times its weight. Not valid for a pinhole camera.
+// value = beta' W_e^(j). m = 0: a fresh light path start (lesson 5's startLightPath with
+// rng.uniform(), rng.uniform2(), rng.uniform2(), drawn in that order; beta' = its beta; the
+// subpath's own y_0 is not used); m >= 1: lesson 5's sampleAdjointBSDF at y_m (numbers
+// rng.uniform2(), then rng.uniform()), beta' = y_m.beta times its weight. Not valid for a pinhole
+// camera.
 LensConnection connectLens(const Scene& scene, const PathVertex* y, int m, Rng& rng);
 
 // ---- plumbing (lens_technique.cpp): t = 0 inside lesson 7's bptSample -----------------------

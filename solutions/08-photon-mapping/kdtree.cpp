@@ -1,6 +1,7 @@
 // Lesson 8 — the kd-tree over a set of points (the photon map's): left-balanced, in arrays in heap order. Interface:
 // lessons/08-photon-mapping/photonmap.h. Equation numbers refer to lessons/08-photon-mapping/README.md.
 #include <algorithm>
+#include <tuple>
 #include "08-photon-mapping/photonmap.h"
 #include "todo.h"
 
@@ -45,8 +46,16 @@ void balance(const std::vector<Vec3>& points, std::vector<uint32_t>& order, size
     const Vec3 extent = hi - lo;
     const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
     const size_t median = begin + leftSubtreeSize(n);
+    // By the axis's coordinate; ties (points on an axis-aligned wall) broken by the other two
+    // coordinates and then by the point's index: std::nth_element leaves equal elements in an
+    // order of the standard library's choosing, so without a total order the tree, and every
+    // image made with it, would differ between libstdc++ and libc++.
+    const auto key = [&points, axis](uint32_t i) {
+        const Vec3& p = points[i];
+        return std::make_tuple(p[axis], p[(axis + 1) % 3], p[(axis + 2) % 3], i);
+    };
     std::nth_element(order.begin() + long(begin), order.begin() + long(median), order.begin() + long(end),
-                     [&](uint32_t a, uint32_t b) { return points[a][axis] < points[b][axis]; });
+                     [&key](uint32_t a, uint32_t b) { return key(a) < key(b); });
     tree.p[node] = points[order[median]];
     tree.item[node] = order[median];
     tree.axis[node] = static_cast<uint8_t>(axis);

@@ -7,12 +7,13 @@ namespace ps {
 
 LensConnection connectLens(const Scene& scene, const PathVertex* y, int m, Rng& rng) {
     //! TODO(11) Eq. 11.16, 11.17: one more step of the light walk from y_m, and the lens point it meets.
-    //!          1. The ray and beta': m = 0: start = startLightPath(scene, rng.uniform(),
-    //!             rng.uniform2(), rng.uniform2()) (invalid if not valid); the ray is start.ray,
+    //!          1. The ray and beta': m = 0: start = startLightPath(scene, uLight, uPos, uDir)
+    //!             (rng.uniform(), rng.uniform2(), rng.uniform2(), drawn into variables in that
+    //!             order; invalid if not valid); the ray is start.ray,
     //!             beta' = start.beta, and c.light the new y_0: its sp is start.y0, onLight,
     //!             pointLight and infinite from its light, an infinite one's sp.n = -start.ray.d.
     //!             m >= 1: sampleAdjointBSDF(y_m's material, y_m.sp.n, direction(y_m, y_{m-1}),
-    //!             rng.uniform2(), rng.uniform(), b) (invalid if it fails); the ray is
+    //!             u, uLobe, b) (rng.uniform2(), then rng.uniform(); invalid if it fails); the ray is
     //!             scene.spawnRay(y_m.sp, b.wi), beta' = y_m.beta * b.weight.
     //!          2. camera.hit(ray, t, z): invalid if it misses; then scene.occluded on the ray
     //!             cut at t (ray.tMax = t): invalid if blocked.
@@ -29,7 +30,11 @@ LensConnection connectLens(const Scene& scene, const PathVertex* y, int m, Rng& 
     Ray ray;
     Color beta;
     if (m == 0) {
-        const LightPathStart start = startLightPath(scene, rng.uniform(), rng.uniform2(), rng.uniform2());
+        // Named, in this order: C++ evaluates a call's arguments in no fixed order.
+        const float uLight = rng.uniform();
+        const Vec2 uPos = rng.uniform2();
+        const Vec2 uDir = rng.uniform2();
+        const LightPathStart start = startLightPath(scene, uLight, uPos, uDir);
         if (!start.valid) return c;
         const Light& light = scene.lights[size_t(start.light)];
         c.light.sp = start.y0;
@@ -41,9 +46,11 @@ LensConnection connectLens(const Scene& scene, const PathVertex* y, int m, Rng& 
         beta = start.beta;
     } else {
         const PathVertex& v = y[m];
+        // Named, in this order: C++ evaluates a call's arguments in no fixed order.
+        const Vec2 u = rng.uniform2();
+        const float uLobe = rng.uniform();
         BSDFSample b;
-        if (!sampleAdjointBSDF(scene.materials[size_t(v.sp.material)], v.sp.n, direction(v, y[m - 1]), rng.uniform2(),
-                               rng.uniform(), b))
+        if (!sampleAdjointBSDF(scene.materials[size_t(v.sp.material)], v.sp.n, direction(v, y[m - 1]), u, uLobe, b))
             return c;
         ray = scene.spawnRay(v.sp, b.wi);
         beta = v.beta * b.weight;

@@ -129,14 +129,16 @@ inline std::vector<JoinedPath> randomPaths(const ps::Scene& scene, int nSamples,
     const int w = scene.camera.width(), ht = scene.camera.height();
     for (int i = 0; i < nSamples; ++i) {
         ps::Rng rng(seed, uint64_t(i));
-        const Vec2 raster(rng.uniform() * float(w), rng.uniform() * float(ht));
+        const Vec2 raster{rng.uniform() * float(w), rng.uniform() * float(ht)};
         ps::cameraSubpath(scene, rng, raster, scene.settings.maxDepth, h, camera);
         ps::lightSubpath(scene, rng, scene.settings.maxDepth, h, light);
         for (int t = 1; t <= int(camera.size()); ++t)
             for (int s = 0; s <= std::max(int(light.size()), 1); ++s) {
                 if (s + t < 2 || (t == 1 && s == 0) || s + t - 2 > scene.settings.maxDepth) continue;
                 if (s > int(light.size()) && !(s == 1 && t >= 2)) continue;
-                const ps::Connection c = ps::connect(scene, light, camera, s, t, rng.uniform(), rng.uniform2());
+                const float uLight = rng.uniform();
+                const Vec2 uPoint = rng.uniform2();
+                const ps::Connection c = ps::connect(scene, light, camera, s, t, uLight, uPoint);
                 if (!c.valid) continue;
                 paths.push_back(join(s == 1 ? &c.sampledLight : light.data(), s, camera.data(), t, c.rev));
             }

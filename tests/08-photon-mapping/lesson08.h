@@ -91,7 +91,7 @@ inline std::vector<Photon> hardPhotonSet(uint64_t seed, int n = 10000) {
     const int duplicates = n / 10, layer = n / 10, clusters = n * 4 / 10;
     for (int i = 0; i < clusters; ++i) {
         const Vec3& c = centres[i % 5];
-        out.push_back(photonAt(c + 0.01f * Vec3(gauss(), gauss(), gauss())));
+        out.push_back(photonAt(c + 0.01f * Vec3{gauss(), gauss(), gauss()}));
     }
     for (int i = 0; i < layer; ++i) out.push_back(photonAt(onLayer(rng)));
     for (int i = 0; i < duplicates; ++i) {

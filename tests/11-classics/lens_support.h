@@ -37,8 +37,9 @@ using DVec3 = glm::dvec3;
 //   closed diffuse box                                                                     -> 2
 //   drt against the stored reference of pt filtered to L D? (G|S)* E (the Cornell box
 //   through the lens, where pt carries more paths)                                         -> 1
-// 7 of lesson 11's m = 15 (lesson11.h), each at lesson11::alpha().
-using lesson11::alpha;                  // the lesson's level: all 15 of its statistical tests
+//   pt through the lens against the pinhole on a plane in focus (test_reach.cpp)          -> 1
+// 8 of lesson 11's m = 16 (lesson11.h), each at lesson11::alpha().
+using lesson11::alpha;                  // the lesson's level: all 16 of its statistical tests
 using lesson11::kStatisticalTestsLens;  // counted in lesson11.h
 
 // A thin-lens camera as the tests build it, and its geometry in double from the same numbers.

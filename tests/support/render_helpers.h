@@ -45,6 +45,17 @@ inline double total(const Image& img) {
     return t;
 }
 
+// Sums over blocks of b x b pixels, for z-tests of a technique that hits the light by chance
+// (lesson 6's and 7's (0, k + 1)): it has a few hits per pixel, or none, and a per-pixel variance
+// estimate of such heavy-tailed samples is unreliable (0 where no sample hit); sums over blocks
+// are not. Variances add (the pixels are independent).
+inline Image blocks(const Image& img, int b) {
+    Image out(img.width / b, img.height / b);
+    for (int y = 0; y < img.height; ++y)
+        for (int x = 0; x < img.width; ++x) out.at(x / b, y / b) += img.at(x, y);
+    return out;
+}
+
 // Per pixel of the scene's camera, row by row: rays through the 6 x 6 points of a grid over the
 // pixel (its edges included), each tested with pred(hit, sp), sp the first surface the ray meets
 // (hit false: none); true where `some` ray passes (all = false) or where every ray does (all =
