@@ -224,11 +224,11 @@ PmOptions pmOptions(const Scene& scene);
 int photonsPerMap(const Image& out);
 uint64_t photonSeed(uint64_t seed, MapKind kind);
 
-// Final gathering's ray (the last term of Eq. 8.11): leaves sp in direction wi with throughput
-// `weight`; at a specular surface it samples the BSDF (sampleBSDF, Transport::Radiance; the
-// sample's weight multiplied into `weight`) and goes on; at the first non-specular surface y it
-// returns weight * radianceEstimate(global, y, y's material, -ray direction, opt.globalEstimate)
-// (or the gather visitor's global estimate there, if it has one).
+// Final gathering's ray (the last term of Eq. 8.11): lesson 3's camera walk resumed at sp, leaving
+// it in direction wi with throughput `weight`, without Russian roulette; at a specular surface the
+// walk samples the BSDF (Transport::Radiance) and goes on; at the first non-specular surface y it
+// returns the walk's beta there times radianceEstimate(global, y, y's material, -ray direction,
+// opt.globalEstimate) (or the gather visitor's global estimate there, if it has one).
 // Black if the ray leaves the scene, a sample fails, the weight becomes black, or it would hit
 // more than opt.maxDepth - bounces surfaces (bounces: those the path made before sp). Emission met
 // on the way is left out. hitDistance (if not null): the distance from sp to the first surface
