@@ -12,8 +12,9 @@
 namespace ps::testalpha {
 
 constexpr double kSuite = 0.01;  // false failure of the whole graded suite
-// The lesson folders (lessons/NN-name) found at configure time (cmake/lessons.cmake gives it to
-// every test: a new lesson folder changes it; a lesson without statistical tests wastes its share).
+// The lesson folders (lessons/NN-name) found at configure time (cmake/lessons.cmake lists them,
+// tests/support/CMakeLists.txt gives their number to every test: a new lesson folder changes it; a
+// lesson without statistical tests wastes its share).
 #ifndef PATHSPACE_LESSON_COUNT
 #error "PATHSPACE_LESSON_COUNT (the number of lesson folders) comes from tests/support/CMakeLists.txt"
 #endif
