@@ -19,7 +19,8 @@ float photonSurvival(const Color& throughput, int bounces) {
     //! END
 }
 
-void tracePhoton(const Scene& scene, Rng& rng, int maxDepth, MapKind kind, int emitted, std::vector<Photon>& out) {
+void tracePhoton(const Scene& scene, Rng& rng, int maxDepth, MapKind kind, int emitted, std::vector<Photon>& out,
+                 const PhotonVisitor& visit) {
     //! TODO(08) Eq. 8.1-8.3: lightWalk(scene, rng, {maxDepth, photonSurvival}, visitor). The visitor
     //!          goes on at y0 (bounces 0). At a surface (bounces >= 1) with material m:
     //!          - m.isDelta(): a specular bounce, nothing stored; go on.
@@ -27,24 +28,30 @@ void tracePhoton(const Scene& scene, Rng& rng, int maxDepth, MapKind kind, int e
     //!            for the global map always; for the caustic map only if every surface before this
     //!            one was specular and there was at least one (L S+ D). The caustic walk ends at
     //!            its first non-specular surface, the global walk goes on.
-    //! STUB (void)scene; (void)rng; (void)maxDepth; (void)kind; (void)emitted; (void)out;
+    //!          Last, at every vertex, the photon visitor if there is one (visit(v, the photon to
+    //!          store or nullptr)): its false drops that photon and ends the walk.
+    //! STUB (void)scene; (void)rng; (void)maxDepth; (void)kind; (void)emitted; (void)out; (void)visit;
     //! STUB (void)PS_TODO("lesson 08: tracePhoton", 0);
     //! BEGIN
     bool onlySpecular = true;  // every surface so far was specular
     const float invN = 1.0f / float(emitted);
     lightWalk(scene, rng, {maxDepth, photonSurvival}, [&](const WalkVertex& v, const LightPathStart&) {
-        if (v.bounces == 0) return true;
+        if (v.bounces == 0) return !visit || visit(v, nullptr);
         const Material& m = scene.materials[size_t(v.sp.material)];
-        if (m.isDelta()) return true;
+        if (m.isDelta()) return !visit || visit(v, nullptr);
+        bool goOn = kind == MapKind::Global;
         if (kind == MapKind::Global || (onlySpecular && v.bounces >= 2)) {
             Photon ph;
             ph.p = v.sp.p;
             ph.power = v.beta * invN;
             ph.setWLight(v.wo);
-            out.push_back(ph);
+            if (!visit || visit(v, &ph)) out.push_back(ph);
+            else goOn = false;
+        } else if (visit && !visit(v, nullptr)) {
+            goOn = false;
         }
         onlySpecular = false;
-        return kind == MapKind::Global;
+        return goOn;
     });
     //! END
 }
