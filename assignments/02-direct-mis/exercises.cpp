@@ -8,8 +8,8 @@
 namespace ps {
 
 double sphereSolidAngle(double radius, double distance) {
-    // TODO(02) Eq. 2.E1: the sphere fills a cone of half-angle theta_max, sin(theta_max) = r / d;
-    //          return the cone's solid angle, written so that it stays accurate for r << d.
+    // TODO(02) Omega(r, d) of Eq. 2.E1, solved on paper, written so that it stays accurate for r << d (no
+    //          cancellation).
     (void)radius; (void)distance;
     return PS_TODO("lesson 02: sphereSolidAngle (exercise)", 0.0);
 }

@@ -7,23 +7,17 @@
 namespace ps {
 
 Color misEmission(const Scene& scene, const WalkVertex& v) {
-    // TODO(03) The first half of Eq. 3.7 at x_k: beta_k times the emission the walk finds (the hit
-    //          light sp.light, or scene.background where it left) with weight 1 after a specular
-    //          bounce, else the BSDF sample's weight from v.pdfPrev against the density with which a
-    //          light sample at the previous vertex would have chosen it (lesson 2's
-    //          pdfLightDirection); black if there is none.
-    //          Pitfall: both densities of the hit belong to x_{k-1} (v.pPrev), not to x_k.
+    // TODO(03) The first half of Eq. 3.7 at x_k: beta_k times the emission found there, weighted against light
+    //          sampling at x_{k-1} (weight 1 after a specular bounce); black if none. Pitfall: both densities belong
+    //          to x_{k-1} (README 6).
     (void)scene; (void)v;
     return PS_TODO("lesson 03: misEmission (LiMIS)", Color(0.0f));
 }
 
 Color misLightSample(const Scene& scene, const WalkVertex& v, Rng& rng, int maxDepth) {
-    // TODO(03) The second half of Eq. 3.7 at x_k, where LiNextEvent takes one: beta_k times the
-    //          light sample (its numbers drawn as in LiNextEvent), weighted by kPathHeuristic from
-    //          DirectSample's light density against the density with which the walk itself leaves
-    //          x_k in that direction (pdfWalk).
-    //          Pitfall: the light sample at the vertex with maxDepth bounces would make a path
-    //          of maxDepth + 1 bounces.
+    // TODO(03) The second half of Eq. 3.7 at x_k: beta_k times one light sample drawn as in LiNextEvent, weighted by
+    //          kPathHeuristic against the density with which the walk leaves x_k that way (pdfWalk, walk.h). Pitfall:
+    //          a light sample at the vertex with maxDepth bounces (README 6, off by one).
     (void)scene; (void)v; (void)rng; (void)maxDepth;
     return PS_TODO("lesson 03: misLightSample (LiMIS)", Color(0.0f));
 }

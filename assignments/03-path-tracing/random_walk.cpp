@@ -8,10 +8,9 @@ namespace ps {
 Color LiRandomWalk(const Scene& scene, const Ray& cameraRay, Rng& rng, int maxDepth) {
     Color L(0.0f);
     cameraWalk(scene, cameraRay, rng, {maxDepth}, [&](const WalkVertex& v) {
-        // TODO(03) What vertex x_k adds to L (Eq. 3.4): beta_k times the emission leaving it
-        //          towards the previous vertex, the background's radiance where the walk left
-        //          the scene; then return true (the walk decides where it ends).
-        //          Pitfall: emittedRadiance wants the direction the light leaves in: v.wo.
+        // TODO(03) What vertex x_k adds to L in the plain random walk (Eq. 3.4): beta_k times the radiance it sends
+        //          towards x_{k-1} (the background's on an escape); return true. Pitfall: emittedRadiance takes the
+        //          direction light leaves in.
         (void)v;
         return PS_TODO("lesson 03: LiRandomWalk", false);
     });

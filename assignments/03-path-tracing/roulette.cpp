@@ -7,8 +7,7 @@
 namespace ps {
 
 float survivalProbability(const Color& beta, int bounces) {
-    // TODO(03) Eq. 3.5: 1 while bounces < kRouletteStartBounces; after that the largest
-    //          component of beta, clamped to [kRouletteMinSurvival, 1].
+    // TODO(03) The survival probability q of Eq. 3.5 after `bounces` bounces (its constants: README, under Eq. 3.5).
     (void)beta; (void)bounces;
     return PS_TODO("lesson 03: survivalProbability", 1.0f);
 }

@@ -7,18 +7,14 @@
 namespace ps {
 
 float Camera::We(const Vec3& dir) const {
-    // TODO(04) The pinhole's importance over the whole image (Eq. 4.5): 0 when dir (unit, from
-    //          the pinhole) points behind the camera or outside the image (rasterOfDirection
-    //          tells), else 1 / (A cos^4 theta) with A = imagePlaneArea() and cos(theta) the
-    //          cosine between dir and forward_.
+    // TODO(04) The whole image's W_e(dir) (Eq. 4.5), 0 behind the camera or off the image. Pitfalls (README 6): cos^3;
+    //          testing position() + dir.
     (void)dir;
     return PS_TODO("lesson 04: Camera::We", 0.0f);
 }
 
 float pixelImportance(const Camera& camera, int px, int py, const Vec3& dir) {
-    // TODO(04) One pixel's sensor (Eq. 4.6): width * height * camera.We(dir) if the raster
-    //          position of dir (camera.rasterOfDirection) lies in pixel (px, py), i.e.
-    //          px <= x < px + 1 and py <= y < py + 1; else 0.
+    // TODO(04) W_e^(j)(dir) of Eq. 4.6 (measurement.h); pixel (px, py) is a half-open square of raster positions.
     (void)camera; (void)px; (void)py; (void)dir;
     return PS_TODO("lesson 04: pixelImportance", 0.0f);
 }

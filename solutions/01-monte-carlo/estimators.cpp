@@ -10,10 +10,8 @@ namespace mc {  // two helpers the five estimators share
 
 // The sample mean of y_1..y_n (n >= 2) and the estimated variance of that mean.
 Estimate meanOfSamples(const std::vector<double>& y) {
-    //! TODO(01) value = the sample mean Y; variance = s^2 / n with the unbiased sample variance
-    //!          s^2 = sum_i (y_i - Y)^2 / (n - 1) (Eq. 1.3). Compute Y first, then the squares of
-    //!          y_i - Y: the shortcut sum y_i^2 - n Y^2 cancels badly when the y_i are nearly
-    //!          equal (and may even come out negative).
+    //! TODO(01) The sample mean and the estimated variance of that mean, with the unbiased s^2 (Eq. 1.3). Pitfall: a
+    //!          one-pass sum of squares cancels badly (even below 0) when the y_i are nearly equal.
     //! STUB (void)y;
     //! STUB return PS_TODO("lesson 01: meanOfSamples", Estimate{});
     //! BEGIN
@@ -30,10 +28,7 @@ Estimate meanOfSamples(const std::vector<double>& y) {
 // The sum of the stratum contributions F_k = |stratum| f(x_k), stored row by row with
 // `perRow` strata in each row (perRow >= 3), and the estimated variance of that sum.
 Estimate sumOfStrata(const std::vector<double>& F, size_t perRow) {
-    //! TODO(01) value = sum_k F_k (Eq. 1.4). variance: the second differences
-    //!          d_k = F_{k-1} - 2 F_k + F_{k+1} of three neighbours in the same row (M of them,
-    //!          perRow - 2 per row); with N = F.size() strata, variance = N / (6 M) * sum_k d_k^2
-    //!          (Eq. 1.4). Never take a difference across the end of a row.
+    //! TODO(01) The sum of the F_k and its variance by second differences (Eq. 1.4), none across the end of a row.
     //! STUB (void)F; (void)perRow;
     //! STUB return PS_TODO("lesson 01: sumOfStrata", Estimate{});
     //! BEGIN
@@ -52,8 +47,7 @@ Estimate sumOfStrata(const std::vector<double>& F, size_t perRow) {
 }  // namespace mc
 
 Estimate estimatePlain(const Function1D& f, double a, double b, int n, Rng& rng) {
-    //! TODO(01) n samples x_i = a + (b - a) u_i; the samples of Eq. 1.1 are y_i = (b - a) f(x_i)
-    //!          (f over the uniform pdf 1 / (b - a)); return mc::meanOfSamples of them.
+    //! TODO(01) The integral over [a, b] by Eq. 1.1 through meanOfSamples; a sample is f over its pdf, not f alone.
     //! STUB (void)f; (void)a; (void)b; (void)n; (void)rng;
     //! STUB return PS_TODO("lesson 01: estimatePlain", Estimate{});
     //! BEGIN
@@ -64,8 +58,7 @@ Estimate estimatePlain(const Function1D& f, double a, double b, int n, Rng& rng)
 }
 
 Estimate estimateStratified(const Function1D& f, double a, double b, int n, Rng& rng) {
-    //! TODO(01) Strata of width h = (b - a) / n; in stratum k one sample x_k = a + (k + u_k) h
-    //!          and its contribution F_k = h f(x_k) (Eq. 1.4); return mc::sumOfStrata(F, n).
+    //! TODO(01) Eq. 1.4 with n equal strata, one sample each, through sumOfStrata; F_k carries its width.
     //! STUB (void)f; (void)a; (void)b; (void)n; (void)rng;
     //! STUB return PS_TODO("lesson 01: estimateStratified", Estimate{});
     //! BEGIN
@@ -77,8 +70,7 @@ Estimate estimateStratified(const Function1D& f, double a, double b, int n, Rng&
 }
 
 Estimate estimateImportance(const Function1D& f, const Function1D& sample, const Function1D& pdf, int n, Rng& rng) {
-    //! TODO(01) x_i = sample(u_i), y_i = f(x_i) / pdf(x_i), or 0 where pdf(x_i) = 0 (Eq. 1.5);
-    //!          return mc::meanOfSamples of the y_i.
+    //! TODO(01) Eq. 1.5 through meanOfSamples; a sample where the pdf is 0 counts 0 (estimators.h).
     //! STUB (void)f; (void)sample; (void)pdf; (void)n; (void)rng;
     //! STUB return PS_TODO("lesson 01: estimateImportance", Estimate{});
     //! BEGIN
@@ -92,8 +84,7 @@ Estimate estimateImportance(const Function1D& f, const Function1D& sample, const
 }
 
 Estimate estimatePlain2D(const Function2D& f, int n, Rng& rng) {
-    //! TODO(01) Eq. 1.1 on the unit square (area 1, pdf 1): n points (u, v), drawing u before v;
-    //!          return mc::meanOfSamples of the f(u, v).
+    //! TODO(01) Eq. 1.1 over the unit square (pdf 1) through meanOfSamples.
     //! STUB (void)f; (void)n; (void)rng;
     //! STUB return PS_TODO("lesson 01: estimatePlain2D", Estimate{});
     //! BEGIN
@@ -107,9 +98,7 @@ Estimate estimatePlain2D(const Function2D& f, int n, Rng& rng) {
 }
 
 Estimate estimateStratified2D(const Function2D& f, int n, Rng& rng) {
-    //! TODO(01) Cells of side h = 1 / n; cell (i, j) (i along x) gets one point
-    //!          ((i + u) h, (j + v) h) and the contribution F = h^2 f(point) (Eq. 1.4). Store the
-    //!          cells row by row (index j n + i, rows along x) and return mc::sumOfStrata(F, n).
+    //! TODO(01) Eq. 1.4 on n x n cells through sumOfStrata, rows along x (estimators.h); F carries its area.
     //! STUB (void)f; (void)n; (void)rng;
     //! STUB return PS_TODO("lesson 01: estimateStratified2D", Estimate{});
     //! BEGIN

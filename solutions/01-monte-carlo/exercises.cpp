@@ -7,8 +7,7 @@
 namespace ps {
 
 double phongBRDFNormalization(double n) {
-    //! TODO(01) Eq. 1.E1: solve C(n) * (integral of cos^(n+1)(theta) over the hemisphere) = 1 on
-    //!          paper (integrate over phi first, then substitute c = cos(theta)) and return C(n).
+    //! TODO(01) C(n) of Eq. 1.E1, solved on paper (README, Exercise); check: n = 0 gives 1 / pi.
     //! STUB (void)n;
     //! STUB return PS_TODO("lesson 01: phongBRDFNormalization (exercise)", 0.0);
     //! BEGIN

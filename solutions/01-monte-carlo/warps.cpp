@@ -15,7 +15,7 @@ constexpr float kTwoPi = 2.0f * kPi;
 }  // namespace
 
 Vec3 sampleUniformSphere(const Vec2& u) {
-    //! TODO(01) z = 1 - 2 u.x, phi = 2 pi u.y (Eq. 1.8); return the unit vector.
+    //! TODO(01) A unit direction, uniform over the sphere (Eq. 1.8).
     //! STUB (void)u;
     //! STUB return PS_TODO("lesson 01: sampleUniformSphere", Vec3(0.0f, 0.0f, 1.0f));
     //! BEGIN
@@ -26,7 +26,7 @@ Vec3 sampleUniformSphere(const Vec2& u) {
 }
 
 float uniformSpherePdf() {
-    //! TODO(01) The constant pdf per unit solid angle (Eq. 1.8).
+    //! TODO(01) The density of Eq. 1.8's samples per unit solid angle.
     //! STUB return PS_TODO("lesson 01: uniformSpherePdf", 0.0f);
     //! BEGIN
     return 1.0f / (4.0f * kPi);
@@ -34,8 +34,7 @@ float uniformSpherePdf() {
 }
 
 Vec2 invertUniformSphere(const Vec3& w) {
-    //! TODO(01) Invert Eq. 1.8: u.x from z; u.y = phi / (2 pi) in [0, 1), which turns(w.x, w.y)
-    //!          above computes.
+    //! TODO(01) The u in [0, 1)^2 that Eq. 1.8 maps to w; angles from atan2 go through turns() (README, Pitfalls).
     //! STUB (void)w;
     //! STUB return PS_TODO("lesson 01: invertUniformSphere", Vec2(0.0f));
     //! BEGIN
@@ -44,7 +43,7 @@ Vec2 invertUniformSphere(const Vec3& w) {
 }
 
 Vec3 sampleUniformHemisphere(const Vec2& u) {
-    //! TODO(01) z = u.x, phi = 2 pi u.y (Eq. 1.9).
+    //! TODO(01) A unit direction, uniform over the hemisphere z >= 0 (Eq. 1.9).
     //! STUB (void)u;
     //! STUB return PS_TODO("lesson 01: sampleUniformHemisphere", Vec3(0.0f, 0.0f, 1.0f));
     //! BEGIN
@@ -55,7 +54,7 @@ Vec3 sampleUniformHemisphere(const Vec2& u) {
 }
 
 float uniformHemispherePdf(const Vec3& w) {
-    //! TODO(01) 1 / (2 pi) above the horizon (z > 0), 0 elsewhere (Eq. 1.9).
+    //! TODO(01) Its density per unit solid angle (Eq. 1.9); 0 below the horizon: the tests integrate over the sphere.
     //! STUB (void)w;
     //! STUB return PS_TODO("lesson 01: uniformHemispherePdf", 0.0f);
     //! BEGIN
@@ -64,7 +63,7 @@ float uniformHemispherePdf(const Vec3& w) {
 }
 
 Vec2 invertUniformHemisphere(const Vec3& w) {
-    //! TODO(01) Invert Eq. 1.9: u.x from z, u.y = turns(w.x, w.y).
+    //! TODO(01) The u in [0, 1)^2 that Eq. 1.9 maps to w (angles through turns()).
     //! STUB (void)w;
     //! STUB return PS_TODO("lesson 01: invertUniformHemisphere", Vec2(0.0f));
     //! BEGIN
@@ -73,8 +72,7 @@ Vec2 invertUniformHemisphere(const Vec3& w) {
 }
 
 Vec2 sampleConcentricDisk(const Vec2& u) {
-    //! TODO(01) Map u to [-1,1]^2, then each of the four wedges to a sector of the disk:
-    //!          r = a, phi = pi/4 * b/a where |a| > |b|, and the mirror case (Eq. 1.10).
+    //! TODO(01) A point uniform per unit area in the unit disk by the concentric map (Eq. 1.10): all four wedges.
     //! STUB (void)u;
     //! STUB return PS_TODO("lesson 01: sampleConcentricDisk", Vec2(0.0f));
     //! BEGIN
@@ -93,7 +91,7 @@ Vec2 sampleConcentricDisk(const Vec2& u) {
 }
 
 float concentricDiskPdf(const Vec2& p) {
-    //! TODO(01) 1 / pi inside the unit disk, 0 outside (Eq. 1.10).
+    //! TODO(01) Its density per unit area (Eq. 1.10), 0 outside the disk.
     //! STUB (void)p;
     //! STUB return PS_TODO("lesson 01: concentricDiskPdf", 0.0f);
     //! BEGIN
@@ -102,7 +100,7 @@ float concentricDiskPdf(const Vec2& p) {
 }
 
 Vec2 invertConcentricDisk(const Vec2& p) {
-    //! TODO(01) Invert Eq. 1.10: find the wedge from phi, recover (a, b), map back to [0,1)^2.
+    //! TODO(01) The u in [0, 1)^2 that Eq. 1.10 maps to p: the wedge follows from p's angle.
     //! STUB (void)p;
     //! STUB return PS_TODO("lesson 01: invertConcentricDisk", Vec2(0.0f));
     //! BEGIN
@@ -128,8 +126,7 @@ Vec2 invertConcentricDisk(const Vec2& p) {
 }
 
 Vec3 sampleCosineHemisphere(const Vec2& u) {
-    //! TODO(01) Malley's method (Eq. 1.11): a uniform point on the disk, projected up to the
-    //!          hemisphere (z = sqrt(1 - x^2 - y^2)).
+    //! TODO(01) A unit direction with density cos(theta) / pi per solid angle (Eq. 1.11); clamp before sqrt (Pitfalls).
     //! STUB (void)u;
     //! STUB return PS_TODO("lesson 01: sampleCosineHemisphere", Vec3(0.0f, 0.0f, 1.0f));
     //! BEGIN
@@ -139,7 +136,7 @@ Vec3 sampleCosineHemisphere(const Vec2& u) {
 }
 
 float cosineHemispherePdf(const Vec3& w) {
-    //! TODO(01) cos(theta) / pi above the horizon, 0 elsewhere (Eq. 1.11).
+    //! TODO(01) Its density per unit solid angle (Eq. 1.11), 0 below the horizon.
     //! STUB (void)w;
     //! STUB return PS_TODO("lesson 01: cosineHemispherePdf", 0.0f);
     //! BEGIN
@@ -148,7 +145,7 @@ float cosineHemispherePdf(const Vec3& w) {
 }
 
 Vec2 invertCosineHemisphere(const Vec3& w) {
-    //! TODO(01) Invert Eq. 1.11: drop z, then invert the disk map.
+    //! TODO(01) The u in [0, 1)^2 that Eq. 1.11 maps to w.
     //! STUB (void)w;
     //! STUB return PS_TODO("lesson 01: invertCosineHemisphere", Vec2(0.0f));
     //! BEGIN
@@ -157,8 +154,8 @@ Vec2 invertCosineHemisphere(const Vec3& w) {
 }
 
 Vec3 samplePhongLobe(const Vec2& u, float exponent) {
-    //! TODO(01) Invert the CDF of cos(alpha): cos(alpha) = (1 - u.x)^(1/(n+1)), phi = 2 pi u.y
-    //!          (Eq. 1.12). Keep it finite for n up to 1e6.
+    //! TODO(01) A unit direction around +z with Eq. 1.12's density per solid angle; finite for n up to 1e6 and never
+    //!          on the horizon (README, Pitfalls: "Float u is never 1").
     //! STUB (void)u; (void)exponent;
     //! STUB return PS_TODO("lesson 01: samplePhongLobe", Vec3(0.0f, 0.0f, 1.0f));
     //! BEGIN
@@ -169,7 +166,7 @@ Vec3 samplePhongLobe(const Vec2& u, float exponent) {
 }
 
 float phongLobePdf(const Vec3& w, float exponent) {
-    //! TODO(01) (n + 1) / (2 pi) cos^n(alpha) for cos(alpha) = w.z > 0, else 0 (Eq. 1.12).
+    //! TODO(01) Eq. 1.12's density per unit solid angle, 0 below the horizon.
     //! STUB (void)w; (void)exponent;
     //! STUB return PS_TODO("lesson 01: phongLobePdf", 0.0f);
     //! BEGIN
@@ -178,8 +175,7 @@ float phongLobePdf(const Vec3& w, float exponent) {
 }
 
 Vec2 invertPhongLobe(const Vec3& w, float exponent) {
-    //! TODO(01) Invert Eq. 1.12: u.x = 1 - cos^(n+1)(alpha) with cos(alpha) = w.z,
-    //!          u.y = turns(w.x, w.y).
+    //! TODO(01) The u in [0, 1)^2 that Eq. 1.12 maps to w.
     //! STUB (void)w; (void)exponent;
     //! STUB return PS_TODO("lesson 01: invertPhongLobe", Vec2(0.0f));
     //! BEGIN
@@ -188,8 +184,7 @@ Vec2 invertPhongLobe(const Vec3& w, float exponent) {
 }
 
 Vec2 sampleUniformTriangle(const Vec2& u) {
-    //! TODO(01) Eq. 1.13: s = sqrt(u.x) is how far across the triangle (from the first corner)
-    //!          the point lies, u.y where along that segment; return (b1, b2) = s (1 - u.y, u.y).
+    //! TODO(01) Barycentrics (b1, b2) uniform over the triangle (Eq. 1.13).
     //! STUB (void)u;
     //! STUB return PS_TODO("lesson 01: sampleUniformTriangle", Vec2(0.0f));
     //! BEGIN
@@ -199,8 +194,7 @@ Vec2 sampleUniformTriangle(const Vec2& u) {
 }
 
 Vec2 invertUniformTriangle(const Vec2& b) {
-    //! TODO(01) Invert Eq. 1.13: s = b1 + b2 gives u.x = s^2 and u.y = b2 / s (u.y = 0 when
-    //!          s = 0).
+    //! TODO(01) The u that Eq. 1.13 maps to b; the corner b = (0, 0) gives u = (0, 0), not NaN.
     //! STUB (void)b;
     //! STUB return PS_TODO("lesson 01: invertUniformTriangle", Vec2(0.0f));
     //! BEGIN

@@ -29,8 +29,8 @@ namespace {
 }  // namespace
 
 float pdfAToSolidAngle(float pdfA, float dist, float cosAtLight) {
-    //! TODO(02) Convert the area pdf to solid angle: p_w = p_A dist^2 / cos (Eq. 2.3);
-    //!          return 0 when cosAtLight <= 0.
+    //! TODO(02) The density per unit solid angle of a point sampled with pdfA per unit area (Eq. 2.3); 0 if the light
+    //!          faces away.
     //! STUB (void)pdfA; (void)dist; (void)cosAtLight;
     //! STUB return PS_TODO("lesson 02: pdfAToSolidAngle", 0.0f);
     //! BEGIN
@@ -40,13 +40,9 @@ float pdfAToSolidAngle(float pdfA, float dist, float cosAtLight) {
 }
 
 float pdfLightDirection(const Scene& scene, int light, const Vec3& ref, const Vec3& p, const Vec3& n) {
-    //! TODO(02) The pdf of the direction from ref to p under light sampling (Eq. 2.4): the
-    //!          selection probability scene.lightSelectionProb(light) times
-    //!            area light: pdfLight's area density converted by pdfAToSolidAngle, with the
-    //!                        distance from ref to p and the cosine between n and the unit
-    //!                        direction from p to ref;
-    //!            background: pdfLight's solid-angle density;
-    //!            point light: 0 (a delta light: no direction hits it by chance, Eq. 2.12).
+    //! TODO(02) The light-sampling density per unit solid angle of the direction ref -> p, selection probability
+    //!          included (Eq. 2.3, 2.4; direct.h); 0 for a point light (Eq. 2.12). Pitfall: the sign of the cosine at
+    //!          the light (README 6).
     //! STUB (void)scene; (void)light; (void)ref; (void)p; (void)n;
     //! STUB return PS_TODO("lesson 02: pdfLightDirection", 0.0f);
     //! BEGIN
@@ -68,19 +64,10 @@ float pdfLightDirection(const Scene& scene, int light, const Vec3& ref, const Ve
 DirectSample sampleDirectLight(const Scene& scene, const SurfacePoint& sp, const Vec3& wo, float uLight,
                                const Vec2& uPoint) {
     DirectSample d;
-    //! TODO(02) Light sampling (Eq. 2.4):
-    //!          1. l = scene.selectLight(uLight, select) (-1: no lights); ls = sampleLight(scene,
-    //!             l, sp.p, uPoint); d.wi = ls.wi.
-    //!          2. f = evalBSDF(material of sp, sp.n, wo, ls.wi), cos = |dot(sp.n, ls.wi)|.
-    //!          3. The pdf of ls.wi per unit solid angle, times select (d.pdfLight):
-    //!               area light: ls.pdfA is per unit area: convert it (Eq. 2.3) with ls.dist and
-    //!                           the cosine at the light, dot(ls.n, -ls.wi);
-    //!               background: ls.pdfW is already per solid angle;
-    //!               point light: no density; d.pdfLight = select, d.delta = true, and ls.Le is
-    //!                            an intensity: the value is f I cos / (select dist^2) (Eq. 2.4).
-    //!          4. d.pdfBSDF = pdfBSDF(material, sp.n, wo, ls.wi) (0 for a point light, Eq. 2.12).
-    //!          5. If f, ls.Le or the pdf is 0, return d with value 0 before tracing anything;
-    //!             else if unoccluded(scene, sp, ls, kind) (above), d.value = f Le cos / pdf.
+    //! TODO(02) One light sample of L_d (Eq. 2.4), every field as DirectSample documents it (direct.h); LightSample's
+    //!          densities and a point light's Le are described in framework/light.h. Pitfalls (README 6): the selection
+    //!          probability belongs to the density; mixed measures; a shadow ray that does not go through unoccluded(),
+    //!          or is traced for a zero value.
     //! STUB (void)scene; (void)sp; (void)wo; (void)uLight; (void)uPoint;
     //! STUB return PS_TODO("lesson 02: sampleDirectLight", d);
     //! BEGIN
@@ -113,17 +100,9 @@ DirectSample sampleDirectLight(const Scene& scene, const SurfacePoint& sp, const
 
 DirectSample sampleDirectBSDF(const Scene& scene, const SurfacePoint& sp, const Vec3& wo, const Vec2& u, float uLobe) {
     DirectSample d;
-    //! TODO(02) BSDF sampling (Eq. 2.5):
-    //!          1. sampleBSDF(material of sp, sp.n, wo, u, uLobe, Transport::Radiance, s); if it
-    //!             fails return d. d.wi = s.wi, d.pdfBSDF = s.pdf, d.delta = s.delta.
-    //!          2. Trace ray = scene.spawnRay(sp, s.wi) with scene.intersect(ray, hit).
-    //!             No hit: the background's radiance (scene.backgroundRadiance(); black if the
-    //!             scene has none); its light index is scene.background.
-    //!             A hit with hit.light >= 0: emittedRadiance(scene.lights[hit.light], hit.n, -s.wi).
-    //!             Anything else: no emission, return d.
-    //!          3. d.pdfLight: 0 after a delta lobe (Eq. 2.12), else pdfLightDirection(scene,
-    //!             light index, sp.p, hit.p, hit.n) (the background ignores the last two).
-    //!          4. d.value = s.weight * Le (s.weight is already f |cos| / pdf).
+    //! TODO(02) One BSDF sample of L_d (Eq. 2.5) as DirectSample documents it; BSDFSample::weight: framework/bsdf.h.
+    //!          Emission comes from an emitter hit or, on a miss, the background (Scene::background). Pitfall: pdfLight
+    //!          is the light density of the point this ray hit, 0 after a delta lobe (Eq. 2.12).
     //! STUB (void)scene; (void)sp; (void)wo; (void)u; (void)uLobe;
     //! STUB return PS_TODO("lesson 02: sampleDirectBSDF", d);
     //! BEGIN
@@ -152,11 +131,8 @@ DirectSample sampleDirectBSDF(const Scene& scene, const SurfacePoint& sp, const 
 
 Color directMultiSample(const Scene& scene, const SurfacePoint& sp, const Vec3& wo, Heuristic heuristic,
                         const DirectRandom& u) {
-    //! TODO(02) Multi-sample MIS with one sample of each technique (Eq. 2.6, n_light = n_bsdf = 1):
-    //!          a = sampleDirectLight(scene, sp, wo, u.uLight, u.uPoint),
-    //!          b = sampleDirectBSDF(scene, sp, wo, u.uBSDF, u.uLobe);
-    //!          return w_light(a) a.value + w_bsdf(b) b.value, each weight from misWeight (mis.h)
-    //!          with the sample's own pdf against the other technique's pdf of the same direction.
+    //! TODO(02) L_d from one light and one BSDF sample combined by Eq. 2.6 (misWeight, mis.h). Pitfall: each weight
+    //!          compares the sample's own density with the other technique's density of the same direction.
     //! STUB (void)scene; (void)sp; (void)wo; (void)heuristic; (void)u;
     //! STUB return PS_TODO("lesson 02: directMultiSample", Color(0.0f));
     //! BEGIN
@@ -169,10 +145,8 @@ Color directMultiSample(const Scene& scene, const SurfacePoint& sp, const Vec3& 
 
 Color directOneSample(const Scene& scene, const SurfacePoint& sp, const Vec3& wo, Heuristic heuristic,
                       const DirectRandom& u) {
-    //! TODO(02) One-sample MIS (Eq. 2.11) with c = kOneSampleLightProbability: if u.uChoice < c,
-    //!          a light sample a, returned as w_light(a) a.value / c; else a BSDF sample b,
-    //!          returned as w_bsdf(b) b.value / (1 - c). The weights use the choice probabilities
-    //!          as the n_i: misWeight(heuristic, c, ..., 1 - c, ...) for the light sample.
+    //! TODO(02) L_d from one technique chosen with probability c = kOneSampleLightProbability (Eq. 2.11). Pitfall:
+    //!          divide by the choice probability and use it as the n_i of the weights.
     //! STUB (void)scene; (void)sp; (void)wo; (void)heuristic; (void)u;
     //! STUB return PS_TODO("lesson 02: directOneSample", Color(0.0f));
     //! BEGIN

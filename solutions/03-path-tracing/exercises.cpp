@@ -7,8 +7,8 @@
 namespace ps {
 
 int furnaceDepthForBias(double albedo, double eps) {
-    //! TODO(03) Eq. 3.E1: the relative bias (L_inf - L_D) / L_inf of Eq. 3.8 as a power of a, set it
-    //!          <= eps, solve for the smallest integer D (a = 0: D = 0).
+    //! TODO(03) D_min(a, eps) of Eq. 3.E1: the smallest integer depth whose relative bias in the furnace of Eq. 3.8 is
+    //!          at most eps (a = 0: 0).
     //! STUB (void)albedo; (void)eps;
     //! STUB return PS_TODO("lesson 03: furnaceDepthForBias (exercise)", 0);
     //! BEGIN

@@ -6,8 +6,7 @@
 namespace ps {
 
 double pinholeImportance(double imageArea, double focalDistance, double cosTheta) {
-    //! TODO(04) Eq. 4.E1: redo Eq. 4.3-4.5 with the image plane at distance f instead of 1
-    //!          (the point on the plane is at r = f / cos(theta)).
+    //! TODO(04) W_e(theta; A, f) of Eq. 4.E1: Eq. 4.3-4.5 redone with the image plane at distance f.
     //! STUB (void)imageArea; (void)focalDistance; (void)cosTheta;
     //! STUB return PS_TODO("lesson 04: pinholeImportance (exercise)", 0.0);
     //! BEGIN

@@ -6,17 +6,8 @@
 namespace ps {
 
 Color fluxParticle(const Scene& scene, const Region& S, Rng& rng) {
-    //! TODO(04) One particle (Eq. 4.12, 4.13), drawing the random numbers in this order:
-    //!          1. l = scene.selectLight(rng.uniform(), P); return 0 if l < 0.
-    //!          2. e = sampleEmission(scene, l, uPos, uDir), uPos = rng.uniform2() drawn before
-    //!             uDir = rng.uniform2() (into variables: a call's arguments have no order);
-    //!             return 0 if e.pdfA or e.pdfW is 0.
-    //!          3. The particle's power: Le |cos theta| / (P pdfA pdfW), cos theta between e.n
-    //!             and e.dir for an area light; a point light (Light::isDelta) and the
-    //!             background have no cosine here (their Le is an intensity, or the disk they
-    //!             start on faces e.dir).
-    //!          4. Trace scene.spawnRay(emissionPoint(scene, l, e), e.dir); return the power if
-    //!             it hits a primitive of S (S.contains(sp.prim)), else 0.
+    //! TODO(04) One particle's share of Phi_S (Eq. 4.12, 4.13), random numbers in measurement.h's order. Pitfalls: P(l)
+    //!          left out; a cosine at a point light or the background (README 6; light.h).
     //! STUB (void)scene; (void)S; (void)rng;
     //! STUB return PS_TODO("lesson 04: fluxParticle", Color(0.0f));
     //! BEGIN

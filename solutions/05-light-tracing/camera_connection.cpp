@@ -6,17 +6,9 @@
 namespace ps {
 
 CameraConnection connectToCamera(const Scene& scene, const SurfacePoint& y, bool onSurface, const Vec3& z) {
-    //! TODO(05) The connection of y to the pinhole e = z (= camera.position(); a camera model's
-    //!          point otherwise) (Eq. 5.3, 5.5):
-    //!          1. raster: camera.rasterPosition(e, y.p, raster); invalid if false.
-    //!          2. d = distance from y to e, wCam = (e - y.p) / d; the direction from the
-    //!             pinhole to y is -wCam. W = the pixel's sensor there (lesson 4, Eq. 4.6):
-    //!             width * height * camera.We(e, -wCam); invalid if 0.
-    //!          3. Invalid if scene.occluded(scene.spawnRayTo(y, e)).
-    //!          4. importance = W cos(theta_e) |cos(theta_y)| / (d^2 p), with cos(theta_e) =
-    //!             dot(camera.forward(), -wCam), |cos(theta_y)| = |dot(y.n, wCam)| only if
-    //!             onSurface (else 1) and p = camera.pdfPoint(), the density of e (1 for the
-    //!             pinhole, chosen with probability 1); valid = true.
+    //! TODO(05) What connecting y to the camera point z gives (Eq. 5.3, 5.5), as lighttracer.h and README 2 say (a
+    //!          camera model's z: framework/camera.h). Pitfalls (README 6): W_e of the direction from the eye; a cosine
+    //!          at a y on no surface; a shadow ray that offsets the pinhole.
     //! STUB (void)scene; (void)y; (void)onSurface; (void)z;
     //! STUB return PS_TODO("lesson 05: connectToCamera", CameraConnection());
     //! BEGIN

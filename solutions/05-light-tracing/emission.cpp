@@ -6,14 +6,8 @@
 namespace ps {
 
 LightPathStart startLightPath(const Scene& scene, float uLight, const Vec2& uPos, const Vec2& uDir) {
-    //! TODO(05) The first vertex y0 and the particle leaving it (Eq. 5.2), as lesson 4's
-    //!          fluxParticle started its particles (Eq. 4.13):
-    //!          1. l = scene.selectLight(uLight, P); invalid (return the default) if l < 0.
-    //!          2. e = sampleEmission(scene, l, uPos, uDir); invalid if e.pdfA or e.pdfW is 0.
-    //!          3. light = l, y0 = emissionPoint(scene, l, e), pdfA = P * e.pdfA,
-    //!             ray = scene.spawnRay(y0, e.dir),
-    //!             beta = e.Le |cos theta| / (P pdfA pdfW) (cos between e.n and e.dir for an
-    //!             area light; none for a point light or the background), valid = true.
+    //! TODO(05) The first vertex y0, its density P(l) p_A and the particle's power beta_1 leaving it (Eq. 5.2), started
+    //!          as lesson 4's particles (Eq. 4.13). Pitfall: a cosine at a point light or the background.
     //! STUB (void)scene; (void)uLight; (void)uPos; (void)uDir;
     //! STUB return PS_TODO("lesson 05: startLightPath", LightPathStart());
     //! BEGIN

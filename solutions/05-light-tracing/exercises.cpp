@@ -6,8 +6,7 @@
 namespace ps {
 
 double refractedRadianceScale(double etaFrom, double etaTo) {
-    //! TODO(05) Eq. 5.E1: from Snell's law, relate cos(theta) d(omega) on both sides, then use that
-    //!          the refracted flux (without Fresnel) is the incident flux.
+    //! TODO(05) L_t / L_i of Eq. 5.E1 (without Fresnel), solved on paper from Snell's law and the flux that crosses.
     //! STUB (void)etaFrom; (void)etaTo;
     //! STUB return PS_TODO("lesson 05: refractedRadianceScale (exercise)", 0.0);
     //! BEGIN

@@ -10,14 +10,10 @@ void traceLightPath(const Scene& scene, Rng& rng, int maxDepth, const SplatTarge
     // (no number drawn), or a point of the camera's model.
     const Vec3 z = scene.camera.samplePoint(rng);
     lightWalk(scene, rng, {maxDepth}, [&](const WalkVertex& v, const LightPathStart& start) {
-        //! TODO(05) What vertex v adds to the image (Eq. 5.3, 5.4): connect it to the camera
-        //!          point z (connectToCamera(..., z)) and, if the connection is valid,
-        //!          out.add(c.raster, value).
-        //!          y0 (bounces 0): value = Le / pdfA * importance, Le towards the camera (a point
-        //!          light: its intensity); no connection from the background. Later vertices:
-        //!          value = beta * f* * importance with f*(wLight -> wCam) = evalBSDF(m, n, wCam,
-        //!          wLight), wLight = v.wo (Eq. 5.6); none from a delta material (Eq. 5.9). Return true.
-        //!          Pitfall: a point light is not on a surface (connectToCamera's onSurface).
+        //! TODO(05) What vertex v adds to the image (Eq. 5.3, 5.4), through out.add; return true. y0 sends its Le
+        //!          towards the camera (C_0), a later vertex scatters by the adjoint BSDF (Eq. 5.6); no connection from
+        //!          the background or a delta material (Eq. 5.9). Pitfalls (README 6): the k = 0 connection left out; a
+        //!          point light is on no surface.
         //! STUB (void)v; (void)start; (void)out; (void)z;
         //! STUB return PS_TODO("lesson 05: traceLightPath", false);
         //! BEGIN

@@ -7,17 +7,9 @@
 namespace ps {
 
 void lightWalk(const Scene& scene, Rng& rng, const WalkOptions& opt, const LightWalkVisitor& visit) {
-    //! TODO(05) The particle's walk (Eq. 5.1, 5.2, 5.6-5.8): start it with startLightPath
-    //!          (scene, uLight, uPos, uDir), drawn into variables in that order (rng.uniform(),
-    //!          rng.uniform2(), rng.uniform2(): a call's arguments have no order); nothing if
-    //!          not valid. Visit y0
-    //!          (a WalkVertex with bounces 0, hit, sp = start.y0, beta = start.beta), then lesson
-    //!          3's randomWalk from a WalkStart along start.ray (its fields say what the particle's
-    //!          first hit y1 shows), scattering with sampleAdjointBSDF and the options given, with
-    //!          a visitor that hands each surface the particle hits, and the start, to `visit`.
-    //!          Pitfalls: bounces count the surfaces hit (y1 has 1), and a miss is no vertex of
-    //!          a light path; the roulette follows the throughput since y0, which starts at 1,
-    //!          not at start.beta (whose scale is the light's power).
+    //! TODO(05) The particle's walk (Eq. 5.1, 5.2, 5.6-5.8) as lighttracer.h specifies it, its random numbers in that
+    //!          order (README 2). Pitfalls: bounces count the surfaces hit (y1 has 1) and a miss is no vertex; the
+    //!          roulette reads the throughput since y0, which starts at 1, not start.beta (README 6).
     //! STUB (void)scene; (void)rng; (void)opt; (void)visit;
     //! STUB (void)PS_TODO("lesson 05: lightWalk", 0);
     //! BEGIN
