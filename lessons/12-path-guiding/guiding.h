@@ -1,0 +1,200 @@
+// Lesson 12's path guiding (Müller, Gross and Novák 2017, "Practical path guiding"): a learned
+// field of incident radiance — a binary tree over the scene (the spatial tree) whose every leaf
+// holds a quadtree over the sphere of directions (the directional distribution) — learnt from the
+// path tracer's own samples, pass after pass, and sampled together with the BSDF (a one-sample
+// mixture) inside lesson 3's walk; lesson 10's adjoint-driven roulette and splitting with the
+// adjoint taken from the same field; and the same roulette and splitting for particles (lesson
+// 5's light tracer, lesson 8's photons), driven by the visual importance a short camera pass
+// leaves behind. Implemented in solutions/12-path-guiding/*.cpp (reference) or
+// assignments/12-path-guiding/*.cpp (yours); lessons/12-path-guiding/README.md derives every
+// formula (Eq. 12.1-12.17).
+#pragma once
+#include <cstdint>
+#include <vector>
+#include "03-path-tracing/pathtracer.h"
+
+namespace ps {
+
+// ---------------------------------------------------------------------------------------------
+// The directional distribution (Eq. 12.5-12.8): a quadtree over the unit square of lesson 1's
+// equal-area cylindrical map, s = invertUniformSphere(w) = ((1 - w.z) / 2, phi / 2 pi), whose
+// inverse is sampleUniformSphere(s). A node cuts its square into four quadrants, numbered
+// i = (s.x >= middle.x) + 2 (s.y >= middle.y); per quadrant it keeps the energy recorded there
+// and, if the quadrant is cut further, the index of its node (0: the quadrant is a leaf; node 0
+// is the root, which is no one's child). Every quadrant's energy is the sum of its node's four.
+struct QuadNode {
+    float energy[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+    uint32_t child[4] = {0, 0, 0, 0};
+};
+
+// A quadrant is cut (refined) while it holds more than this fraction of the total energy (Müller
+// et al.'s rho), down to kMaxQuadDepth levels (the root's quadrants are at depth 1).
+constexpr float kRefineFraction = 0.01f;
+constexpr int kMaxQuadDepth = 16;
+
+class DirectionalTree {
+public:
+    // The root alone: four leaf quadrants without energy.
+    DirectionalTree() : nodes(1) {}
+
+    // The density of direction w per unit solid angle (Eq. 12.6): the density per unit area of the
+    // square at s (the quadrant's share of its node's energy, times 4, at every level down to the
+    // leaf), converted to solid angle by the map's constant Jacobian (Eq. 12.5). A tree whose total
+    // energy is 0 is uniform over the sphere. w unit.
+    float pdf(const Vec3& w) const;
+    // Draws a direction with that density (Eq. 12.7): down from the root, a quadrant chosen with
+    // probability proportional to its energy, the uniform numbers u rescaled to the chosen part at
+    // every level and reused; in the leaf's square, the point its rescaled numbers give, mapped to
+    // the sphere. u in [0, 1)^2. A tree whose total is 0: uniform over the sphere.
+    Vec3 sample(const Vec2& u) const;
+    // Adds value (>= 0) to the energy of every quadrant that contains w's point of the square, from
+    // the root down to its leaf (Eq. 12.8).
+    void record(const Vec3& w, float value);
+    // The tree refined after a pass (Eq. 12.9): the same total, every quadrant whose energy is
+    // above rho times the total cut into four (a leaf's energy shared equally by its four new
+    // quadrants, which are looked at again), every quadrant at or below it a leaf (what was under
+    // it merged into it), no quadrant deeper than maxDepth. A tree with total 0 comes out as it is.
+    DirectionalTree refined(float rho = kRefineFraction, int maxDepth = kMaxQuadDepth) const;
+
+    // Plumbing (field_storage.cpp). The total energy: the sum of the root's four quadrants.
+    float total() const;
+    // Every quadrant's energy set to 0, the structure kept (the tree a new pass fills).
+    void clear();
+    // Bytes of its nodes.
+    size_t bytes() const { return nodes.capacity() * sizeof(QuadNode); }
+
+    std::vector<QuadNode> nodes;
+};
+
+// ---------------------------------------------------------------------------------------------
+// The spatial tree (Eq. 12.10, 12.11): a binary tree over the scene's box; a node is cut in half
+// across the middle of its box along axis depth mod 3 (x, y, z, x, ...), so that every leaf's box
+// follows from the path down to it. A leaf holds one cell of the field.
+struct SpatialNode {
+    uint32_t child[2] = {0, 0};  // the two halves (lower, upper coordinate); 0 for a leaf
+    uint32_t cell = 0;           // a leaf's cell (index into GuideField::cells)
+    uint8_t axis = 0;            // the axis this node cuts (depth mod 3)
+    bool isLeaf() const { return child[0] == 0; }
+};
+
+// What a cell of the field holds: the directional distribution learnt in the pass before
+// (`sampling`: the guide samples it), the one this pass fills (`learning`), and what was recorded
+// into `learning` (plumbing; the adjoint's reliability and the spatial tree's splits read it).
+struct GuideCell {
+    DirectionalTree sampling, learning;
+    uint32_t samples = 0;           // records added to `learning` in this pass
+    double sum = 0.0, sumSq = 0.0;  // of their values (for the relative error, lesson 10's 30 %)
+    uint32_t learnt = 0;            // records `sampling` was learnt from (its energies over this
+                                    // are integrals of the incident radiance, Eq. 12.13)
+    // The adjoint taken from `sampling` (Eq. 12.14): the cosine-weighted incident radiance, one
+    // number per side of a surface (lesson 10's six sides, AdjointCache::side), and whether the
+    // pass it was learnt in gave it a relative error within kMaxRelativeError (lesson 10).
+    float irradiance[6] = {0, 0, 0, 0, 0, 0};
+    bool reliable = false;
+};
+
+class SpatialTree {
+public:
+    SpatialTree() = default;
+    // One leaf (one cell) over `bounds`.
+    explicit SpatialTree(const AABB& bounds);
+
+    // The cell of the leaf whose box contains p (Eq. 12.10): down from the root, the upper half
+    // where p's coordinate along the node's axis is at or above the middle of the node's box, else
+    // the lower half. A point outside the root's box goes where its coordinates say (the first or
+    // last leaf along each axis).
+    uint32_t cellOf(const Vec3& p) const;
+    // Cuts every leaf whose cell received more than `threshold` records this pass (Eq. 12.11): its
+    // two halves along the node's axis are new leaves, the lower keeping the cell's index, the
+    // upper a new cell appended to `cells`, each a copy of the cell (its trees and statistics) with
+    // half its records (rounded down); a half that still has more than `threshold` is cut again.
+    // Stops early, leaving leaves uncut, once `cells` has maxCells cells.
+    void subdivide(std::vector<GuideCell>& cells, uint32_t threshold, size_t maxCells);
+
+    const AABB& bounds() const { return bounds_; }
+    size_t bytes() const { return nodes.capacity() * sizeof(SpatialNode); }
+    std::vector<SpatialNode> nodes;  // nodes[0] is the root
+
+private:
+    AABB bounds_;
+};
+
+// ---------------------------------------------------------------------------------------------
+// Learning (Eq. 12.12, 12.13): every vertex a camera path leaves by sampling a direction (not a
+// delta BSDF) gives one record of the radiance arriving along that direction.
+
+// One vertex of a camera path as the learning saw it.
+struct GuideVertex {
+    int cell = -1;      // the field's cell of the vertex, -1 where nothing is recorded (the escape,
+                        // a delta material, a direction that was not sampled)
+    Vec3 wi;            // the direction sampled at the vertex (unit, world space)
+    float pdf = 0.0f;   // its density per unit solid angle (the mixture's, Eq. 12.3)
+    Color throughput;   // beta_k times the sample's weight f |cos| / pdf: the path's throughput
+                        // along wi before any roulette after it
+    Color added;        // what the vertex added to the estimate (lesson 3's addMISContribution)
+    Color emitted;      // of that, the emission found at the vertex, MIS-weighted as added
+    Color emittedFull;  // the emission found at the vertex without the MIS weight, times beta_k
+};
+// One record: the cell, the direction and the value the directional tree adds (Eq. 12.13).
+struct RadianceRecord {
+    int cell = -1;
+    Vec3 wi;
+    float value = 0.0f;
+};
+// The records of one path (Eq. 12.12, 12.13), in the order of its vertices: for every vertex k
+// with a cell, the radiance arriving at x_k along wi estimated by the rest of the path — all that
+// the vertices after x_k added, but x_{k+1}'s emission counted in full (its MIS share went to
+// x_k's light sample, another direction) —, divided by the throughput along wi, channel by
+// channel (0 where a channel of it is 0), as one number (the mean of the channels), divided by
+// the pdf of wi. Appended to `out`.
+void radianceRecords(const std::vector<GuideVertex>& path, std::vector<RadianceRecord>& out);
+
+// ---------------------------------------------------------------------------------------------
+// The learned field, as the integrators use it (plumbing: field_storage.cpp): the spatial tree,
+// its cells, and the schedule of passes.
+struct GuideSettings {
+    // A leaf is cut when it received more than kSpatialThreshold * sqrt(2^pass) records in a pass
+    // of 2^pass samples per pixel (Müller et al.'s c sqrt(2^k), Eq. 12.11).
+    uint32_t spatialThreshold = 4000;
+    // The most memory the field may take (both trees of every cell and the spatial tree), in
+    // bytes: no cut and no refinement that would take it above (--guide-budget, in MB).
+    size_t budget = size_t(64) << 20;
+    float rho = kRefineFraction;
+    int maxDepth = kMaxQuadDepth;
+};
+
+class GuideField {
+public:
+    GuideField() = default;
+    GuideField(const AABB& sceneBounds, const GuideSettings& settings);
+
+    // The cell of p and its directional distribution learnt in the pass before.
+    uint32_t cellOf(const Vec3& p) const { return tree_.cellOf(p); }
+    const GuideCell& cell(uint32_t c) const { return cells_[c]; }
+    size_t cells() const { return cells_.size(); }
+    // Whether the cell's sampling tree has anything to guide with (total > 0).
+    bool canGuide(uint32_t c) const { return cells_[c].sampling.total() > 0.0f; }
+
+    // Adds one pass's records, in the order given (the same for any number of threads).
+    void add(const std::vector<RadianceRecord>& records);
+    // Ends a pass of 2^pass samples per pixel (Eq. 12.11, 12.9): cuts the spatial tree where the
+    // pass recorded many samples, makes every cell's learnt tree its sampling tree and a refined
+    // copy without energy its new learning tree, and computes the cells' adjoint (Eq. 12.14),
+    // within the memory budget.
+    void endPass(int pass);
+
+    const SpatialTree& spatialTree() const { return tree_; }
+    // Bytes of the whole field (both trees of every cell, the cells and the spatial tree).
+    size_t bytes() const;
+    int passes() const { return passes_; }
+    uint64_t records() const { return records_; }
+
+private:
+    GuideSettings settings_;
+    SpatialTree tree_;
+    std::vector<GuideCell> cells_;
+    int passes_ = 0;
+    uint64_t records_ = 0;
+};
+
+}  // namespace ps
