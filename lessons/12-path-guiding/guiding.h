@@ -150,6 +150,25 @@ struct RadianceRecord {
 void radianceRecords(const std::vector<GuideVertex>& path, std::vector<RadianceRecord>& out);
 
 // ---------------------------------------------------------------------------------------------
+// Guided sampling (Eq. 12.3, 12.4): a one-sample mixture of the guide (a cell's sampling tree)
+// and the BSDF, with the probability alpha of taking the guide.
+constexpr float kGuideFraction = 0.5f;  // alpha where a cell can guide (Müller et al.'s choice)
+
+// The mixture's density of wi at a non-delta vertex with normal n, wo towards the previous vertex
+// (Eq. 12.3): alpha times the guide's density plus (1 - alpha) times pdfBSDF, both per unit solid
+// angle.
+float guidedPdf(const Material& m, const Vec3& n, const Vec3& wo, const DirectionalTree& guide, float alpha,
+                const Vec3& wi);
+// One direction from the mixture (Eq. 12.3, 12.4), camera side (Transport::Radiance). At a delta
+// material: lesson 3's sampleBSDF(m, n, wo, rng.uniform2(), rng.uniform(), Transport::Radiance, s)
+// and nothing else (a delta lobe is never guided). Otherwise: one rng.uniform() chooses — below
+// alpha the guide (guide.sample(rng.uniform2())), else the BSDF (sampleBSDF as above, which may
+// fail) —; then s.pdf = guidedPdf(wi), s.weight = f(wo, wi) |cos theta_i| / s.pdf, s.delta false.
+// False where no direction came out or f is black there (a guide direction below the surface).
+bool sampleGuided(const Material& m, const Vec3& n, const Vec3& wo, const DirectionalTree& guide, float alpha,
+                  Rng& rng, BSDFSample& s);
+
+// ---------------------------------------------------------------------------------------------
 // The learned field, as the integrators use it (plumbing: field_storage.cpp): the spatial tree,
 // its cells, and the schedule of passes.
 struct GuideSettings {
