@@ -10,8 +10,11 @@
 // formula (Eq. 12.1-12.17).
 #pragma once
 #include <cstdint>
+#include <utility>
 #include <vector>
 #include "03-path-tracing/pathtracer.h"
+#include "08-photon-mapping/photonmap.h"
+#include "10-adrrs/adrrs.h"
 
 namespace ps {
 
@@ -120,20 +123,23 @@ private:
 };
 
 // ---------------------------------------------------------------------------------------------
-// Learning (Eq. 12.12, 12.13): every vertex a camera path leaves by sampling a direction (not a
-// delta BSDF) gives one record of the radiance arriving along that direction.
+// Learning (Eq. 12.12, 12.13): every direction a camera path samples at a non-delta vertex gives
+// one record of the radiance that arrived along it, to the cell of the vertex it left.
 
-// One vertex of a camera path as the learning saw it.
+// One vertex x_j of a camera sample — a path, or with splitting a tree of paths — in the order the
+// walk reached them (depth first), with the direction sample that led to it. A sample that the
+// roulette ended before it reached a vertex is an entry too, with nothing added.
 struct GuideVertex {
-    int cell = -1;      // the field's cell of the vertex, -1 where nothing is recorded (the escape,
-                        // a delta material, a direction that was not sampled)
-    Vec3 wi;            // the direction sampled at the vertex (unit, world space)
+    int from = -1;      // the vertex whose sample led here (its index in the list); -1 for x_0
+    int cell = -1;      // the field's cell of that vertex, which gets the record; -1: no record
+                        // (x_0, a delta bounce)
+    Vec3 wi;            // the sampled direction (unit, world space), from x_from towards x_j
     float pdf = 0.0f;   // its density per unit solid angle (the mixture's, Eq. 12.3)
-    Color throughput;   // beta_k times the sample's weight f |cos| / pdf: the path's throughput
-                        // along wi before any roulette after it
-    Color added;        // what the vertex added to the estimate (lesson 3's addMISContribution)
-    Color emitted;      // of that, the emission found at the vertex, MIS-weighted as added
-    Color emittedFull;  // the emission found at the vertex without the MIS weight, times beta_k
+    Color throughput;   // the throughput just after the sample: beta_from f |cos| / pdf, before any
+                        // roulette (Eq. 12.12's t)
+    Color added;        // what x_j added to the estimate (lesson 3's misEmission + misLightSample)
+    Color emitted;      // of that, the MIS-weighted emission found at x_j (misEmission)
+    Color emittedFull;  // the emission found at x_j without the MIS weight, times beta_j
 };
 // One record: the cell, the direction and the value the directional tree adds (Eq. 12.13).
 struct RadianceRecord {
@@ -141,32 +147,12 @@ struct RadianceRecord {
     Vec3 wi;
     float value = 0.0f;
 };
-// The records of one path (Eq. 12.12, 12.13), in the order of its vertices: for every vertex k
-// with a cell, the radiance arriving at x_k along wi estimated by the rest of the path — all that
-// the vertices after x_k added, but x_{k+1}'s emission counted in full (its MIS share went to
-// x_k's light sample, another direction) —, divided by the throughput along wi, channel by
-// channel (0 where a channel of it is 0), as one number (the mean of the channels), divided by
-// the pdf of wi. Appended to `out`.
+// The records of one camera sample (Eq. 12.12, 12.13), for every vertex j with a cell, in order:
+// the radiance that arrived along wi — what x_j and every vertex after it on its branch (the
+// vertices whose chain of `from` leads back to j) added, with x_j's MIS-weighted emission replaced
+// by its full emission —, divided channel by channel by the throughput (0 in a channel where it is
+// 0), as one number (the mean of the channels), divided by the pdf. Appended to `out`.
 void radianceRecords(const std::vector<GuideVertex>& path, std::vector<RadianceRecord>& out);
-
-// ---------------------------------------------------------------------------------------------
-// Guided sampling (Eq. 12.3, 12.4): a one-sample mixture of the guide (a cell's sampling tree)
-// and the BSDF, with the probability alpha of taking the guide.
-constexpr float kGuideFraction = 0.5f;  // alpha where a cell can guide (Müller et al.'s choice)
-
-// The mixture's density of wi at a non-delta vertex with normal n, wo towards the previous vertex
-// (Eq. 12.3): alpha times the guide's density plus (1 - alpha) times pdfBSDF, both per unit solid
-// angle.
-float guidedPdf(const Material& m, const Vec3& n, const Vec3& wo, const DirectionalTree& guide, float alpha,
-                const Vec3& wi);
-// One direction from the mixture (Eq. 12.3, 12.4), camera side (Transport::Radiance). At a delta
-// material: lesson 3's sampleBSDF(m, n, wo, rng.uniform2(), rng.uniform(), Transport::Radiance, s)
-// and nothing else (a delta lobe is never guided). Otherwise: one rng.uniform() chooses — below
-// alpha the guide (guide.sample(rng.uniform2())), else the BSDF (sampleBSDF as above, which may
-// fail) —; then s.pdf = guidedPdf(wi), s.weight = f(wo, wi) |cos theta_i| / s.pdf, s.delta false.
-// False where no direction came out or f is black there (a guide direction below the surface).
-bool sampleGuided(const Material& m, const Vec3& n, const Vec3& wo, const DirectionalTree& guide, float alpha,
-                  Rng& rng, BSDFSample& s);
 
 // ---------------------------------------------------------------------------------------------
 // The learned field, as the integrators use it (plumbing: field_storage.cpp): the spatial tree,
@@ -186,6 +172,8 @@ class GuideField {
 public:
     GuideField() = default;
     GuideField(const AABB& sceneBounds, const GuideSettings& settings);
+    // A field made by hand (tests): this spatial tree and these cells.
+    GuideField(const SpatialTree& tree, std::vector<GuideCell> cells) : tree_(tree), cells_(std::move(cells)) {}
 
     // The cell of p and its directional distribution learnt in the pass before.
     uint32_t cellOf(const Vec3& p) const { return tree_.cellOf(p); }
@@ -215,5 +203,73 @@ private:
     int passes_ = 0;
     uint64_t records_ = 0;
 };
+
+// ---------------------------------------------------------------------------------------------
+// Guided sampling (Eq. 12.3, 12.4): a one-sample mixture of the guide (a cell's sampling tree)
+// and the BSDF, with the probability alpha of taking the guide.
+constexpr float kGuideFraction = 0.5f;  // alpha where a cell can guide (Müller et al.'s choice)
+
+// The mixture's density of wi at a non-delta vertex with normal n, wo towards the previous vertex
+// (Eq. 12.3): alpha times the guide's density plus (1 - alpha) times pdfBSDF, both per unit solid
+// angle.
+float guidedPdf(const Material& m, const Vec3& n, const Vec3& wo, const DirectionalTree& guide, float alpha,
+                const Vec3& wi);
+// One direction from the mixture (Eq. 12.3, 12.4), camera side (Transport::Radiance). At a delta
+// material: lesson 3's sampleBSDF(m, n, wo, rng.uniform2(), rng.uniform(), Transport::Radiance, s)
+// and nothing else (a delta lobe is never guided). Otherwise: one rng.uniform() chooses — below
+// alpha the guide (guide.sample(rng.uniform2())), else the BSDF (sampleBSDF as above, which may
+// fail) —; then s.pdf = guidedPdf(wi), s.weight = f(wo, wi) |cos theta_i| / s.pdf, s.delta false.
+// False where no direction came out or f is black there (a guide direction below the surface).
+bool sampleGuided(const Material& m, const Vec3& n, const Vec3& wo, const DirectionalTree& guide, float alpha,
+                  Rng& rng, BSDFSample& s);
+
+// ---------------------------------------------------------------------------------------------
+// Roulette and splitting from an adjoint (Eq. 12.15 with lesson 10's window, Eq. 10.2, 10.5-10.7).
+
+// What a rule decided at a vertex: decided = false where it cannot (the walk's own roulette then
+// plays, as in the algorithm without the rule); else the expected number of continuations q.
+struct Decision {
+    bool decided = false;
+    float q = 1.0f;
+};
+// q for a path (or particle) of throughput beta at a vertex whose adjoint (what it will still
+// bring per unit of throughput, RGB) is `adjoint`, where the ideal path brings `measurement`
+// (Eq. 12.15): lesson 10's weight nu = sum_c beta_c adjoint_c / sum_c adjoint_c (the mean of beta's
+// channels for a black adjoint), the adjoint as one number (the mean of its channels), and
+// expectedContinuations(nu, weightWindow(measurement, that number)).
+float windowContinuations(const Color& beta, const Color& adjoint, float measurement);
+
+// The adjoint the field gives at a non-delta vertex with material m and normal n, seen from wo
+// (Eq. 12.14): the material's albedo / pi times the cell's irradiance on the side of the surface
+// that wo sees (lesson 10's AdjointCache::side(n, wo)).
+Color fieldAdjoint(const GuideCell& cell, const Material& m, const Vec3& n, const Vec3& wo);
+// The pixel estimate from the field (Eq. 10.9 on the field): the mean of the channels of
+// fieldAdjoint at the camera ray's first vertex x0; -1 where the field cannot say (a miss, a
+// delta material, a cell that is not reliable).
+float fieldPixelEstimate(const GuideField& field, const Scene& scene, const WalkVertex& x0);
+// The decision at camera vertex v (Eq. 12.14, 12.15): none where pixelEstimate < 0, at a miss, a
+// delta material or a cell that is not reliable; else windowContinuations(v.beta, fieldAdjoint,
+// pixelEstimate).
+Decision fieldDecision(const GuideField& field, const Scene& scene, const WalkVertex& v, float pixelEstimate);
+
+// ---------------------------------------------------------------------------------------------
+// Particles (Eq. 12.16, 12.17): visual importance from a short camera pass.
+
+// One vertex of the camera pass as the importance cache sees it.
+struct ImportanceVertex {
+    bool store = false;  // a hit on a non-delta material: an importon is left there
+    Vec3 p, n, wo;       // the point, its normal and the direction back along the camera path
+    Color beta;          // the camera path's throughput beta_k there
+};
+// The importons of one camera path (Eq. 12.16): one lesson-8 photon at every vertex that stores
+// one, at p, its "power" the throughput times pixels / paths (P pixels, M camera paths in the
+// whole pass), its direction (setWLight) wo. Appended to `out`.
+void appendImportons(const std::vector<ImportanceVertex>& path, int pixels, int paths, std::vector<Photon>& out);
+// The decision at a particle's vertex y (Eq. 12.17): none at a delta material or where the
+// importance cache's entry for y (cache.entry(y.sp.p, y.sp.n, y.wo): the side the particle
+// arrived on) is not reliable; else windowContinuations(y.beta, W~, imageTotal) with W~ the
+// material's albedo times the entry's estimate (the importance reflected by a white Lambertian
+// surface there).
+Decision particleDecision(const AdjointCache& importance, const Scene& scene, const WalkVertex& y, float imageTotal);
 
 }  // namespace ps

@@ -1,4 +1,4 @@
-// Lesson 12 — what a camera path teaches the field: one record per sampled direction of the
+// Lesson 12 — what a camera sample teaches the field: one record per sampled direction of the
 // radiance that arrived along it. Interface: lessons/12-path-guiding/guiding.h. Equation numbers
 // refer to lessons/12-path-guiding/README.md.
 #include "12-path-guiding/guiding.h"
@@ -7,28 +7,28 @@
 namespace ps {
 
 void radianceRecords(const std::vector<GuideVertex>& path, std::vector<RadianceRecord>& out) {
-    //! TODO(12) Eq. 12.12, 12.13: for every vertex k with a cell (cell >= 0), in order: the
-    //!          radiance that arrived along its wi is what the vertices after it added, with the
-    //!          next vertex's MIS-weighted emission replaced by its full emission (emittedFull),
-    //!          divided channel by channel by the vertex's throughput (0 in a channel where that
-    //!          is 0); the record's value is the mean of its channels divided by the vertex's pdf.
-    //!          Pitfalls: x_k's own `added` is its light sample, along another direction than
-    //!          wi; the throughput is beta_k times the sample's weight, not beta_k alone.
+    //! TODO(12) Eq. 12.12, 12.13: for every vertex j with a cell (cell >= 0), in order: the sum of
+    //!          `added` over x_j's branch (x_j and every vertex whose `from` chain reaches j), with
+    //!          x_j's `emitted` replaced by its `emittedFull`, divided channel by channel by x_j's
+    //!          throughput (0 in a channel where that is 0); the record's value is the mean of the
+    //!          three channels divided by x_j's pdf.
+    //!          Pitfalls: the vertex the sample left (x_from) added its light sample along another
+    //!          direction: it is not part of the radiance along wi; a vertex's branch ends where
+    //!          the next vertex comes from an earlier one (a split).
     //! STUB (void)path; (void)out;
     //! STUB (void)PS_TODO("lesson 12: radianceRecords", 0);
     //! BEGIN
-    // after[k] = the sum of added_j over j > k.
-    std::vector<Color> after(path.size(), Color(0.0f));
-    Color sum(0.0f);
-    for (size_t k = path.size(); k-- > 0;) {
-        after[k] = sum;
-        sum += path[k].added;
+    // branch[j]: the sum of `added` over x_j's branch. A vertex comes after the one it was sampled
+    // from, so one pass from the end adds every branch into the vertex it grew from.
+    std::vector<Color> branch(path.size(), Color(0.0f));
+    for (size_t j = path.size(); j-- > 0;) {
+        branch[j] += path[j].added;
+        if (path[j].from >= 0) branch[size_t(path[j].from)] += branch[j];
     }
-    for (size_t k = 0; k < path.size(); ++k) {
-        const GuideVertex& v = path[k];
+    for (size_t j = 0; j < path.size(); ++j) {
+        const GuideVertex& v = path[j];
         if (v.cell < 0) continue;
-        Color L = after[k];
-        if (k + 1 < path.size()) L += path[k + 1].emittedFull - path[k + 1].emitted;
+        const Color L = branch[j] - v.emitted + v.emittedFull;
         const Color& t = v.throughput;
         const Color Li(t.r > 0.0f ? L.r / t.r : 0.0f, t.g > 0.0f ? L.g / t.g : 0.0f, t.b > 0.0f ? L.b / t.b : 0.0f);
         out.push_back({v.cell, v.wi, (Li.r + Li.g + Li.b) / 3.0f / v.pdf});

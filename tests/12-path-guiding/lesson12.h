@@ -123,3 +123,49 @@ inline const Leaf* leafAt(const std::vector<Leaf>& leaves, double u, double v) {
 }
 
 }  // namespace lesson12
+
+namespace lesson12 {
+
+// A closed diffuse box [0, 2] x [0, 1] x [0, 1] seen from inside, with a lamp under its ceiling if
+// `lamp`; materials: 0 "w" diffuse albedo (0.5, 0.25, 1), 1 "m" a mirror, 2 "p" Phong 10 albedo 0.6
+// (the last two used by no surface: for vertices made by hand).
+inline ps::Scene handScene(bool lamp = false) {
+    std::string text =
+        "camera eye 1 0.5 0.5  target 2 0.5 0.5  up 0 1 0  fov 60  resolution 4 4\n"
+        "material w diffuse albedo 0.5 0.25 1\n"
+        "material m mirror albedo 1 1 1\n"
+        "material p phong albedo 0.6 0.6 0.6 exponent 10\n"
+        "quad 0 0 0  2 0 0  2 0 1  0 0 1  material w\n"
+        "quad 0 1 0  0 1 1  2 1 1  2 1 0  material w\n"
+        "quad 0 0 0  0 0 1  0 1 1  0 1 0  material w\n"
+        "quad 2 0 0  2 1 0  2 1 1  2 0 1  material w\n"
+        "quad 0 0 0  0 1 0  2 1 0  2 0 0  material w\n"
+        "quad 0 0 1  2 0 1  2 1 1  0 1 1  material w\n";
+    if (lamp) text += "quad 0.9 0.999 0.4  1.1 0.999 0.4  1.1 0.999 0.6  0.9 0.999 0.6  emission 4 4 4\n";
+    return ps::parseScene(text, "hand-box.scene");
+}
+
+// A vertex made by hand: a hit at p with normal n and material, seen from wo, throughput beta.
+inline ps::WalkVertex handVertex(const Vec3& p, const Vec3& n, int material, const Vec3& wo, const Color& beta) {
+    ps::WalkVertex v;
+    v.hit = true;
+    v.sp.p = p;
+    v.sp.n = n;
+    v.sp.material = material;
+    v.wo = glm::normalize(wo);
+    v.beta = beta;
+    v.bounces = 2;
+    return v;
+}
+
+// Lesson 10's window written out (Eq. 10.2, 10.5-10.7; the test's own oracle): q for weight nu,
+// pixel estimate I and adjoint Psi (one number).
+inline double windowQ(double nu, double I, double psi) {
+    const double lower = psi > 0.0 ? 2.0 * (I / psi) / 6.0 : HUGE_VAL, upper = 5.0 * lower;
+    double q = 1.0;
+    if (nu < lower) q = nu / lower;
+    else if (nu > upper) q = nu / upper;
+    return std::min(8.0, std::max(0.05, q));
+}
+
+}  // namespace lesson12
