@@ -80,20 +80,26 @@ struct SpatialNode {
     bool isLeaf() const { return child[0] == 0; }
 };
 
-// What a cell of the field holds: the directional distribution learnt in the pass before
+// What a cell of the field holds, per side of a surface (lesson 10's six sides,
+// AdjointCache::side): the floor and the wall beside it, or the two faces of a wall, see different
+// hemispheres and are kept apart. Per side: the directional distribution learnt in the pass before
 // (`sampling`: the guide samples it), the one this pass fills (`learning`), and what was recorded
-// into `learning` (plumbing; the adjoint's reliability and the spatial tree's splits read it).
-struct GuideCell {
+// into `learning` (plumbing; the adjoint and its reliability read it).
+struct GuideSide {
     DirectionalTree sampling, learning;
     uint32_t samples = 0;           // records added to `learning` in this pass
     double sum = 0.0, sumSq = 0.0;  // of their values (for the relative error, lesson 10's 30 %)
     uint32_t learnt = 0;            // records `sampling` was learnt from (its energies over this
                                     // are integrals of the incident radiance, Eq. 12.13)
-    // The adjoint taken from `sampling` (Eq. 12.14): the cosine-weighted incident radiance, one
-    // number per side of a surface (lesson 10's six sides, AdjointCache::side), and whether the
-    // pass it was learnt in gave it a relative error within kMaxRelativeError (lesson 10).
-    float irradiance[6] = {0, 0, 0, 0, 0, 0};
+    // The adjoint taken from `sampling` (Eq. 12.14): the cosine-weighted incident radiance on this
+    // side, and whether the pass it was learnt in gave it a relative error within
+    // kMaxRelativeError (lesson 10).
+    float irradiance = 0.0f;
     bool reliable = false;
+};
+struct GuideCell {
+    GuideSide side[6];
+    uint32_t samples = 0;  // records of all its sides in this pass (the spatial tree's cut, Eq. 12.11)
 };
 
 class SpatialTree {
@@ -133,6 +139,7 @@ struct GuideVertex {
     int from = -1;      // the vertex whose sample led here (its index in the list); -1 for x_0
     int cell = -1;      // the field's cell of that vertex, which gets the record; -1: no record
                         // (x_0, a delta bounce)
+    int side = 0;       // the side of the surface there (AdjointCache::side), which gets it
     Vec3 wi;            // the sampled direction (unit, world space), from x_from towards x_j
     float pdf = 0.0f;   // its density per unit solid angle (the mixture's, Eq. 12.3)
     Color throughput;   // the throughput just after the sample: beta_from f |cos| / pdf, before any
@@ -143,7 +150,7 @@ struct GuideVertex {
 };
 // One record: the cell, the direction and the value the directional tree adds (Eq. 12.13).
 struct RadianceRecord {
-    int cell = -1;
+    int cell = -1, side = 0;
     Vec3 wi;
     float value = 0.0f;
 };
@@ -151,7 +158,8 @@ struct RadianceRecord {
 // the radiance that arrived along wi — what x_j and every vertex after it on its branch (the
 // vertices whose chain of `from` leads back to j) added, with x_j's MIS-weighted emission replaced
 // by its full emission —, divided channel by channel by the throughput (0 in a channel where it is
-// 0), as one number (the mean of the channels), divided by the pdf. Appended to `out`.
+// 0), as one number (the mean of the channels), divided by the pdf; to the vertex's cell and side.
+// Appended to `out`.
 void radianceRecords(const std::vector<GuideVertex>& path, std::vector<RadianceRecord>& out);
 
 // ---------------------------------------------------------------------------------------------
@@ -175,12 +183,12 @@ public:
     // A field made by hand (tests): this spatial tree and these cells.
     GuideField(const SpatialTree& tree, std::vector<GuideCell> cells) : tree_(tree), cells_(std::move(cells)) {}
 
-    // The cell of p and its directional distribution learnt in the pass before.
+    // The cell of p, and what it learnt in the pass before.
     uint32_t cellOf(const Vec3& p) const { return tree_.cellOf(p); }
     const GuideCell& cell(uint32_t c) const { return cells_[c]; }
     size_t cells() const { return cells_.size(); }
-    // Whether the cell's sampling tree has anything to guide with (total > 0).
-    bool canGuide(uint32_t c) const { return cells_[c].sampling.total() > 0.0f; }
+    // Whether a side of a cell has anything to guide with (its sampling tree's total > 0).
+    bool canGuide(uint32_t c, int side) const { return cells_[c].side[side].sampling.total() > 0.0f; }
 
     // Adds one pass's records, in the order given (the same for any number of threads).
     void add(const std::vector<RadianceRecord>& records);
@@ -197,6 +205,7 @@ public:
     uint64_t records() const { return records_; }
 
 private:
+    bool valid(const RadianceRecord& r) const;
     GuideSettings settings_;
     SpatialTree tree_;
     std::vector<GuideCell> cells_;
@@ -240,15 +249,15 @@ struct Decision {
 float windowContinuations(const Color& beta, const Color& adjoint, float measurement);
 
 // The adjoint the field gives at a non-delta vertex with material m and normal n, seen from wo
-// (Eq. 12.14): the material's albedo / pi times the cell's irradiance on the side of the surface
-// that wo sees (lesson 10's AdjointCache::side(n, wo)).
+// (Eq. 12.14): the material's albedo / pi times the irradiance of the cell's side that wo sees
+// (lesson 10's AdjointCache::side(n, wo)).
 Color fieldAdjoint(const GuideCell& cell, const Material& m, const Vec3& n, const Vec3& wo);
 // The pixel estimate from the field (Eq. 10.9 on the field): the mean of the channels of
 // fieldAdjoint at the camera ray's first vertex x0; -1 where the field cannot say (a miss, a
-// delta material, a cell that is not reliable).
+// delta material, a side of a cell that is not reliable).
 float fieldPixelEstimate(const GuideField& field, const Scene& scene, const WalkVertex& x0);
 // The decision at camera vertex v (Eq. 12.14, 12.15): none where pixelEstimate < 0, at a miss, a
-// delta material or a cell that is not reliable; else windowContinuations(v.beta, fieldAdjoint,
+// delta material or where the side of v's cell that v.wo sees is not reliable; else windowContinuations(v.beta, fieldAdjoint,
 // pixelEstimate).
 Decision fieldDecision(const GuideField& field, const Scene& scene, const WalkVertex& v, float pixelEstimate);
 

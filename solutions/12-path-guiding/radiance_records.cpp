@@ -11,7 +11,7 @@ void radianceRecords(const std::vector<GuideVertex>& path, std::vector<RadianceR
     //!          `added` over x_j's branch (x_j and every vertex whose `from` chain reaches j), with
     //!          x_j's `emitted` replaced by its `emittedFull`, divided channel by channel by x_j's
     //!          throughput (0 in a channel where that is 0); the record's value is the mean of the
-    //!          three channels divided by x_j's pdf.
+    //!          three channels divided by x_j's pdf; the record goes to x_j's cell and side.
     //!          Pitfalls: the vertex the sample left (x_from) added its light sample along another
     //!          direction: it is not part of the radiance along wi; a vertex's branch ends where
     //!          the next vertex comes from an earlier one (a split).
@@ -31,7 +31,7 @@ void radianceRecords(const std::vector<GuideVertex>& path, std::vector<RadianceR
         const Color L = branch[j] - v.emitted + v.emittedFull;
         const Color& t = v.throughput;
         const Color Li(t.r > 0.0f ? L.r / t.r : 0.0f, t.g > 0.0f ? L.g / t.g : 0.0f, t.b > 0.0f ? L.b / t.b : 0.0f);
-        out.push_back({v.cell, v.wi, (Li.r + Li.g + Li.b) / 3.0f / v.pdf});
+        out.push_back({v.cell, v.side, v.wi, (Li.r + Li.g + Li.b) / 3.0f / v.pdf});
     }
     //! END
 }

@@ -41,7 +41,8 @@ TEST_CASE("window: q from a throughput, an adjoint and the measurement an ideal 
 
 TEST_CASE("ADRRS on the field: the adjoint of a cell and a camera path's decision (Eq. 12.14, 12.15, 10.9) [2 pts]") {
     const ps::Scene scene = handScene();
-    // Two cells: the box [0, 2] x [0, 1] x [0, 1] cut in x at 1; cell 1 (x < 1) reliable, cell 0 not.
+    // Two cells: the box [0, 2] x [0, 1] x [0, 1] cut in x at 1; cell 1 (x < 1) reliable on every
+    // side but +x, cell 0 not at all.
     ps::AABB box;
     box.lo = Vec3(0.0f);
     box.hi = Vec3(2.0f, 1.0f, 1.0f);
@@ -52,8 +53,10 @@ TEST_CASE("ADRRS on the field: the adjoint of a cell and a camera path's decisio
     tree.nodes[1].cell = 1, tree.nodes[2].cell = 0;
     std::vector<ps::GuideCell> cells(2);
     const float E[6] = {1.0f, 2.0f, 3.0f, 4.0f, 5.0f, 6.0f};  // +x, -x, +y, -y, +z, -z
-    for (int s = 0; s < 6; ++s) cells[1].irradiance[s] = E[s], cells[0].irradiance[s] = 100.0f * E[s];
-    cells[1].reliable = true;
+    for (int s = 0; s < 6; ++s) {
+        cells[1].side[s].irradiance = E[s], cells[0].side[s].irradiance = 100.0f * E[s];
+        cells[1].side[s].reliable = s != 0;
+    }
     const ps::GuideField field(tree, cells);
     const Color albedo(0.5f, 0.25f, 1.0f);  // material 0
 
@@ -86,9 +89,10 @@ TEST_CASE("ADRRS on the field: the adjoint of a cell and a camera path's decisio
     ps::WalkVertex unreliable = handVertex(Vec3(1.5f, 0.0f, 0.5f), up, 0, Vec3(0, 1, 0), Color(1.0f));
     ps::WalkVertex mirror = x0;
     mirror.sp.material = 1;
+    ps::WalkVertex plusX = handVertex(Vec3(0.0f, 0.5f, 0.5f), Vec3(1, 0, 0), 0, Vec3(1, 0.2f, 0), Color(1.0f));
     for (const std::pair<const ps::WalkVertex*, const char*> c :
          {std::make_pair(&miss, "a miss"), std::make_pair(&unreliable, "a cell that is not reliable"),
-          std::make_pair(&mirror, "a mirror")}) {
+          std::make_pair(&mirror, "a mirror"), std::make_pair(&plusX, "a side (+x) that is not reliable")}) {
         const float got = ps::fieldPixelEstimate(field, scene, *c.first);
         CHECK_MESSAGE(got == -1.0f, "fieldPixelEstimate at " << c.second << ": expected -1, got " << num(got));
     }
@@ -118,8 +122,10 @@ TEST_CASE("ADRRS on the field: the adjoint of a cell and a camera path's decisio
     v2.sp.material = 1;
     ps::WalkVertex v3 = handVertex(Vec3(1.75f, 1.0f, 0.5f), Vec3(0, -1, 0), 0, Vec3(0, -1, 0), Color(0.5f));
     v3.pPrev = Vec3(0.2f, 0.0f, 0.5f);
+    ps::WalkVertex v4 = handVertex(Vec3(0.0f, 0.5f, 0.5f), Vec3(1, 0, 0), 0, Vec3(1, 0.2f, 0), Color(0.5f));
     for (const NoCase& c : {NoCase{v1, -1.0f, "no pixel estimate (I~ = -1)"}, NoCase{v2, float(I), "a mirror"},
                             NoCase{v3, float(I), "a cell that is not reliable (the previous vertex's is)"},
+                            NoCase{v4, float(I), "a side (+x) that is not reliable"},
                             NoCase{miss, float(I), "a miss"}}) {
         const ps::Decision d = ps::fieldDecision(field, scene, c.v, c.I);
         CHECK_MESSAGE(!d.decided, "fieldDecision at " << c.what << ": expected no decision (the walk's own roulette), "

@@ -12,7 +12,7 @@ TEST_CASE("radiance records: the radiance along each sampled direction, over the
     // x0: the camera ray's vertex, no sample led here; its light sample 0.3
     t[0].added = Color(0.3f);
     // x1: sampled from x0 (cell 7); emission found here 1.0 (0.25 after MIS), its light sample (0.5, 0.4, 0.3)
-    t[1].from = 0, t[1].cell = 7, t[1].wi = Vec3(0, 0, 1), t[1].pdf = 0.5f, t[1].throughput = Color(0.8f, 0.4f, 0.2f);
+    t[1].from = 0, t[1].cell = 7, t[1].side = 3, t[1].wi = Vec3(0, 0, 1), t[1].pdf = 0.5f, t[1].throughput = Color(0.8f, 0.4f, 0.2f);
     t[1].emitted = Color(0.25f), t[1].emittedFull = Color(1.0f), t[1].added = Color(0.25f) + Color(0.5f, 0.4f, 0.3f);
     // x2: sampled from x1 (cell 2), a mirror: nothing added
     t[2].from = 1, t[2].cell = 2, t[2].wi = Vec3(1, 0, 0), t[2].pdf = 2.0f, t[2].throughput = Color(0.5f, 0.0f, 0.25f);
@@ -23,7 +23,7 @@ TEST_CASE("radiance records: the radiance along each sampled direction, over the
     t[4].from = 3, t[4].cell = 9, t[4].wi = Vec3(0, 1, 0), t[4].pdf = 0.25f, t[4].throughput = Color(0.2f, 0.05f, 0.1f);
     t[4].added = Color(0.05f);
     // x5: the second continuation of x1 (a split), sampled from x1 (cell 2), light sample 0.2
-    t[5].from = 1, t[5].cell = 2, t[5].wi = Vec3(0, 0, -1), t[5].pdf = 1.0f, t[5].throughput = Color(0.3f);
+    t[5].from = 1, t[5].cell = 2, t[5].side = 5, t[5].wi = Vec3(0, 0, -1), t[5].pdf = 1.0f, t[5].throughput = Color(0.3f);
     t[5].added = Color(0.2f);
     // x6: sampled from x5 (cell 4), ended by the roulette before it reached anything
     t[6].from = 5, t[6].cell = 4, t[6].wi = Vec3(0, -1, 0), t[6].pdf = 0.5f, t[6].throughput = Color(0.1f);
@@ -65,9 +65,10 @@ TEST_CASE("radiance records: the radiance along each sampled direction, over the
     for (size_t k = 0; k < want.size(); ++k) {
         const ps::RadianceRecord& r = out[1 + k];
         const ps::GuideVertex& v = t[want[k].j];
-        CHECK_MESSAGE((r.cell == v.cell && glm::length(r.wi - v.wi) == 0.0f),
-                      "radianceRecords: record " << k << " expected cell " << v.cell << " and direction " << str(v.wi)
-                                                 << " (x" << want[k].j << "'s), got cell " << r.cell << " and "
+        CHECK_MESSAGE((r.cell == v.cell && r.side == v.side && glm::length(r.wi - v.wi) == 0.0f),
+                      "radianceRecords: record " << k << " expected cell " << v.cell << ", side " << v.side
+                                                 << " and direction " << str(v.wi) << " (x" << want[k].j
+                                                 << "'s), got cell " << r.cell << ", side " << r.side << " and "
                                                  << str(r.wi));
         CHECK_MESSAGE(std::abs(r.value - want[k].value) <= 1e-5 * want[k].value + 1e-7,
                       "radianceRecords: record " << k << " (" << want[k].note << ") expected value "

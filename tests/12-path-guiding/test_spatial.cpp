@@ -99,7 +99,7 @@ TEST_CASE("spatial tree: a leaf is cut when its cell has more than the stated nu
         ps::SpatialTree t(box);
         std::vector<ps::GuideCell> cells(1);
         cells[0].samples = c.samples;
-        cells[0].learning.record(Vec3(0.0f, 0.0f, 1.0f), 2.5f);
+        cells[0].side[2].learning.record(Vec3(0.0f, 0.0f, 1.0f), 2.5f);
         t.subdivide(cells, T, c.maxCells);
         const size_t want = c.cells;
         CHECK_MESSAGE(cells.size() == want, "SpatialTree::subdivide(threshold " << T << ", maxCells " << c.maxCells
@@ -130,9 +130,9 @@ TEST_CASE("spatial tree: a leaf is cut when its cell has more than the stated nu
             ++levels;
         }
         for (size_t k = 0; k < cells.size(); ++k) {
-            CHECK_MESSAGE(cells[k].learning.total() == 2.5f, "SpatialTree::subdivide: cell "
-                                                                 << k << " must be a copy of the cut one (its tree), got "
-                                                                 << num(cells[k].learning.total()) << " as its total");
+            CHECK_MESSAGE(cells[k].side[2].learning.total() == 2.5f,
+                          "SpatialTree::subdivide: cell " << k << " must be a copy of the cut one (its trees), got "
+                                                          << num(cells[k].side[2].learning.total()) << " as a total");
             if (c.samples != 100 * T)
                 CHECK_MESSAGE(cells[k].samples == remaining, "SpatialTree::subdivide(" << c.what << "): cell " << k
                                                                                        << " expected " << remaining
@@ -155,20 +155,21 @@ TEST_CASE("learned field: a cell's statistics are the sums of what was recorded 
     struct Point {
         Vec3 p, w;
         float value;
+        int side;
     };
     const auto draw = [&](int n) {
         std::vector<Point> pts;
         for (int k = 0; k < n; ++k) {
             const float s = k % 3 ? 0.3f : 1.0f;  // two thirds of them near the lower corner
             const Vec3 p = box.lo + s * box.extent() * Vec3(rng.uniform(), rng.uniform(), rng.uniform());
-            pts.push_back({p, ps::sampleUniformSphere(rng.uniform2()), 0.5f + rng.uniform()});
+            pts.push_back({p, ps::sampleUniformSphere(rng.uniform2()), 0.5f + rng.uniform(), k % 6});
         }
         return pts;
     };
     for (int pass = 0; pass < 2; ++pass) {
         const std::vector<Point> pts = draw(3000);
         std::vector<ps::RadianceRecord> recs;
-        for (const Point& q : pts) recs.push_back({int(field.cellOf(q.p)), q.w, q.value});
+        for (const Point& q : pts) recs.push_back({int(field.cellOf(q.p)), q.side, q.w, q.value});
         field.add(recs);
         if (pass == 1) {
             std::vector<LeafBox> leaves;
@@ -178,20 +179,22 @@ TEST_CASE("learned field: a cell's statistics are the sums of what was recorded 
                                                  << leaves.size() << " leaves");
             int wrong = 0;
             std::string first;
-            for (const LeafBox& l : leaves) {
-                double sum = 0.0;
-                uint32_t n = 0;
-                for (const Point& q : pts)
-                    if (bruteCell(leaves, field.spatialTree().bounds(), q.p) == l.cell) {
-                        sum += q.value;
-                        ++n;
-                    }
-                const ps::GuideCell& c = field.cell(l.cell);
-                if ((c.samples != n || std::abs(c.learning.total() - sum) > 1e-4 * (1.0 + sum)) && wrong++ == 0)
-                    first = "cell " + std::to_string(l.cell) + " (box " + str(l.box.lo) + " - " + str(l.box.hi) +
-                            "): expected " + std::to_string(n) + " records of total " + num(sum) + ", got " +
-                            std::to_string(c.samples) + " of total " + num(c.learning.total());
-            }
+            for (const LeafBox& l : leaves)
+                for (int side = 0; side < 6; ++side) {
+                    double sum = 0.0;
+                    uint32_t n = 0;
+                    for (const Point& q : pts)
+                        if (q.side == side && bruteCell(leaves, field.spatialTree().bounds(), q.p) == l.cell) {
+                            sum += q.value;
+                            ++n;
+                        }
+                    const ps::GuideSide& c = field.cell(l.cell).side[side];
+                    if ((c.samples != n || std::abs(c.learning.total() - sum) > 1e-4 * (1.0 + sum)) && wrong++ == 0)
+                        first = "cell " + std::to_string(l.cell) + " (box " + str(l.box.lo) + " - " + str(l.box.hi) +
+                                "), side " + std::to_string(side) + ": expected " + std::to_string(n) +
+                                " records of total " + num(sum) + ", got " + std::to_string(c.samples) + " of total " +
+                                num(c.learning.total());
+                }
             CHECK_MESSAGE(wrong == 0, "GuideField: " << wrong << " of " << leaves.size()
                                                      << " cells do not hold the records whose points lie in their box; "
                                                         "the first, "
