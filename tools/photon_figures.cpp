@@ -78,7 +78,7 @@ Image renderFigure(const Scene& scene, const Settings& s, const std::function<Co
 Color mapSeenDirectly(const Scene& scene, const Ray& ray, Rng& rng, const PhotonMap& map, const EstimateOptions& est,
                       bool emission) {
     Color L(0.0f);
-    cameraWalk(scene, ray, rng, scene.settings.maxDepth, [&](const WalkVertex& v) {
+    cameraWalk(scene, ray, rng, {scene.settings.maxDepth}, [&](const WalkVertex& v) {
         if (!v.hit) return false;
         if (emission && v.specular && v.sp.light >= 0)
             L += v.beta * emittedRadiance(scene.lights[size_t(v.sp.light)], v.sp.n, v.wo);

@@ -6,22 +6,30 @@
 
 namespace ps {
 
-void addMISContribution(const Scene& scene, const WalkVertex& v, Rng& rng, int maxDepth, Color& L) {
-    // TODO(03) Add to L what vertex x_k adds with both techniques weighted by kPathHeuristic
-    //          (Eq. 3.7): the emission the walk finds (the hit light sp.light, or
-    //          scene.background where it left) with weight 1 after a specular bounce, else
-    //          the BSDF sample's weight from v.pdfPrev against the density with which a
+Color misEmission(const Scene& scene, const WalkVertex& v) {
+    // TODO(03) The first half of Eq. 3.7 at x_k: beta_k times the emission the walk finds (the hit
+    //          light sp.light, or scene.background where it left) with weight 1 after a specular
+    //          bounce, else the BSDF sample's weight from v.pdfPrev against the density with which a
     //          light sample at the previous vertex would have chosen it (lesson 2's
-    //          pdfLightDirection); then, where LiNextEvent takes one, the light sample with
-    //          its weight from DirectSample's two densities (two additions to L, in that order).
+    //          pdfLightDirection); black if there is none.
     //          Pitfall: both densities of the hit belong to x_{k-1} (v.pPrev), not to x_k.
-    (void)scene; (void)v; (void)rng; (void)maxDepth; (void)L;
-    (void)PS_TODO("lesson 03: addMISContribution (LiMIS)", 0);
+    (void)scene; (void)v;
+    return PS_TODO("lesson 03: misEmission (LiMIS)", Color(0.0f));
+}
+
+Color misLightSample(const Scene& scene, const WalkVertex& v, Rng& rng, int maxDepth) {
+    // TODO(03) The second half of Eq. 3.7 at x_k, where LiNextEvent takes one: beta_k times the
+    //          light sample, weighted by kPathHeuristic from DirectSample's light density against
+    //          the density with which the walk itself leaves x_k in that direction (pdfWalk).
+    //          Pitfall: the light sample at the vertex with maxDepth bounces would make a path
+    //          of maxDepth + 1 bounces.
+    (void)scene; (void)v; (void)rng; (void)maxDepth;
+    return PS_TODO("lesson 03: misLightSample (LiMIS)", Color(0.0f));
 }
 
 Color LiMIS(const Scene& scene, const Ray& cameraRay, Rng& rng, int maxDepth) {
     Color L(0.0f);
-    cameraWalk(scene, cameraRay, rng, maxDepth, [&](const WalkVertex& v) {
+    cameraWalk(scene, cameraRay, rng, {maxDepth}, [&](const WalkVertex& v) {
         addMISContribution(scene, v, rng, maxDepth, L);
         return true;
     });

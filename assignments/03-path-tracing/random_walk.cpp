@@ -7,7 +7,7 @@ namespace ps {
 
 Color LiRandomWalk(const Scene& scene, const Ray& cameraRay, Rng& rng, int maxDepth) {
     Color L(0.0f);
-    cameraWalk(scene, cameraRay, rng, maxDepth, [&](const WalkVertex& v) {
+    cameraWalk(scene, cameraRay, rng, {maxDepth}, [&](const WalkVertex& v) {
         // TODO(03) What vertex x_k adds to L (Eq. 3.4): beta_k times the emission leaving it
         //          towards the previous vertex, the background's radiance where the walk left
         //          the scene; then return true (the walk decides where it ends).

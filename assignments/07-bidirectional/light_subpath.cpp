@@ -8,7 +8,7 @@ namespace ps {
 
 void lightSubpath(const Scene& scene, Rng& rng, int maxDepth, Heuristic h, Subpath& path) {
     // TODO(07) Eq. 7.1, 7.3: clear path, then lesson 5's lightWalk with a visitor that stores
-    //          every vertex it is shown, at most maxDepth + 1: y_0 from v.start (onLight,
+    //          every vertex it is shown, at most maxDepth + 1: y_0 from the walk's start (onLight,
     //          pointLight, infinite with sp.n towards the background, as lesson 6's
     //          backgroundVertex), pdfFwd = pdfLightOrigin (0: end the walk), beta = 1 / pdfFwd;
     //          each later vertex a surfaceVertex with the walk's beta and pdfFwd (pdfLightToward

@@ -16,10 +16,10 @@ float photonSurvival(const Color& throughput, int bounces) {
 }
 
 void tracePhoton(const Scene& scene, Rng& rng, int maxDepth, MapKind kind, int emitted, std::vector<Photon>& out) {
-    // TODO(08) Eq. 8.1-8.3: lightWalk(scene, rng, maxDepth, visitor, photonSurvival). The visitor
+    // TODO(08) Eq. 8.1-8.3: lightWalk(scene, rng, {maxDepth, photonSurvival}, visitor). The visitor
     //          goes on at y0 (bounces 0). At a surface (bounces >= 1) with material m:
     //          - m.isDelta(): a specular bounce, nothing stored; go on.
-    //          - else a photon {p = sp.p, power = beta / emitted, setWLight(wLight)} goes to out
+    //          - else a photon {p = sp.p, power = beta / emitted, setWLight(v.wo)} goes to out
     //            for the global map always; for the caustic map only if every surface before this
     //            one was specular and there was at least one (L S+ D). The caustic walk ends at
     //            its first non-specular surface, the global walk goes on.

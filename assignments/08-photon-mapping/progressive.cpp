@@ -13,7 +13,7 @@ double ppmNextRadius2(double r2, int pass, double alpha) {
 }
 
 Color LiProgressive(const Scene& scene, const Ray& ray, Rng& rng, const PhotonMap& map, float r2, int maxDepth) {
-    // TODO(08) Eq. 8.14 on lesson 3's cameraWalk(scene, ray, rng, maxDepth, visitor):
+    // TODO(08) Eq. 8.14 on lesson 3's cameraWalk(scene, ray, rng, {maxDepth}, visitor):
     //          - a miss: the background (scene.backgroundRadiance()) if v.specular; end.
     //          - an emitter (v.sp.light >= 0) seen with v.specular: add its emittedRadiance.
     //          - a specular material: go on.

@@ -1,28 +1,22 @@
 // Lesson 11 — distributed ray tracing: lens, area lights and glossy lobes sampled, mirrors and
-// glass followed, no diffuse interreflection. Interface: lessons/11-classics/distributed.h.
-// Equation numbers refer to lessons/11-classics/README.md.
+// glass followed, no diffuse interreflection: lesson 3's path tracer with another visitor.
+// Interface: lessons/11-classics/distributed.h. Equation numbers refer to lessons/11-classics/README.md.
 #include "11-classics/distributed.h"
 #include "todo.h"
 
 namespace ps {
 
 Color LiDistributed(const Scene& scene, const Ray& cameraRay, Rng& rng, int maxDepth) {
-    // TODO(11) Eq. 11.19: follow the ray for bounces = 0, 1, ..., with the throughput beta (1 at
-    //          first). At each step, in this order:
-    //          1. the emission the ray finds (the hit surface's light, or scene.background where it
-    //             leaves): beta Le w, w = 1 after the camera or a delta bounce, else the power
-    //             heuristic of the BSDF sample's pdf against pdfLightDirection from the previous
-    //             point (as lesson 3's LiMIS). Stop at a miss or at bounces == maxDepth.
-    //          2. at a non-delta surface, a light sample (sampleDirectLight(scene, sp, wo,
-    //             rng.uniform(), rng.uniform2()), lesson 2): beta d.value w, with w = 1 at a
-    //             diffuse surface (no BSDF sample competes there) and the power heuristic of
-    //             d.pdfLight against d.pdfBSDF at a glossy one.
-    //          3. a diffuse surface ends the path (no diffuse interreflection).
-    //          4. glossy, mirror, glass: sampleBSDF(m, n, wo, rng.uniform2(), rng.uniform(),
-    //             Transport::Radiance, b) (stop if it fails), beta *= b.weight, and go on from a
-    //             ray spawned along b.wi.
-    //          Pitfalls: b.weight is f |cos| / pdf: the lobe's pdf alone is not the glossy
-    //          reflection; a light sample MIS-weighted at a diffuse point loses light.
+    // TODO(11) Eq. 11.19 as a visitor of lesson 3's camera walk, without Russian roulette
+    //          (alwaysSurvive: the walk ends only where the visitor or maxDepth says). At each
+    //          vertex, in this order: the emission the walk found, weighted as in lesson 3's
+    //          pt (misEmission); then at a glossy, mirror or glass vertex lesson 3's
+    //          MIS-weighted light sample (misLightSample) and the walk goes on; at a diffuse one
+    //          a light sample (lesson 2's sampleDirectLight(scene, sp, wo, rng.uniform(),
+    //          rng.uniform2())) with weight 1, if the path may still have a bounce, and the walk
+    //          ends there.
+    //          Pitfalls: at a diffuse point no BSDF sample competes with the light sample (an MIS
+    //          weight there loses light); a miss ends the walk.
     (void)scene; (void)cameraRay; (void)rng; (void)maxDepth;
     return PS_TODO("lesson 11: LiDistributed", Color(0.0f));
 }

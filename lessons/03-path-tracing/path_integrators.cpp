@@ -6,9 +6,21 @@
 //   pt-bsdf   BSDF sampling only (random_walk.cpp, Eq. 3.3, 3.4)
 //   pt-nee    with next-event estimation (next_event.cpp, Eq. 3.6)
 //   pt        next-event estimation and BSDF hits combined by MIS (path_mis.cpp, Eq. 3.7)
+//
+// LiMIS's visitor, addMISContribution, adds your two halves of Eq. 3.7 (path_mis.cpp) in order.
 #include "03-path-tracing/pathtracer.h"
 
 namespace ps {
+
+void addMISContribution(const Scene& scene, const WalkVertex& v, Rng& rng, int maxDepth, Color& L) {
+    L += misEmission(scene, v);
+    L += misLightSample(scene, v, rng, maxDepth);
+}
+
+float pdfWalk(const Scene& scene, const WalkVertex& v, const DirectSample& d) {
+    if (d.delta || !v.sampler) return d.pdfBSDF;
+    return pdfWalk(scene, v, d.wi);
+}
 
 namespace {
 

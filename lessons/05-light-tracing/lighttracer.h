@@ -57,33 +57,22 @@ CameraConnection connectToCamera(const Scene& scene, const SurfacePoint& y, bool
 // u picks the direction, uLobe reflection or refraction. False for an invalid sample.
 bool sampleAdjointBSDF(const Material& m, const Vec3& n, const Vec3& wLight, const Vec2& u, float uLobe, BSDFSample& s);
 
-// One vertex of the light walk, as the walk shows it to its visitor.
-struct LightWalkVertex {
-    int bounces = 0;                        // 0: y0 on the light; k >= 1: the k-th surface the particle hits
-    const LightPathStart* start = nullptr;  // the path's start (light, y0, pdfA, first ray, power)
-    SurfacePoint sp;                        // bounces 0: start->y0; else the surface point hit
-    Vec3 wLight;                            // bounces >= 1: unit, back towards where the particle came from
-    Color beta;                             // the particle's power arriving at sp (Eq. 5.2, 5.7), divided by
-                                            // every survival probability so far; bounces 0: start->beta
-};
-
-// What to do at a vertex; return false to end the walk there. The walk calls it before it
-// samples the adjoint BSDF (it may draw numbers from the walk's rng).
-using LightWalkVisitor = std::function<bool(const LightWalkVertex&)>;
-
-// The probability that a particle goes on after a bounce, given the throughput since y0 (the
-// product of the scattering weights, each survivor divided by its q) and the bounces made.
-using SurvivalFunction = float (*)(const Color& throughput, int bounces);
+// What to do at a vertex y_k of the light walk (lesson 3's WalkVertex: sp, wo towards where the
+// particle came from, beta the particle's power arriving there; y_0 is the point on the light,
+// with beta = start.beta), given the path's start; return false to end the walk there. The walk
+// calls it before it samples the direction there (it may draw numbers from the walk's rng).
+using LightWalkVisitor = std::function<bool(const WalkVertex& v, const LightPathStart& start)>;
 
 // The particle's random walk (Eq. 5.1, 5.2, 5.6-5.8): startLightPath with rng.uniform(),
-// rng.uniform2(), rng.uniform2() (nothing if it is not valid), visit y0, then follow the particle
-// and visit every surface it hits (not a miss: a particle that leaves the scene is gone), at most
-// maxDepth bounces; scatter with sampleAdjointBSDF and Russian roulette as in lesson 3 on the
-// product of the scattering weights alone (the throughput since y0, without start->beta):
-// q = survival(throughput, bounces), by default lesson 3's survivalProbability. Lesson 7's light
-// subpath is this walk too; lesson 8's photons take it with a survival of their own.
-void lightWalk(const Scene& scene, Rng& rng, int maxDepth, const LightWalkVisitor& visit,
-               SurvivalFunction survival = survivalProbability);
+// rng.uniform2(), rng.uniform2() (nothing if it is not valid), visit y0, then lesson 3's walk
+// (randomWalk) from y0's ray with the particle's power start.beta, scattering with the adjoint
+// BSDF (sampleAdjointBSDF), visiting every surface the particle hits (not a miss: a particle that
+// leaves the scene is gone), at most opt.maxDepth bounces; Russian roulette as lesson 3's on the
+// product of the scattering weights alone (the throughput since y0, without start.beta): q =
+// opt.survival(throughput, bounces). The options' direction sampler and continuation rule work as
+// in lesson 3's walk. Lesson 7's light subpath is this walk too; lesson 8's photons take it with a
+// survival of their own.
+void lightWalk(const Scene& scene, Rng& rng, const WalkOptions& opt, const LightWalkVisitor& visit);
 
 // One light path (Eq. 5.1-5.4): the light walk, whose visitor connects y0 and every
 // non-specular vertex to the camera and adds each connection's contribution through

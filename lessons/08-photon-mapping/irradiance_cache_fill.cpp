@@ -37,7 +37,7 @@ IrradianceCache buildIrradianceCache(const Scene& scene, const PhotonMap& global
         runTasks(int(pixels.size()), levelSeed, iteration, nullptr, 0.0f, stats, [&](int item, Rng& rng, Task&) {
             const int pixel = pixels[size_t(item)];
             const Ray ray = scene.camera.generateRay(Vec2(float(pixel % width) + 0.5f, float(pixel / width) + 0.5f));
-            cameraWalk(scene, ray, rng, opt.maxDepth, [&](const WalkVertex& v) {
+            cameraWalk(scene, ray, rng, {opt.maxDepth}, [&](const WalkVertex& v) {
                 if (!v.hit) return false;
                 const Material& m = scene.materials[size_t(v.sp.material)];
                 if (m.isDelta()) return true;  // through mirrors and glass to the first other surface

@@ -136,32 +136,27 @@ float adrrsContinuations(const AdjointCache& cache, const Scene& scene, const Wa
 // ---------------------------------------------------------------------------------------------
 // Survival and splitting (Eq. 10.3, 10.4) and the walk that branches (Algorithm 10.1).
 
-// How a path goes on from a vertex: n continuations, each with throughput beta.
-struct Continuations {
-    int n = 0;
-    Color beta;
-};
-// Eq. 10.3, 10.4: n = floor(q) + 1 with probability q - floor(q), else floor(q), so E[n] = q; each
+// How a path goes on from a vertex: lesson 3's Continuations (n continuations, each with
+// throughput beta), drawn from the expected number q. Eq. 10.3, 10.4: n = floor(q) + 1 with probability q - floor(q), else floor(q), so E[n] = q; each
 // continuation carries beta / q. Draws one rng.uniform() (n = floor(q) + 1 if it is below
 // q - floor(q)) only when q is not a whole number. q > 0.
 Continuations continuations(const Color& beta, float q, Rng& rng);
 
-// The rule the walk asks at each vertex it may go on from: the expected number of continuations.
-using ContinuationRule = std::function<float(const WalkVertex& v)>;
+// The rule ADRRS asks at each vertex the walk may go on from: the expected number of continuations q.
+using ExpectedContinuations = std::function<float(const WalkVertex& v)>;
 
 // A camera ray's walk may start at most this many paths (1 + the extra continuations of every
 // split); once it has, q is cut to min(q, 1) (roulette still plays: unbiased, and bounded work).
 constexpr int kMaxPathsPerCameraRay = 32;
 
-// The walk with survival and splitting (Algorithm 10.1): lesson 3's walk (Eq. 3.3, 3.4), but at a
-// vertex x_k it may go on from (hit, visited with true, bounces < maxDepth) it asks q = rule(v)
-// (then q = min(q, 1) if kMaxPathsPerCameraRay paths have been started) and draws the
-// continuations (continuations(v.beta, q, rng)); each continuation samples the BSDF with
-// sampleBSDF(material, n, wo, rng.uniform2(), rng.uniform(), Transport::Radiance, s) (it ends if
-// that fails or its beta, continuation.beta * s.weight, is black) and is followed to its end
-// before the next continuation samples its BSDF: depth first, so the numbers come from `rng` in
-// one fixed order. Every vertex of the tree is visited (the escapes included), in that order.
-void splittingWalk(const Scene& scene, const Ray& ray, Rng& rng, int maxDepth, const ContinuationRule& rule,
+// The walk with survival and splitting (Algorithm 10.1): lesson 3's camera walk with a
+// continuation rule (Eq. 3.10) and no roulette of its own after each bounce (alwaysSurvive): at a
+// vertex x_k it may go on from (hit, visited with true, bounces < maxDepth) the rule asks
+// q = expected(v) (then q = min(q, 1) if kMaxPathsPerCameraRay paths have been started) and draws
+// the continuations (continuations(v.beta, q, rng)). The walk follows each continuation to its end
+// before the next one samples its BSDF: depth first, so the numbers come from `rng` in one fixed
+// order. Every vertex of the tree is visited (the escapes included), in that order.
+void splittingWalk(const Scene& scene, const Ray& ray, Rng& rng, int maxDepth, const ExpectedContinuations& expected,
                    const WalkVisitor& visit);
 
 // ---------------------------------------------------------------------------------------------

@@ -52,7 +52,7 @@ AdjointCache ADRRSPathTracer::prePass(const Scene& scene, int paths, int resolut
     runTasks(paths, seed, 0, nullptr, 1.0f, stats, [&](int i, Rng& rng, Task& task) {
         const Vec2 raster = jitteredRaster(i % pixels, width, rng);
         std::vector<PrePassVertex> path;
-        cameraWalk(scene, cameraRay(scene.camera, raster, rng), rng, maxDepth, [&](const WalkVertex& v) {
+        cameraWalk(scene, cameraRay(scene.camera, raster, rng), rng, {maxDepth}, [&](const WalkVertex& v) {
             PrePassVertex x;
             x.beta = v.beta;
             if (v.hit && !scene.materials[v.sp.material].isDelta()) x.entry = cache.entry(v.sp.p, v.sp.n, v.wo);
@@ -103,9 +103,9 @@ Color ADRRSPathTracer::Li(const Scene& scene, const Ray& ray, Rng& rng, PathCoun
         return true;
     };
     if (settings_.roulette == Roulette::Classic) {
-        cameraWalk(scene, ray, rng, maxDepth, visit);
+        cameraWalk(scene, ray, rng, {maxDepth}, visit);
     } else {
-        const ContinuationRule rule = [&](const WalkVertex& v) {
+        const ExpectedContinuations rule = [&](const WalkVertex& v) {
             const float q = adrrsContinuations(cache_, scene, v, I);
             ++counts.decisions;
             if (q < 1.0f) ++counts.roulette;

@@ -87,27 +87,24 @@ struct FilteredPhotonMapper : Integrator {
         bool onlySpecular = true;
         const float invN = 1.0f / float(emitted);
         State q = paths.step(paths.start(), VertexType::L);
-        lightWalk(
-            scene, rng, maxDepth,
-            [&](const LightWalkVertex& v) {
-                if (v.bounces == 0) return !prune || paths.live(q);
-                const Material& m = scene.materials[size_t(v.sp.material)];
-                q = paths.step(q, scatteringType(m));
-                if (!m.isDelta()) {
-                    if ((kind == MapKind::Global || (onlySpecular && v.bounces >= 2)) && paths.live(q)) {
-                        TypedPhoton t;
-                        t.photon.p = v.sp.p;
-                        t.photon.power = v.beta * invN;
-                        t.photon.setWLight(v.wLight);
-                        t.state = q;
-                        out.push_back(t);
-                    }
-                    onlySpecular = false;
-                    if (kind == MapKind::Caustic) return false;
+        lightWalk(scene, rng, {maxDepth, photonSurvival}, [&](const WalkVertex& v, const LightPathStart&) {
+            if (v.bounces == 0) return !prune || paths.live(q);
+            const Material& m = scene.materials[size_t(v.sp.material)];
+            q = paths.step(q, scatteringType(m));
+            if (!m.isDelta()) {
+                if ((kind == MapKind::Global || (onlySpecular && v.bounces >= 2)) && paths.live(q)) {
+                    TypedPhoton t;
+                    t.photon.p = v.sp.p;
+                    t.photon.power = v.beta * invN;
+                    t.photon.setWLight(v.wo);
+                    t.state = q;
+                    out.push_back(t);
                 }
-                return !prune || paths.live(q);
-            },
-            photonSurvival);
+                onlySpecular = false;
+                if (kind == MapKind::Caustic) return false;
+            }
+            return !prune || paths.live(q);
+        });
     }
 
     // pm's tracePhotonMap, into one map per state (photons in path order within each).
@@ -149,7 +146,7 @@ struct FilteredPhotonMapper : Integrator {
         Color L(0.0f);
         State b = paths.backStep(paths.backStart(), VertexType::E);
         const auto acceptsLight = [&](State s) { return paths.backAccepting(paths.backStep(s, VertexType::L)); };
-        cameraWalk(scene, ray, rng, opt.maxDepth, [&](const WalkVertex& v) {
+        cameraWalk(scene, ray, rng, {opt.maxDepth}, [&](const WalkVertex& v) {
             if (!v.hit) {
                 if (v.specular && acceptsLight(b)) L += v.beta * scene.backgroundRadiance();
                 return false;

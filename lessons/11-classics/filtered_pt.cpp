@@ -2,12 +2,12 @@
 // hits combined by MIS) restricted to the paths an expression matches (path_filter.h).
 //
 // The camera walk reads the backward automaton: E, then the type of every vertex it meets. At
-// vertex x_k (state b after E x_1 .. x_{k-1}) lesson 3's addMISContribution is called twice:
-//   - with maxDepth = k, it adds only the emission the walk found at x_k (and draws no number):
-//     the path whose light is x_k, kept if reading L next accepts (Eq. 11.5);
-//   - with a copy of the vertex that emits nothing (sp.light = -1), only the light sample: the
-//     path x_k then a new light vertex, kept if reading x_k's type and then L accepts.
-// A rejected light sample is still drawn (into a colour that is thrown away), so the walk meets
+// vertex x_k (state b after E x_1 .. x_{k-1}) lesson 3's two halves of pt's MIS are kept apart:
+//   - misEmission, the emission the walk found at x_k: the path whose light is x_k, kept if
+//     reading L next accepts (Eq. 11.5);
+//   - misLightSample, the light sample: the path x_k then a new light vertex, kept if reading
+//     x_k's type and then L accepts.
+// A rejected light sample is still drawn (and thrown away), so the walk meets
 // the same random numbers whatever the expression: images of complementary expressions with the
 // same seed add up to pt's image, and `L.*E` gives pt's image bit for bit (tests/framework/paths).
 // Where no path through the walk can match any more (Eq. 11.6) the walk ends: the pixel's other
@@ -48,9 +48,9 @@ struct FilteredPathTracer : PixelIntegrator {
         Color L(0.0f);
         ++walks;
         PathExpression::State b = paths.backStep(paths.backStart(), VertexType::E);
-        cameraWalk(scene, ray, rng, maxDepth, [&](const WalkVertex& v) {
+        cameraWalk(scene, ray, rng, {maxDepth}, [&](const WalkVertex& v) {
             // The path whose light is x_k: L, then x_{k-1} .. x_1 (read), then E.
-            if (paths.backAccepting(paths.backStep(b, VertexType::L))) addMISContribution(scene, v, rng, v.bounces, L);
+            if (paths.backAccepting(paths.backStep(b, VertexType::L))) L += misEmission(scene, v);
             if (!v.hit) return false;
             const PathExpression::State here = paths.backStep(b, surfaceType(scene, v.sp));
             const bool live = paths.backLive(here);
@@ -58,15 +58,10 @@ struct FilteredPathTracer : PixelIntegrator {
                 ++ended;
                 return false;
             }
-            // The light sample at x_k: a new light vertex, then x_k .. x_1, then E.
-            WalkVertex lightSample = v;
-            lightSample.sp.light = -1;  // its emission was the first call's
-            if (paths.backAccepting(paths.backStep(here, VertexType::L))) {
-                addMISContribution(scene, lightSample, rng, maxDepth, L);
-            } else {
-                Color rejected(0.0f);
-                addMISContribution(scene, lightSample, rng, maxDepth, rejected);
-            }
+            // The light sample at x_k: a new light vertex, then x_k .. x_1, then E. Drawn whether
+            // it matches or not, so that the walk meets the same numbers.
+            const Color sample = misLightSample(scene, v, rng, maxDepth);
+            if (paths.backAccepting(paths.backStep(here, VertexType::L))) L += sample;
             b = here;
             return true;
         });

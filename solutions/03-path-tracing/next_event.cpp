@@ -7,7 +7,7 @@ namespace ps {
 
 Color LiNextEvent(const Scene& scene, const Ray& cameraRay, Rng& rng, int maxDepth) {
     Color L(0.0f);
-    cameraWalk(scene, cameraRay, rng, maxDepth, [&](const WalkVertex& v) {
+    cameraWalk(scene, cameraRay, rng, {maxDepth}, [&](const WalkVertex& v) {
         //! TODO(03) What vertex x_k adds to L with next-event estimation (Eq. 3.6): the emission
         //!          the walk finds (surface or background) only where no light sample could
         //!          have found it (v.specular); then, if k < maxDepth and the material is not

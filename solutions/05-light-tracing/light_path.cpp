@@ -9,33 +9,33 @@ void traceLightPath(const Scene& scene, Rng& rng, int maxDepth, const SplatTarge
     // The camera point every connection of this path goes to: the pinhole camera.position()
     // (no number drawn), or a point on a thin lens (lesson 11).
     const Vec3 z = scene.camera.samplePoint(rng);
-    lightWalk(scene, rng, maxDepth, [&](const LightWalkVertex& v) {
+    lightWalk(scene, rng, {maxDepth}, [&](const WalkVertex& v, const LightPathStart& start) {
         //! TODO(05) What vertex v adds to the image (Eq. 5.3, 5.4): connect it to the camera
         //!          point z (connectToCamera(..., z)) and, if the connection is valid,
         //!          out.add(c.raster, value).
         //!          y0 (bounces 0): value = Le / pdfA * importance, Le towards the camera (a point
         //!          light: its intensity); no connection from the background. Later vertices:
         //!          value = beta * f* * importance with f*(wLight -> wCam) = evalBSDF(m, n, wCam,
-        //!          wLight) (Eq. 5.6); none from a delta material (Eq. 5.9). Return true.
+        //!          wLight), wLight = v.wo (Eq. 5.6); none from a delta material (Eq. 5.9). Return true.
         //!          Pitfall: a point light is not on a surface (connectToCamera's onSurface).
-        //! STUB (void)v; (void)out; (void)z;
+        //! STUB (void)v; (void)start; (void)out; (void)z;
         //! STUB return PS_TODO("lesson 05: traceLightPath", false);
         //! BEGIN
         if (v.bounces == 0) {
             // The point on the light seen directly (not the background: no point to connect).
-            const Light& light = scene.lights[v.start->light];
+            const Light& light = scene.lights[start.light];
             if (light.isInfinite()) return true;
             const CameraConnection c = connectToCamera(scene, v.sp, !light.isDelta(), z);
             if (c.valid) {
                 const Color Le = light.isDelta() ? light.Le : emittedRadiance(light, v.sp.n, c.wCam);
-                out.add(c.raster, Le * (c.importance / v.start->pdfA));
+                out.add(c.raster, Le * (c.importance / start.pdfA));
             }
             return true;
         }
         const Material& m = scene.materials[v.sp.material];
         if (m.isDelta()) return true;
         const CameraConnection c = connectToCamera(scene, v.sp, true, z);
-        if (c.valid) out.add(c.raster, v.beta * evalBSDF(m, v.sp.n, c.wCam, v.wLight) * c.importance);
+        if (c.valid) out.add(c.raster, v.beta * evalBSDF(m, v.sp.n, c.wCam, v.wo) * c.importance);
         return true;
         //! END
     });

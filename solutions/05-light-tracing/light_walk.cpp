@@ -1,60 +1,40 @@
-// Lesson 5 — the particle's random walk, shared by the light tracer (light_path.cpp) and by
-// lesson 7's light subpath. Interface: lessons/05-light-tracing/lighttracer.h. Equation numbers
-// refer to lessons/05-light-tracing/README.md.
+// Lesson 5 — the particle's random walk: lesson 3's walk, started on a light. Shared by the light
+// tracer (light_path.cpp) and by lesson 7's light subpath. Interface:
+// lessons/05-light-tracing/lighttracer.h. Equation numbers refer to lessons/05-light-tracing/README.md.
 #include "05-light-tracing/lighttracer.h"
 #include "todo.h"
 
 namespace ps {
 
-void lightWalk(const Scene& scene, Rng& rng, int maxDepth, const LightWalkVisitor& visit, SurvivalFunction survival) {
+void lightWalk(const Scene& scene, Rng& rng, const WalkOptions& opt, const LightWalkVisitor& visit) {
     //! TODO(05) The particle's walk (Eq. 5.1, 5.2, 5.6-5.8): start it with startLightPath
     //!          (rng.uniform(), rng.uniform2(), rng.uniform2()); nothing if not valid. Visit y0
-    //!          (bounces 0), then for bounces = 1 .. maxDepth: intersect (a miss ends the walk,
-    //!          unvisited), visit (false ends it), and unless bounces == maxDepth scatter with
-    //!          sampleAdjointBSDF(material, n, wLight, rng.uniform2(), rng.uniform(), s) (end if
-    //!          it fails or beta turns black) and play Russian roulette as in lesson 3 (Eq. 3.5),
-    //!          its number drawn only when q < 1. A LightWalkVertex's fields say what it holds.
-    //!          Pitfalls: q = survival(throughput, bounces) (the function passed in: lesson 3's
-    //!          survivalProbability unless the caller gives another) follows the product of the
-    //!          scattering weights alone (start at 1, not at start.beta, whose scale is the
-    //!          light's power); a survivor divides both beta and throughput by q. The tests
-    //!          replay the random numbers: draw them inside the calls as written (or left to
-    //!          right into variables).
-    //! STUB (void)scene; (void)rng; (void)maxDepth; (void)visit; (void)survival;
+    //!          (a WalkVertex with bounces 0, hit, sp = start.y0, beta = start.beta), then lesson
+    //!          3's randomWalk from a WalkStart along start.ray (its fields say what the particle's
+    //!          first hit y1 shows), scattering with sampleAdjointBSDF and the options given, with
+    //!          a visitor that hands each surface the particle hits, and the start, to `visit`.
+    //!          Pitfalls: bounces count the surfaces hit (y1 has 1), and a miss is no vertex of
+    //!          a light path; the roulette follows the throughput since y0, which starts at 1,
+    //!          not at start.beta (whose scale is the light's power).
+    //! STUB (void)scene; (void)rng; (void)opt; (void)visit;
     //! STUB (void)PS_TODO("lesson 05: lightWalk", 0);
     //! BEGIN
     const LightPathStart start = startLightPath(scene, rng.uniform(), rng.uniform2(), rng.uniform2());
     if (!start.valid) return;
-    LightWalkVertex y0;
-    y0.start = &start;
+    WalkVertex y0;
+    y0.hit = true;
     y0.sp = start.y0;
     y0.beta = start.beta;
-    if (!visit(y0)) return;
-    Color beta = start.beta, throughput(1.0f);
-    Ray ray = start.ray;
-    for (int bounces = 1; bounces <= maxDepth; ++bounces) {
-        LightWalkVertex v;
-        if (!scene.intersect(ray, v.sp)) break;
-        v.bounces = bounces;
-        v.start = &start;
-        v.wLight = -ray.d;
-        v.beta = beta;
-        if (!visit(v)) break;
-        if (bounces == maxDepth) break;
-        BSDFSample s;
-        if (!sampleAdjointBSDF(scene.materials[v.sp.material], v.sp.n, v.wLight, rng.uniform2(), rng.uniform(), s))
-            break;
-        beta *= s.weight;
-        throughput *= s.weight;
-        if (isBlack(beta)) break;
-        const float q = survival(throughput, bounces);
-        if (q < 1.0f) {
-            if (rng.uniform() >= q) break;
-            beta /= q;
-            throughput /= q;
-        }
-        ray = scene.spawnRay(v.sp, s.wi);
-    }
+    y0.specular = false;
+    if (!visit(y0, start)) return;
+    WalkStart first;
+    first.ray = start.ray;
+    first.beta = start.beta;
+    first.bounces = 1;
+    first.specular = false;
+    first.pPrev = start.y0.p;
+    randomWalk(scene, first, sampleAdjointBSDF, rng, opt,
+               [&](const WalkVertex& v) { return v.hit && visit(v, start); });
     //! END
 }
 

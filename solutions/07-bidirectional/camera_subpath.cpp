@@ -30,7 +30,7 @@ void cameraSubpath(const Scene& scene, Rng& rng, const Vec2& raster, int maxDept
     updateMisSum(path, 0, h);
 
     const Ray ray = camera.generateRay(raster, z0.p());
-    cameraWalk(scene, ray, rng, maxDepth, [&](const WalkVertex& w) {
+    cameraWalk(scene, ray, rng, {maxDepth}, [&](const WalkVertex& w) {
         if (!w.hit && scene.background < 0) return false;
         PathVertex v = w.hit ? surfaceVertex(scene, w.sp) : backgroundVertex(scene, -w.wo);
         v.beta = w.beta;

@@ -8,7 +8,7 @@ namespace ps {
 
 void lightSubpath(const Scene& scene, Rng& rng, int maxDepth, Heuristic h, Subpath& path) {
     //! TODO(07) Eq. 7.1, 7.3: clear path, then lesson 5's lightWalk with a visitor that stores
-    //!          every vertex it is shown, at most maxDepth + 1: y_0 from v.start (onLight,
+    //!          every vertex it is shown, at most maxDepth + 1: y_0 from the walk's start (onLight,
     //!          pointLight, infinite with sp.n towards the background, as lesson 6's
     //!          backgroundVertex), pdfFwd = pdfLightOrigin (0: end the walk), beta = 1 / pdfFwd;
     //!          each later vertex a surfaceVertex with the walk's beta and pdfFwd (pdfLightToward
@@ -21,9 +21,8 @@ void lightSubpath(const Scene& scene, Rng& rng, int maxDepth, Heuristic h, Subpa
     //! STUB (void)PS_TODO("lesson 07: lightSubpath", 0);
     //! BEGIN
     path.clear();
-    lightWalk(scene, rng, maxDepth, [&](const LightWalkVertex& w) {
+    lightWalk(scene, rng, {maxDepth}, [&](const WalkVertex& w, const LightPathStart& start) {
         if (w.bounces == 0) {
-            const LightPathStart& start = *w.start;
             const Light& light = scene.lights[size_t(start.light)];
             PathVertex y0;
             y0.sp = start.y0;

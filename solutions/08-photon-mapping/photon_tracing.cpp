@@ -20,10 +20,10 @@ float photonSurvival(const Color& throughput, int bounces) {
 }
 
 void tracePhoton(const Scene& scene, Rng& rng, int maxDepth, MapKind kind, int emitted, std::vector<Photon>& out) {
-    //! TODO(08) Eq. 8.1-8.3: lightWalk(scene, rng, maxDepth, visitor, photonSurvival). The visitor
+    //! TODO(08) Eq. 8.1-8.3: lightWalk(scene, rng, {maxDepth, photonSurvival}, visitor). The visitor
     //!          goes on at y0 (bounces 0). At a surface (bounces >= 1) with material m:
     //!          - m.isDelta(): a specular bounce, nothing stored; go on.
-    //!          - else a photon {p = sp.p, power = beta / emitted, setWLight(wLight)} goes to out
+    //!          - else a photon {p = sp.p, power = beta / emitted, setWLight(v.wo)} goes to out
     //!            for the global map always; for the caustic map only if every surface before this
     //!            one was specular and there was at least one (L S+ D). The caustic walk ends at
     //!            its first non-specular surface, the global walk goes on.
@@ -32,23 +32,20 @@ void tracePhoton(const Scene& scene, Rng& rng, int maxDepth, MapKind kind, int e
     //! BEGIN
     bool onlySpecular = true;  // every surface so far was specular
     const float invN = 1.0f / float(emitted);
-    lightWalk(
-        scene, rng, maxDepth,
-        [&](const LightWalkVertex& v) {
-            if (v.bounces == 0) return true;
-            const Material& m = scene.materials[size_t(v.sp.material)];
-            if (m.isDelta()) return true;
-            if (kind == MapKind::Global || (onlySpecular && v.bounces >= 2)) {
-                Photon ph;
-                ph.p = v.sp.p;
-                ph.power = v.beta * invN;
-                ph.setWLight(v.wLight);
-                out.push_back(ph);
-            }
-            onlySpecular = false;
-            return kind == MapKind::Global;
-        },
-        photonSurvival);
+    lightWalk(scene, rng, {maxDepth, photonSurvival}, [&](const WalkVertex& v, const LightPathStart&) {
+        if (v.bounces == 0) return true;
+        const Material& m = scene.materials[size_t(v.sp.material)];
+        if (m.isDelta()) return true;
+        if (kind == MapKind::Global || (onlySpecular && v.bounces >= 2)) {
+            Photon ph;
+            ph.p = v.sp.p;
+            ph.power = v.beta * invN;
+            ph.setWLight(v.wo);
+            out.push_back(ph);
+        }
+        onlySpecular = false;
+        return kind == MapKind::Global;
+    });
     //! END
 }
 

@@ -41,7 +41,7 @@ Color gatherRadiance(const Scene& scene, const SurfacePoint& sp, const Vec3& wi,
 }
 
 Color LiPhotonMap(const Scene& scene, const Ray& ray, Rng& rng, const PhotonMaps& maps, const PmOptions& opt) {
-    //! TODO(08) Eq. 8.11 on lesson 3's cameraWalk(scene, ray, rng, opt.maxDepth, visitor):
+    //! TODO(08) Eq. 8.11 on lesson 3's cameraWalk(scene, ray, rng, {opt.maxDepth}, visitor):
     //!          - a miss: the background (scene.backgroundRadiance()) if v.specular; end.
     //!          - an emitter (v.sp.light >= 0) seen with v.specular: add its emittedRadiance.
     //!          - a specular material: go on (the walk samples it).
@@ -61,7 +61,7 @@ Color LiPhotonMap(const Scene& scene, const Ray& ray, Rng& rng, const PhotonMaps
     //! STUB return PS_TODO("lesson 08: LiPhotonMap", Color(0.0f));
     //! BEGIN
     Color L(0.0f);
-    cameraWalk(scene, ray, rng, opt.maxDepth, [&](const WalkVertex& v) {
+    cameraWalk(scene, ray, rng, {opt.maxDepth}, [&](const WalkVertex& v) {
         if (!v.hit) {
             if (v.specular) L += v.beta * scene.backgroundRadiance();
             return false;

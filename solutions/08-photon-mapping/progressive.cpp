@@ -16,7 +16,7 @@ double ppmNextRadius2(double r2, int pass, double alpha) {
 }
 
 Color LiProgressive(const Scene& scene, const Ray& ray, Rng& rng, const PhotonMap& map, float r2, int maxDepth) {
-    //! TODO(08) Eq. 8.14 on lesson 3's cameraWalk(scene, ray, rng, maxDepth, visitor):
+    //! TODO(08) Eq. 8.14 on lesson 3's cameraWalk(scene, ray, rng, {maxDepth}, visitor):
     //!          - a miss: the background (scene.backgroundRadiance()) if v.specular; end.
     //!          - an emitter (v.sp.light >= 0) seen with v.specular: add its emittedRadiance.
     //!          - a specular material: go on.
@@ -30,7 +30,7 @@ Color LiProgressive(const Scene& scene, const Ray& ray, Rng& rng, const PhotonMa
     opt.k = 0;
     opt.maxRadius = std::sqrt(r2);
     Color L(0.0f);
-    cameraWalk(scene, ray, rng, maxDepth, [&](const WalkVertex& v) {
+    cameraWalk(scene, ray, rng, {maxDepth}, [&](const WalkVertex& v) {
         if (!v.hit) {
             if (v.specular) L += v.beta * scene.backgroundRadiance();
             return false;

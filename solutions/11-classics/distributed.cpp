@@ -1,66 +1,37 @@
 // Lesson 11 — distributed ray tracing: lens, area lights and glossy lobes sampled, mirrors and
-// glass followed, no diffuse interreflection. Interface: lessons/11-classics/distributed.h.
-// Equation numbers refer to lessons/11-classics/README.md.
+// glass followed, no diffuse interreflection: lesson 3's path tracer with another visitor.
+// Interface: lessons/11-classics/distributed.h. Equation numbers refer to lessons/11-classics/README.md.
 #include "11-classics/distributed.h"
 #include "todo.h"
 
 namespace ps {
 
 Color LiDistributed(const Scene& scene, const Ray& cameraRay, Rng& rng, int maxDepth) {
-    //! TODO(11) Eq. 11.19: follow the ray for bounces = 0, 1, ..., with the throughput beta (1 at
-    //!          first). At each step, in this order:
-    //!          1. the emission the ray finds (the hit surface's light, or scene.background where it
-    //!             leaves): beta Le w, w = 1 after the camera or a delta bounce, else the power
-    //!             heuristic of the BSDF sample's pdf against pdfLightDirection from the previous
-    //!             point (as lesson 3's LiMIS). Stop at a miss or at bounces == maxDepth.
-    //!          2. at a non-delta surface, a light sample (sampleDirectLight(scene, sp, wo,
-    //!             rng.uniform(), rng.uniform2()), lesson 2): beta d.value w, with w = 1 at a
-    //!             diffuse surface (no BSDF sample competes there) and the power heuristic of
-    //!             d.pdfLight against d.pdfBSDF at a glossy one.
-    //!          3. a diffuse surface ends the path (no diffuse interreflection).
-    //!          4. glossy, mirror, glass: sampleBSDF(m, n, wo, rng.uniform2(), rng.uniform(),
-    //!             Transport::Radiance, b) (stop if it fails), beta *= b.weight, and go on from a
-    //!             ray spawned along b.wi.
-    //!          Pitfalls: b.weight is f |cos| / pdf: the lobe's pdf alone is not the glossy
-    //!          reflection; a light sample MIS-weighted at a diffuse point loses light.
+    //! TODO(11) Eq. 11.19 as a visitor of lesson 3's camera walk, without Russian roulette
+    //!          (alwaysSurvive: the walk ends only where the visitor or maxDepth says). At each
+    //!          vertex, in this order: the emission the walk found, weighted as in lesson 3's
+    //!          pt (misEmission); then at a glossy, mirror or glass vertex lesson 3's
+    //!          MIS-weighted light sample (misLightSample) and the walk goes on; at a diffuse one
+    //!          a light sample (lesson 2's sampleDirectLight(scene, sp, wo, rng.uniform(),
+    //!          rng.uniform2())) with weight 1, if the path may still have a bounce, and the walk
+    //!          ends there.
+    //!          Pitfalls: at a diffuse point no BSDF sample competes with the light sample (an MIS
+    //!          weight there loses light); a miss ends the walk.
     //! STUB (void)scene; (void)cameraRay; (void)rng; (void)maxDepth;
     //! STUB return PS_TODO("lesson 11: LiDistributed", Color(0.0f));
     //! BEGIN
-    Color L(0.0f), beta(1.0f);
-    Ray ray = cameraRay;
-    bool delta = true;  // the camera ray, or a delta bounce: the emission found counts in full
-    float pdfPrev = 0.0f;
-    Vec3 pPrev;
-    for (int bounces = 0;; ++bounces) {
-        SurfacePoint sp;
-        const bool hit = scene.intersect(ray, sp);
-        const int light = hit ? sp.light : scene.background;
-        if (light >= 0) {
-            const Color Le =
-                hit ? emittedRadiance(scene.lights[size_t(light)], sp.n, -ray.d) : scene.backgroundRadiance();
-            const float w = delta ? 1.0f
-                                  : misWeight(Heuristic::Power, 1.0f, pdfPrev, 1.0f,
-                                              pdfLightDirection(scene, light, pPrev, sp.p, sp.n));
-            L += beta * Le * w;
+    Color L(0.0f);
+    cameraWalk(scene, cameraRay, rng, {maxDepth, alwaysSurvive}, [&](const WalkVertex& v) {
+        L += misEmission(scene, v);
+        if (!v.hit) return false;
+        if (scene.materials[size_t(v.sp.material)].kind != BSDFKind::Diffuse) {
+            L += misLightSample(scene, v, rng, maxDepth);
+            return true;
         }
-        if (!hit || bounces == maxDepth) break;
-        const Material& m = scene.materials[size_t(sp.material)];
-        const Vec3 wo = -ray.d;
-        if (!m.isDelta()) {
-            const DirectSample d = sampleDirectLight(scene, sp, wo, rng.uniform(), rng.uniform2());
-            const float w =
-                m.kind == BSDFKind::Diffuse ? 1.0f : misWeight(Heuristic::Power, 1.0f, d.pdfLight, 1.0f, d.pdfBSDF);
-            L += beta * d.value * w;
-        }
-        if (m.kind == BSDFKind::Diffuse) break;
-        BSDFSample b;
-        if (!sampleBSDF(m, sp.n, wo, rng.uniform2(), rng.uniform(), Transport::Radiance, b)) break;
-        beta *= b.weight;
-        delta = b.delta;
-        pdfPrev = b.pdf;
-        pPrev = sp.p;
-        ray = scene.spawnRay(sp, b.wi);
-    }
+        if (v.bounces < maxDepth)
+            L += v.beta * sampleDirectLight(scene, v.sp, v.wo, rng.uniform(), rng.uniform2()).value;
+        return false;  // a diffuse point: no interreflection
+    });
     return L;
     //! END
 }

@@ -14,26 +14,17 @@ namespace {
 std::string text(std::ostream& o) { return static_cast<std::ostringstream&>(o).str(); }
 
 struct Seen {
-    ps::LightWalkVertex v;
-    bool hasStart = false;
-    ps::LightPathStart start;  // a copy of *v.start (the walk's own dies with it)
+    ps::WalkVertex v;
+    ps::LightPathStart start;  // a copy of the start the walk handed the visitor
 };
 
 std::vector<Seen> recordWalk(const ps::Scene& scene, ps::Rng& rng, int maxDepth, int stopAt = -1,
                              ps::SurvivalFunction survival = ps::survivalProbability) {
     std::vector<Seen> seen;
-    ps::lightWalk(
-        scene, rng, maxDepth,
-        [&](const ps::LightWalkVertex& v) {
-            Seen s;
-            s.v = v;
-            s.hasStart = v.start != nullptr;
-            if (v.start) s.start = *v.start;
-            s.v.start = nullptr;
-            seen.push_back(s);
-            return v.bounces != stopAt && seen.size() < 10000;
-        },
-        survival);
+    ps::lightWalk(scene, rng, {maxDepth, survival}, [&](const ps::WalkVertex& v, const ps::LightPathStart& start) {
+        seen.push_back({v, start});
+        return v.bounces != stopAt && seen.size() < 10000;
+    });
     return seen;
 }
 
@@ -80,15 +71,14 @@ std::string replay(const ps::Scene& scene, ps::Rng rng, int maxDepth, const std:
     if (seen.empty())
         return "expected y0 (startLightPath with the walk's first numbers, uniform, uniform2, uniform2) first, the visitor was never called";
     const Seen& y0 = seen[0];
-    if (y0.v.bounces != 0 || !y0.hasStart || y0.start.light != start.light || !closePoint(y0.v.sp.p, start.y0.p) ||
+    if (y0.v.bounces != 0 || y0.start.light != start.light || !closePoint(y0.v.sp.p, start.y0.p) ||
         !closeColor(y0.v.beta, start.beta))
         return text(
             why
             << "expected the first vertex to be y0 = startLightPath(rng.uniform(), rng.uniform2(), rng.uniform2()).y0 = "
-            << str(start.y0.p) << " on light " << start.light << " (bounces 0, start set, beta = start.beta "
-            << str(start.beta) << "), got bounces " << y0.v.bounces << ", point " << str(y0.v.sp.p) << ", light "
-            << (y0.hasStart ? std::to_string(y0.start.light) : std::string("? (start not set)")) << ", beta "
-            << str(y0.v.beta));
+            << str(start.y0.p) << " on light " << start.light << " (bounces 0, beta = start.beta " << str(start.beta)
+            << "), got bounces " << y0.v.bounces << ", point " << str(y0.v.sp.p) << ", light " << y0.start.light
+            << ", beta " << str(y0.v.beta));
     Color beta = start.beta, throughput(1.0f);
     ps::Ray ray = start.ray;
     for (int k = 1;; ++k) {
@@ -104,13 +94,14 @@ std::string replay(const ps::Scene& scene, ps::Rng rng, int maxDepth, const std:
         if (seen.size() <= size_t(k))
             return text(why << "the visitor was shown " << seen.size() << " vertices (bounces " << bounceList(seen)
                             << "), expected the particle's hit with " << k << " bounces too (at " << str(sp.p) << ")");
-        const ps::LightWalkVertex& v = seen[size_t(k)].v;
+        const ps::WalkVertex& v = seen[size_t(k)].v;
         why << "vertex " << k << ": ";
         if (v.bounces != k) return text(why << "expected bounces = " << k << ", got " << v.bounces);
         if (!closePoint(v.sp.p, sp.p))
             return text(why << "expected the hit point " << str(sp.p) << ", got " << str(v.sp.p));
-        if (glm::length(v.wLight + ray.d) > 1e-6f)
-            return text(why << "expected wLight = -ray.d = " << str(-ray.d) << ", got " << str(v.wLight));
+        if (glm::length(v.wo + ray.d) > 1e-6f)
+            return text(why << "expected wo = -ray.d = " << str(-ray.d)
+                            << " (towards where the particle came from), got " << str(v.wo));
         if (!closeColor(v.beta, beta))
             return text(why << "expected the particle's power beta = " << str(beta)
                             << " (start.beta times the adjoint weights, "
@@ -173,7 +164,7 @@ TEST_CASE("light walk: y0 first, then one vertex per bounce up to maxdepth, and 
             const Vec2 uPos = copyInOrder.uniform2();
             const Vec2 uDir = copyInOrder.uniform2();
             const ps::LightPathStart startInOrder = ps::startLightPath(scene, uLight, uPos, uDir);
-            const bool y0Ok = !seen.empty() && seen[0].hasStart &&
+            const bool y0Ok = !seen.empty() &&
                               (closePoint(seen[0].v.sp.p, start.y0.p) || closePoint(seen[0].v.sp.p, startInOrder.y0.p));
             bool ok = seen.size() == size_t(D) + 1 && y0Ok;
             for (size_t k = 0; ok && k < seen.size(); ++k) ok = seen[k].v.bounces == int(k);
@@ -261,5 +252,62 @@ TEST_CASE(
                       furnace.name << ", lightWalk(..., survival) with survival = 0.7 at every bounce, light path " << i
                                    << ": " << wrong << " (q must come from the survival function passed in)");
         if (!wrong.empty()) break;
+    }
+}
+
+namespace {
+// A direction sampler of the test's own: cosine-weighted about the normal on wo's side, with the
+// adjoint weight of a Lambertian surface (its albedo). Counts its calls.
+struct CountingSampler : ps::DirectionSampler {
+    mutable int calls = 0;
+    bool sample(const ps::Scene& scene, const ps::WalkVertex& v, ps::Rng& rng, ps::BSDFSample& s) const override {
+        ++calls;
+        const Vec3 n = glm::dot(v.sp.n, v.wo) < 0.0f ? -v.sp.n : v.sp.n;
+        s.wi = ps::Frame(n).toWorld(ps::sampleCosineHemisphere(rng.uniform2()));
+        s.pdf = pdf(scene, v, s.wi);
+        s.delta = false;
+        s.weight = scene.materials[size_t(v.sp.material)].albedo;
+        return s.pdf > 0.0f;
+    }
+    float pdf(const ps::Scene&, const ps::WalkVertex& v, const Vec3& wi) const override {
+        const float c = glm::dot(wi, v.sp.n) * (glm::dot(v.wo, v.sp.n) < 0.0f ? -1.0f : 1.0f);
+        return c > 0.0f ? c / ps::kPi : 0.0f;
+    }
+};
+}  // namespace
+
+TEST_CASE("light walk: the walk's options reach lesson 3's walk: direction sampler and continuation rule [1 pt]") {
+    // The closed cube furnace (every particle hits a wall), maxdepth 3: the options' sampler must
+    // pick every direction after y1, y2 (y0's is the emission's), and a rule of two continuations
+    // with beta / 2 at every surface must branch the particle's walk depth first.
+    const ps::Scene scene = ps::parseScene(readText(sourcePath("scenes/furnace.scene")), "furnace (test_walk.cpp)");
+    CountingSampler sampler;
+    ps::WalkOptions opt(3, ps::alwaysSurvive);
+    opt.sampler = &sampler;
+    int rules = 0;
+    opt.continuation = [&](const ps::WalkVertex& v, ps::Rng&) {
+        ++rules;
+        return ps::Continuations{2, v.beta * 0.5f};
+    };
+    for (uint32_t i = 0; i < 8; ++i) {
+        sampler.calls = rules = 0;
+        ps::Rng rng = ps::taskRng(ps::testseed::seed(595), 0, i);
+        std::string order;
+        ps::lightWalk(scene, rng, opt, [&](const ps::WalkVertex& v, const ps::LightPathStart&) {
+            order += std::to_string(v.bounces) + " ";
+            return true;
+        });
+        const std::string want = "0 1 2 3 3 2 3 3 ";
+        CHECK_MESSAGE(order == want,
+                      "lightWalk with a continuation rule of 2 at every surface, maxdepth 3: expected the "
+                      "bounces "
+                          << want << "(depth first: the rule and the options go to lesson 3's walk), got " << order);
+        CHECK_MESSAGE(rules == 3, "lightWalk: the options' continuation rule must be asked at y1 and the two y2s, got "
+                                      << rules << " times");
+        CHECK_MESSAGE(sampler.calls == 6,
+                      "lightWalk: the options' direction sampler must pick the 6 directions that "
+                      "leave y1 and the y2s, it was asked "
+                          << sampler.calls << " times");
+        if (order != want) break;
     }
 }
