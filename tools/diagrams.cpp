@@ -941,7 +941,8 @@ Svg guidingField() {
     s.text({q.x + 0.55 * qs, q.y + 0.2 * qs + 48}, "lit wall", "middle", 18, kLight);
     s.text({q.x, q.y + qs + 58}, "a quadrant is cut while it holds more than", "start", 18);
     s.text({q.x, q.y + qs + 82}, "ρ = 1 % of the cell's energy (12.9)", "start", 18);
-    s.text({40, 600}, "p(ω) = p_{square}(s) / 4π (12.5); p_{square} is the product, over the levels down to the leaf,", "start", 18);
+    s.text({40, 600}, "p(ω) = p_{square}(s) / 4π (12.5); p_{square} is the product, over the levels down to the leaf,",
+           "start", 18);
     s.text({40, 626}, "of 4 × the quadrant's share of its node's energy (12.6)", "start", 18);
     return s;
 }

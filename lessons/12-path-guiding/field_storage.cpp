@@ -143,7 +143,8 @@ void GuideField::endPass(int pass) {
             s.learning = s.sampling.refined(settings_.rho, settings_.maxDepth);
             s.learning.clear();
             s.learning.nodes.shrink_to_fit();
-            s.irradiance = s.learnt > 0 ? float(irradianceOf(s.sampling, 0, 0.0, 0.0, 1.0, kSideAxis[k]) / s.learnt) : 0.0f;
+            s.irradiance =
+                s.learnt > 0 ? float(irradianceOf(s.sampling, 0, 0.0, 0.0, 1.0, kSideAxis[k]) / s.learnt) : 0.0f;
             s.samples = 0;
             s.sum = s.sumSq = 0.0;
         }

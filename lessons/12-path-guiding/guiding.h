@@ -229,8 +229,8 @@ float guidedPdf(const Material& m, const Vec3& n, const Vec3& wo, const Directio
 // alpha the guide (guide.sample(rng.uniform2())), else the BSDF (sampleBSDF as above, which may
 // fail) —; then s.pdf = guidedPdf(wi), s.weight = f(wo, wi) |cos theta_i| / s.pdf, s.delta false.
 // False where no direction came out or f is black there (a guide direction below the surface).
-bool sampleGuided(const Material& m, const Vec3& n, const Vec3& wo, const DirectionalTree& guide, float alpha,
-                  Rng& rng, BSDFSample& s);
+bool sampleGuided(const Material& m, const Vec3& n, const Vec3& wo, const DirectionalTree& guide, float alpha, Rng& rng,
+                  BSDFSample& s);
 
 // ---------------------------------------------------------------------------------------------
 // Roulette and splitting from an adjoint (Eq. 12.15 with lesson 10's window, Eq. 10.2, 10.5-10.7).

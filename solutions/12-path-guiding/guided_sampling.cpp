@@ -20,8 +20,8 @@ float guidedPdf(const Material& m, const Vec3& n, const Vec3& wo, const Directio
     //! END
 }
 
-bool sampleGuided(const Material& m, const Vec3& n, const Vec3& wo, const DirectionalTree& guide, float alpha,
-                  Rng& rng, BSDFSample& s) {
+bool sampleGuided(const Material& m, const Vec3& n, const Vec3& wo, const DirectionalTree& guide, float alpha, Rng& rng,
+                  BSDFSample& s) {
     //! TODO(12) Eq. 12.3, 12.4: a delta material is sampled by sampleBSDF alone (its numbers as
     //!          lesson 3 draws them: rng.uniform2(), then rng.uniform()). Otherwise one
     //!          rng.uniform() picks the guide (below alpha: guide.sample(rng.uniform2())) or the

@@ -34,8 +34,8 @@ namespace {
 // Appends to `out` the refined copy of `node` of `in` (or, for from == 0 with a leaf quadrant, of
 // a leaf whose energy is spread evenly) as out's node `at`, at depth `depth` (its quadrants are
 // at depth + 1).
-void refineNode(const DirectionalTree& in, uint32_t node, bool fromLeaf, const float leafEnergy[4],
-                                 float threshold, int maxDepth, int depth, DirectionalTree& out, uint32_t at) {
+void refineNode(const DirectionalTree& in, uint32_t node, bool fromLeaf, const float leafEnergy[4], float threshold,
+                int maxDepth, int depth, DirectionalTree& out, uint32_t at) {
     for (int i = 0; i < 4; ++i) {
         const float e = fromLeaf ? leafEnergy[i] : in.nodes[node].energy[i];
         out.nodes[at].energy[i] = e;

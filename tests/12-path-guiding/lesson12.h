@@ -75,8 +75,10 @@ inline double totalOf(const std::vector<Leaf>& leaves) {
 inline double energyIn(const std::vector<Leaf>& leaves, const Square& sq) {
     double e = 0.0;
     for (const Leaf& l : leaves) {
-        const double ox = std::max(0.0, std::min(sq.x + sq.size, l.square.x + l.square.size) - std::max(sq.x, l.square.x));
-        const double oy = std::max(0.0, std::min(sq.y + sq.size, l.square.y + l.square.size) - std::max(sq.y, l.square.y));
+        const double ox =
+            std::max(0.0, std::min(sq.x + sq.size, l.square.x + l.square.size) - std::max(sq.x, l.square.x));
+        const double oy =
+            std::max(0.0, std::min(sq.y + sq.size, l.square.y + l.square.size) - std::max(sq.y, l.square.y));
         e += l.energy * ox * oy / (l.square.size * l.square.size);
     }
     return e;
@@ -103,12 +105,15 @@ inline ps::DirectionalTree handTree() {
     ps::DirectionalTree t;
     t.nodes.resize(5);
     // node 3 (depth 3, under node 1's quadrant 2): quadrant 1 cut into node 4
-    t.nodes[4].energy[0] = 0.5f, t.nodes[4].energy[1] = 3.0f, t.nodes[4].energy[2] = 0.25f, t.nodes[4].energy[3] = 0.25f;
-    t.nodes[3].energy[0] = 0.75f, t.nodes[3].energy[1] = 4.0f, t.nodes[3].energy[2] = 0.125f, t.nodes[3].energy[3] = 1.125f;
+    t.nodes[4].energy[0] = 0.5f, t.nodes[4].energy[1] = 3.0f, t.nodes[4].energy[2] = 0.25f,
+    t.nodes[4].energy[3] = 0.25f;
+    t.nodes[3].energy[0] = 0.75f, t.nodes[3].energy[1] = 4.0f, t.nodes[3].energy[2] = 0.125f,
+    t.nodes[3].energy[3] = 1.125f;
     t.nodes[3].child[1] = 4;
     t.nodes[1].energy[0] = 2.0f, t.nodes[1].energy[1] = 1.5f, t.nodes[1].energy[2] = 6.0f, t.nodes[1].energy[3] = 0.5f;
     t.nodes[1].child[2] = 3;
-    t.nodes[2].energy[0] = 0.25f, t.nodes[2].energy[1] = 1.0f, t.nodes[2].energy[2] = 0.0f, t.nodes[2].energy[3] = 2.75f;
+    t.nodes[2].energy[0] = 0.25f, t.nodes[2].energy[1] = 1.0f, t.nodes[2].energy[2] = 0.0f,
+    t.nodes[2].energy[3] = 2.75f;
     t.nodes[0].energy[0] = 10.0f, t.nodes[0].energy[1] = 0.0f, t.nodes[0].energy[2] = 1.0f, t.nodes[0].energy[3] = 4.0f;
     t.nodes[0].child[0] = 1;
     t.nodes[0].child[3] = 2;

@@ -10,26 +10,28 @@ namespace {
 double mean(const Color& c) { return (double(c.r) + c.g + c.b) / 3.0; }
 }  // namespace
 
-TEST_CASE("window: q from a throughput, an adjoint and the measurement an ideal path brings (Eq. 12.15, 10.5-10.7) [1 pt]") {
+TEST_CASE(
+    "window: q from a throughput, an adjoint and the measurement an ideal path brings (Eq. 12.15, 10.5-10.7) [1 pt]") {
     struct Case {
         Color beta, adjoint;
         float I;
         const char* what;
     };
-    for (const Case& c : {Case{Color(0.02f), Color(1.0f), 1.0f, "far below the window: roulette"},
-                          Case{Color(0.5f), Color(1.0f), 1.0f, "inside the window"},
-                          Case{Color(4.0f), Color(1.0f), 1.0f, "above: splitting"},
-                          Case{Color(4.0f, 0.1f, 0.1f), Color(2.0f, 0.2f, 0.2f), 3.0f,
-                               "a coloured adjoint weights the red channel"},
-                          Case{Color(4.0f, 0.1f, 0.1f), Color(0.2f, 2.0f, 2.0f), 3.0f, "... or the others"},
-                          Case{Color(0.3f, 0.6f, 0.9f), Color(0.0f), 1.0f, "a black adjoint: q_min"},
-                          Case{Color(0.3f), Color(1.0f), 0.0f, "I = 0 under a path that expects light: q_max"},
-                          Case{Color(1e4f), Color(1.0f), 1.0f, "far above: q_max"}}) {
+    for (const Case& c :
+         {Case{Color(0.02f), Color(1.0f), 1.0f, "far below the window: roulette"},
+          Case{Color(0.5f), Color(1.0f), 1.0f, "inside the window"},
+          Case{Color(4.0f), Color(1.0f), 1.0f, "above: splitting"},
+          Case{Color(4.0f, 0.1f, 0.1f), Color(2.0f, 0.2f, 0.2f), 3.0f, "a coloured adjoint weights the red channel"},
+          Case{Color(4.0f, 0.1f, 0.1f), Color(0.2f, 2.0f, 2.0f), 3.0f, "... or the others"},
+          Case{Color(0.3f, 0.6f, 0.9f), Color(0.0f), 1.0f, "a black adjoint: q_min"},
+          Case{Color(0.3f), Color(1.0f), 0.0f, "I = 0 under a path that expects light: q_max"},
+          Case{Color(1e4f), Color(1.0f), 1.0f, "far above: q_max"}}) {
         const double sum = double(c.adjoint.r) + c.adjoint.g + c.adjoint.b;
-        const double nu = sum > 0.0 ? (double(c.beta.r) * c.adjoint.r + double(c.beta.g) * c.adjoint.g +
-                                       double(c.beta.b) * c.adjoint.b) /
-                                          sum
-                                    : mean(c.beta);
+        const double nu =
+            sum > 0.0
+                ? (double(c.beta.r) * c.adjoint.r + double(c.beta.g) * c.adjoint.g + double(c.beta.b) * c.adjoint.b) /
+                      sum
+                : mean(c.beta);
         const double want = windowQ(nu, c.I, sum / 3.0);
         const double got = ps::windowContinuations(c.beta, c.adjoint, c.I);
         CHECK_MESSAGE(std::abs(got - want) <= 1e-5 * want,
@@ -82,9 +84,10 @@ TEST_CASE("ADRRS on the field: the adjoint of a cell and a camera path's decisio
     const ps::WalkVertex x0 = handVertex(Vec3(0.5f, 0.0f, 0.5f), up, 0, Vec3(0.3f, 1.0f, 0.1f), Color(1.0f));
     const double I = mean(albedo) * E[2] / 3.14159265;
     const float gotI = ps::fieldPixelEstimate(field, scene, x0);
-    CHECK_MESSAGE(std::abs(gotI - I) <= 1e-5 * I, "fieldPixelEstimate at a floor point of a reliable cell: expected the "
-                                                  "mean of its adjoint, "
-                                                      << num(I) << ", got " << num(gotI));
+    CHECK_MESSAGE(std::abs(gotI - I) <= 1e-5 * I,
+                  "fieldPixelEstimate at a floor point of a reliable cell: expected the "
+                  "mean of its adjoint, "
+                      << num(I) << ", got " << num(gotI));
     ps::WalkVertex miss;
     ps::WalkVertex unreliable = handVertex(Vec3(1.5f, 0.0f, 0.5f), up, 0, Vec3(0, 1, 0), Color(1.0f));
     ps::WalkVertex mirror = x0;
@@ -123,18 +126,20 @@ TEST_CASE("ADRRS on the field: the adjoint of a cell and a camera path's decisio
     ps::WalkVertex v3 = handVertex(Vec3(1.75f, 1.0f, 0.5f), Vec3(0, -1, 0), 0, Vec3(0, -1, 0), Color(0.5f));
     v3.pPrev = Vec3(0.2f, 0.0f, 0.5f);
     ps::WalkVertex v4 = handVertex(Vec3(0.0f, 0.5f, 0.5f), Vec3(1, 0, 0), 0, Vec3(1, 0.2f, 0), Color(0.5f));
-    for (const NoCase& c : {NoCase{v1, -1.0f, "no pixel estimate (I~ = -1)"}, NoCase{v2, float(I), "a mirror"},
-                            NoCase{v3, float(I), "a cell that is not reliable (the previous vertex's is)"},
-                            NoCase{v4, float(I), "a side (+x) that is not reliable"},
-                            NoCase{miss, float(I), "a miss"}}) {
+    for (const NoCase& c :
+         {NoCase{v1, -1.0f, "no pixel estimate (I~ = -1)"}, NoCase{v2, float(I), "a mirror"},
+          NoCase{v3, float(I), "a cell that is not reliable (the previous vertex's is)"},
+          NoCase{v4, float(I), "a side (+x) that is not reliable"}, NoCase{miss, float(I), "a miss"}}) {
         const ps::Decision d = ps::fieldDecision(field, scene, c.v, c.I);
-        CHECK_MESSAGE(!d.decided, "fieldDecision at " << c.what << ": expected no decision (the walk's own roulette), "
-                                                     "got q = "
-                                                  << num(d.q));
+        CHECK_MESSAGE(!d.decided, "fieldDecision at " << c.what
+                                                      << ": expected no decision (the walk's own roulette), "
+                                                         "got q = "
+                                                      << num(d.q));
     }
 }
 
-TEST_CASE("particles: the importons of a camera path and a particle's decision on their importance (Eq. 12.16, 12.17) [2 pts]") {
+TEST_CASE(
+    "particles: the importons of a camera path and a particle's decision on their importance (Eq. 12.16, 12.17) [2 pts]") {
     std::vector<ps::ImportanceVertex> path(4);
     path[0] = {true, Vec3(0.1f, 0.2f, 0.3f), Vec3(0, 1, 0), glm::normalize(Vec3(0.2f, 1.0f, 0.0f)), Color(1.0f)};
     path[1] = {false, Vec3(0.5f), Vec3(1, 0, 0), Vec3(1, 0, 0), Color(0.9f)};  // a mirror
@@ -144,9 +149,10 @@ TEST_CASE("particles: the importons of a camera path and a particle's decision o
                Color(0.05f, 0.1f, 0.0f)};
     std::vector<ps::Photon> out(1);
     ps::appendImportons(path, 256, 1024, out);
-    REQUIRE_MESSAGE(out.size() == 4, "appendImportons of a camera path with 3 stored vertices of 4, appended to a list of "
-                                     "1: expected 4 photons, got "
-                                         << out.size());
+    REQUIRE_MESSAGE(out.size() == 4,
+                    "appendImportons of a camera path with 3 stored vertices of 4, appended to a list of "
+                    "1: expected 4 photons, got "
+                        << out.size());
     const size_t stored[3] = {0, 2, 3};
     for (size_t k = 0; k < 3; ++k) {
         const ps::Photon& ph = out[1 + k];
@@ -174,7 +180,7 @@ TEST_CASE("particles: the importons of a camera path and a particle's decision o
     const Color albedo(0.5f, 0.25f, 1.0f);
     const float T = 40.0f;
     for (const auto& c : {std::make_pair(Vec3(0.5f, 0.0f, 0.25f), Color(0.2f, 0.1f, 0.3f)),
-                                           std::make_pair(Vec3(1.5f, 0.0f, 0.25f), Color(3.0f))})
+                          std::make_pair(Vec3(1.5f, 0.0f, 0.25f), Color(3.0f))})
         for (const Color& beta : {Color(1.0f), Color(30.0f), Color(500.0f, 10.0f, 1.0f)}) {
             ps::WalkVertex y = handVertex(c.first, Vec3(0, 1, 0), 0, Vec3(0.3f, 1.0f, -0.2f), beta);
             y.pPrev = Vec3(1.0f, 1.0f, 0.9f);

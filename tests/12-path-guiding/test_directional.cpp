@@ -8,7 +8,8 @@
 
 using namespace lesson12;
 
-TEST_CASE("directional distribution: the density of every leaf, per unit solid angle, integrates to 1 (Eq. 12.5, 12.6) [2 pts]") {
+TEST_CASE(
+    "directional distribution: the density of every leaf, per unit solid angle, integrates to 1 (Eq. 12.5, 12.6) [2 pts]") {
     const ps::DirectionalTree t = handTree();
     const std::vector<Leaf> leaves = leavesOf(t);
     const double total = totalOf(leaves);
@@ -37,9 +38,10 @@ TEST_CASE("directional distribution: the density of every leaf, per unit solid a
     for (int i = 0; i < N; ++i)
         for (int j = 0; j < N; ++j) integral += t.pdf(directionOf((i + 0.5) / N, (j + 0.5) / N));
     integral *= 4.0 * kPiD / (double(N) * N);
-    CHECK_MESSAGE(std::abs(integral - 1.0) < 1e-4, "DirectionalTree::pdf of the hand-made tree: the integral over the "
-                                                   "sphere (per steradian, 1024^2 equal cells) expected 1, got "
-                                                       << num(integral));
+    CHECK_MESSAGE(std::abs(integral - 1.0) < 1e-4,
+                  "DirectionalTree::pdf of the hand-made tree: the integral over the "
+                  "sphere (per steradian, 1024^2 equal cells) expected 1, got "
+                      << num(integral));
     const ps::DirectionalTree empty;
     const double u = empty.pdf(Vec3(0.0f, 0.6f, 0.8f));
     CHECK_MESSAGE(std::abs(u - 1.0 / (4.0 * kPiD)) < 1e-7,
@@ -94,20 +96,22 @@ TEST_CASE("directional distribution: sampling follows the energies (chi-square, 
             if (bins[b].contains(u, v)) bin = b;
         observed[bin] += 1.0;
     }
-    CHECK_MESSAGE(outside == 0, "DirectionalTree::sample: " << outside << " of " << samples
-                                                            << " samples were not unit directions");
+    CHECK_MESSAGE(outside == 0,
+                  "DirectionalTree::sample: " << outside << " of " << samples << " samples were not unit directions");
     const ps::stats::ChiSquareResult r = ps::stats::chiSquare(observed, expected, alpha());
     CHECK_MESSAGE(r.passed, "DirectionalTree::sample on a hand-made tree of 16 leaves down to depth 7, "
-                                << samples << " samples binned in the square (32 x 32, and every leaf smaller than a "
-                                              "bin on its own) against the leaves' energies: "
+                                << samples
+                                << " samples binned in the square (32 x 32, and every leaf smaller than a "
+                                   "bin on its own) against the leaves' energies: "
                                 << r.report);
     const ps::DirectionalTree empty;
     for (const Vec2& u : {Vec2(0.1f, 0.2f), Vec2(0.6f, 0.9f), Vec2(0.95f, 0.05f)}) {
         const Vec3 got = empty.sample(u), want = ps::sampleUniformSphere(u);
-        CHECK_MESSAGE(glm::length(got - want) < 1e-5f, "DirectionalTree::sample(" << str(u)
-                                                            << ") of a tree without energy: expected the uniform "
-                                                               "sphere's direction "
-                                                            << str(want) << ", got " << str(got));
+        CHECK_MESSAGE(glm::length(got - want) < 1e-5f, "DirectionalTree::sample("
+                                                           << str(u)
+                                                           << ") of a tree without energy: expected the uniform "
+                                                              "sphere's direction "
+                                                           << str(want) << ", got " << str(got));
     }
 }
 
@@ -149,7 +153,8 @@ TEST_CASE("directional distribution: a record adds its value to every quadrant o
     check(0, Square(), 0);
     (void)leaves;
     CHECK_MESSAGE(wrong == 0, "DirectionalTree::record: 400 records into a hand-made tree of 5 nodes: "
-                                  << wrong << " quadrants do not hold the sum of the values recorded in them; the first, "
+                                  << wrong
+                                  << " quadrants do not hold the sum of the values recorded in them; the first, "
                                   << first);
 }
 
@@ -177,8 +182,8 @@ TEST_CASE("directional distribution: refinement keeps the total and cuts where t
                 const Square q = sq.quadrant(i);
                 const double want = energyIn(before, q), got = r.nodes[node].energy[i];
                 if (std::abs(got - want) > 1e-5 * total && wrongEnergy++ == 0)
-                    firstEnergy = "the quadrant at depth " + std::to_string(depth + 1) + " with corner (" +
-                                  num(q.x) + ", " + num(q.y) + "): expected energy " + num(want) + ", got " + num(got);
+                    firstEnergy = "the quadrant at depth " + std::to_string(depth + 1) + " with corner (" + num(q.x) +
+                                  ", " + num(q.y) + "): expected energy " + num(want) + ", got " + num(got);
                 const bool cut = r.nodes[node].child[i] != 0;
                 const bool shouldCut = want > threshold * (1.0 + 1e-6) && depth + 1 < c.maxDepth;
                 const bool mayCut = want > threshold * (1.0 - 1e-6) && depth + 1 < c.maxDepth;

@@ -40,7 +40,8 @@ struct Replay : ps::UniformSource {
 
 }  // namespace
 
-TEST_CASE("guided sampling: every direction's pdf is the mixture's, alpha guide + (1 - alpha) BSDF, and its weight f cos / pdf (Eq. 12.3, 12.4) [2 pts]") {
+TEST_CASE(
+    "guided sampling: every direction's pdf is the mixture's, alpha guide + (1 - alpha) BSDF, and its weight f cos / pdf (Eq. 12.3, 12.4) [2 pts]") {
     const ps::DirectionalTree guide = handTree();
     const std::vector<Leaf> leaves = leavesOf(guide);
     const double total = totalOf(leaves);
@@ -51,11 +52,12 @@ TEST_CASE("guided sampling: every direction's pdf is the mixture's, alpha guide 
         const char* what;
     };
     const Vec3 up(0.0f, 0.0f, 1.0f);
-    for (const Case& c : {Case{diffuse(), up, glm::normalize(Vec3(0.3f, 0.1f, 1.0f)), 0.5f, "diffuse, alpha 0.5"},
-                          Case{diffuse(), glm::normalize(Vec3(1.0f, -1.0f, 0.2f)), Vec3(0.0f, 0.0f, 1.0f), 0.3f,
-                               "diffuse, a tilted normal, alpha 0.3"},
-                          Case{phong(20.0f), up, glm::normalize(Vec3(-0.5f, 0.2f, 1.0f)), 0.5f, "Phong 20, alpha 0.5"},
-                          Case{diffuse(), up, glm::normalize(Vec3(0.3f, 0.1f, 1.0f)), 0.0f, "alpha 0: the BSDF alone"}}) {
+    for (const Case& c :
+         {Case{diffuse(), up, glm::normalize(Vec3(0.3f, 0.1f, 1.0f)), 0.5f, "diffuse, alpha 0.5"},
+          Case{diffuse(), glm::normalize(Vec3(1.0f, -1.0f, 0.2f)), Vec3(0.0f, 0.0f, 1.0f), 0.3f,
+               "diffuse, a tilted normal, alpha 0.3"},
+          Case{phong(20.0f), up, glm::normalize(Vec3(-0.5f, 0.2f, 1.0f)), 0.5f, "Phong 20, alpha 0.5"},
+          Case{diffuse(), up, glm::normalize(Vec3(0.3f, 0.1f, 1.0f)), 0.0f, "alpha 0: the BSDF alone"}}) {
         ps::Rng rng(ps::testseed::seed(1206), 9);
         int wrongPdf = 0, wrongWeight = 0, valid = 0;
         std::string firstPdf, firstWeight;
@@ -63,18 +65,19 @@ TEST_CASE("guided sampling: every direction's pdf is the mixture's, alpha guide 
             ps::BSDFSample s;
             if (!ps::sampleGuided(c.m, c.n, c.wo, guide, c.alpha, rng, s)) continue;
             ++valid;
-            const double want = c.alpha * guideDensity(leaves, total, s.wi) +
-                                (1.0 - c.alpha) * ps::pdfBSDF(c.m, c.n, c.wo, s.wi);
+            const double want =
+                c.alpha * guideDensity(leaves, total, s.wi) + (1.0 - c.alpha) * ps::pdfBSDF(c.m, c.n, c.wo, s.wi);
             if (std::abs(s.pdf - want) > 1e-4 * want && wrongPdf++ == 0)
-                firstPdf = "direction " + str(s.wi) + ": expected " + num(want) + ", got " + num(s.pdf) +
-                           " (guide " + num(guideDensity(leaves, total, s.wi)) + ", BSDF " +
-                           num(ps::pdfBSDF(c.m, c.n, c.wo, s.wi)) + ")";
+                firstPdf = "direction " + str(s.wi) + ": expected " + num(want) + ", got " + num(s.pdf) + " (guide " +
+                           num(guideDensity(leaves, total, s.wi)) + ", BSDF " + num(ps::pdfBSDF(c.m, c.n, c.wo, s.wi)) +
+                           ")";
             const Color w = ps::evalBSDF(c.m, c.n, c.wo, s.wi) * (std::abs(glm::dot(c.n, s.wi)) / float(want));
             if (glm::length(s.weight - w) > 1e-4f * glm::length(w) && wrongWeight++ == 0)
                 firstWeight = "direction " + str(s.wi) + ": expected " + str(w) + ", got " + str(s.weight);
             if (s.delta) ++wrongWeight;
         }
-        CHECK_MESSAGE(valid > 1000, "sampleGuided (" << c.what << "): expected most of 4000 samples valid, got " << valid);
+        CHECK_MESSAGE(valid > 1000,
+                      "sampleGuided (" << c.what << "): expected most of 4000 samples valid, got " << valid);
         CHECK_MESSAGE(wrongPdf == 0, "sampleGuided (" << c.what << "): " << wrongPdf << " of " << valid
                                                       << " samples with the wrong pdf (Eq. 12.3); the first, "
                                                       << firstPdf);
@@ -111,7 +114,8 @@ TEST_CASE("guided sampling: the directions follow the mixture (chi-square, Eq. 1
             double bsdf = 0.0;
             for (int a = 0; a < Q; ++a)
                 for (int b = 0; b < Q; ++b)
-                    bsdf += ps::pdfBSDF(m, n, wo, directionOf(sq.x + (a + 0.5) * sq.size / Q, sq.y + (b + 0.5) * sq.size / Q));
+                    bsdf += ps::pdfBSDF(m, n, wo,
+                                        directionOf(sq.x + (a + 0.5) * sq.size / Q, sq.y + (b + 0.5) * sq.size / Q));
             bsdf *= 4.0 * kPiD * sq.size * sq.size / (Q * Q);
             // The guide's directions where f is 0 (below the surface) come out invalid too.
             double below = 0.0;
@@ -139,8 +143,9 @@ TEST_CASE("guided sampling: the directions follow the mixture (chi-square, Eq. 1
     }
     const ps::stats::ChiSquareResult r = ps::stats::chiSquare(observed, expected, alpha());
     CHECK_MESSAGE(r.passed, "sampleGuided (Phong 4, alpha 0.4, the hand-made guide): "
-                                << samples << " directions binned in the square (32 x 32, and the invalid ones) "
-                                              "against the mixture's probabilities: "
+                                << samples
+                                << " directions binned in the square (32 x 32, and the invalid ones) "
+                                   "against the mixture's probabilities: "
                                 << r.report);
 }
 
@@ -165,13 +170,14 @@ TEST_CASE("guided sampling: a delta BSDF is never guided (Eq. 12.3) [1 pt]") {
                                      ", 0.3, " + num(u) + ", ...)";
             CHECK_MESSAGE((ok && s.delta && glm::length(s.wi - want.wi) < 1e-6f && s.pdf == want.pdf &&
                            glm::length(s.weight - want.weight) < 1e-6f),
-                          "sampleGuided on " << what << ": expected lesson 3's delta sample (direction "
-                                             << str(want.wi) << ", weight " << str(want.weight) << ", pdf "
-                                             << num(want.pdf) << "), got " << (ok ? "" : "no sample, ") << "direction "
-                                             << str(s.wi) << ", weight " << str(s.weight) << ", pdf " << num(s.pdf)
+                          "sampleGuided on " << what << ": expected lesson 3's delta sample (direction " << str(want.wi)
+                                             << ", weight " << str(want.weight) << ", pdf " << num(want.pdf)
+                                             << "), got " << (ok ? "" : "no sample, ") << "direction " << str(s.wi)
+                                             << ", weight " << str(s.weight) << ", pdf " << num(s.pdf)
                                              << (s.delta ? "" : ", not delta"));
-            CHECK_MESSAGE(replay.read == 3, "sampleGuided on " << what << ": expected the three numbers of sampleBSDF "
-                                                                          "and no choice between guide and BSDF, got "
+            CHECK_MESSAGE(replay.read == 3, "sampleGuided on " << what
+                                                               << ": expected the three numbers of sampleBSDF "
+                                                                  "and no choice between guide and BSDF, got "
                                                                << replay.read << " numbers");
         }
 }

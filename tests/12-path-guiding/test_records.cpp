@@ -7,12 +7,14 @@
 
 using namespace lesson12;
 
-TEST_CASE("radiance records: the radiance along each sampled direction, over the throughput and the pdf (Eq. 12.12, 12.13) [2 pts]") {
+TEST_CASE(
+    "radiance records: the radiance along each sampled direction, over the throughput and the pdf (Eq. 12.12, 12.13) [2 pts]") {
     std::vector<ps::GuideVertex> t(8);
     // x0: the camera ray's vertex, no sample led here; its light sample 0.3
     t[0].added = Color(0.3f);
     // x1: sampled from x0 (cell 7); emission found here 1.0 (0.25 after MIS), its light sample (0.5, 0.4, 0.3)
-    t[1].from = 0, t[1].cell = 7, t[1].side = 3, t[1].wi = Vec3(0, 0, 1), t[1].pdf = 0.5f, t[1].throughput = Color(0.8f, 0.4f, 0.2f);
+    t[1].from = 0, t[1].cell = 7, t[1].side = 3, t[1].wi = Vec3(0, 0, 1), t[1].pdf = 0.5f,
+    t[1].throughput = Color(0.8f, 0.4f, 0.2f);
     t[1].emitted = Color(0.25f), t[1].emittedFull = Color(1.0f), t[1].added = Color(0.25f) + Color(0.5f, 0.4f, 0.3f);
     // x2: sampled from x1 (cell 2), a mirror: nothing added
     t[2].from = 1, t[2].cell = 2, t[2].wi = Vec3(1, 0, 0), t[2].pdf = 2.0f, t[2].throughput = Color(0.5f, 0.0f, 0.25f);
@@ -23,7 +25,8 @@ TEST_CASE("radiance records: the radiance along each sampled direction, over the
     t[4].from = 3, t[4].cell = 9, t[4].wi = Vec3(0, 1, 0), t[4].pdf = 0.25f, t[4].throughput = Color(0.2f, 0.05f, 0.1f);
     t[4].added = Color(0.05f);
     // x5: the second continuation of x1 (a split), sampled from x1 (cell 2), light sample 0.2
-    t[5].from = 1, t[5].cell = 2, t[5].side = 5, t[5].wi = Vec3(0, 0, -1), t[5].pdf = 1.0f, t[5].throughput = Color(0.3f);
+    t[5].from = 1, t[5].cell = 2, t[5].side = 5, t[5].wi = Vec3(0, 0, -1), t[5].pdf = 1.0f,
+    t[5].throughput = Color(0.3f);
     t[5].added = Color(0.2f);
     // x6: sampled from x5 (cell 4), ended by the roulette before it reached anything
     t[6].from = 5, t[6].cell = 4, t[6].wi = Vec3(0, -1, 0), t[6].pdf = 0.5f, t[6].throughput = Color(0.1f);
@@ -58,10 +61,12 @@ TEST_CASE("radiance records: the radiance along each sampled direction, over the
     std::vector<ps::RadianceRecord> out(1);  // one record already there: the sample's are appended
     out[0].cell = 99;
     ps::radianceRecords(t, out);
-    REQUIRE_MESSAGE(out.size() == 1 + want.size(), "radianceRecords of a tree of 8 vertices, 6 sampled at a vertex with "
-                                                   "a cell, appended to a list of 1: expected "
-                                                       << 1 + want.size() << " records, got " << out.size());
-    CHECK_MESSAGE(out[0].cell == 99, "radianceRecords: the records must be appended, the list's first entry was changed");
+    REQUIRE_MESSAGE(out.size() == 1 + want.size(),
+                    "radianceRecords of a tree of 8 vertices, 6 sampled at a vertex with "
+                    "a cell, appended to a list of 1: expected "
+                        << 1 + want.size() << " records, got " << out.size());
+    CHECK_MESSAGE(out[0].cell == 99,
+                  "radianceRecords: the records must be appended, the list's first entry was changed");
     for (size_t k = 0; k < want.size(); ++k) {
         const ps::RadianceRecord& r = out[1 + k];
         const ps::GuideVertex& v = t[want[k].j];

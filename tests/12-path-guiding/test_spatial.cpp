@@ -67,7 +67,8 @@ TEST_CASE("spatial tree: a point's cell is the leaf whose box contains it (Eq. 1
                                 Vec3(5.0f, 1.999f, 0.5f), Vec3(5.0f, 1.0f, 0.5f),   Vec3(5.0f, 1.0f, 1.5f),
                                 Vec3(8.0f, 4.0f, 2.0f),   Vec3(-1.0f, 9.0f, -3.0f), Vec3(7.9f, 0.1f, 1.0f)};
     ps::Rng rng(ps::testseed::seed(1204), 1);
-    for (int k = 0; k < 500; ++k) points.push_back(Vec3(8.0f, 4.0f, 2.0f) * Vec3(rng.uniform(), rng.uniform(), rng.uniform()));
+    for (int k = 0; k < 500; ++k)
+        points.push_back(Vec3(8.0f, 4.0f, 2.0f) * Vec3(rng.uniform(), rng.uniform(), rng.uniform()));
     int wrong = 0;
     std::string first;
     for (const Vec3& p : points) {
@@ -75,11 +76,12 @@ TEST_CASE("spatial tree: a point's cell is the leaf whose box contains it (Eq. 1
         if (got != want && wrong++ == 0)
             first = "point " + str(p) + ": expected cell " + std::to_string(want) + ", got " + std::to_string(got);
     }
-    CHECK_MESSAGE(wrong == 0, "SpatialTree::cellOf on a hand-made tree over [(0, 0, 0), (8, 4, 2)] (5 leaves, depth 3): "
-                                  << wrong << " of " << points.size()
-                                  << " points in the wrong cell (a node's upper half starts at its box's middle, "
-                                     "inclusive); the first: "
-                                  << first);
+    CHECK_MESSAGE(wrong == 0,
+                  "SpatialTree::cellOf on a hand-made tree over [(0, 0, 0), (8, 4, 2)] (5 leaves, depth 3): "
+                      << wrong << " of " << points.size()
+                      << " points in the wrong cell (a node's upper half starts at its box's middle, "
+                         "inclusive); the first: "
+                      << first);
 }
 
 TEST_CASE("spatial tree: a leaf is cut when its cell has more than the stated number of records (Eq. 12.11) [1 pt]") {
@@ -102,22 +104,23 @@ TEST_CASE("spatial tree: a leaf is cut when its cell has more than the stated nu
         cells[0].side[2].learning.record(Vec3(0.0f, 0.0f, 1.0f), 2.5f);
         t.subdivide(cells, T, c.maxCells);
         const size_t want = c.cells;
-        CHECK_MESSAGE(cells.size() == want, "SpatialTree::subdivide(threshold " << T << ", maxCells " << c.maxCells
-                                                                               << ") of one leaf with " << c.samples
-                                                                               << " records: expected " << want
-                                                                               << " cells, got " << cells.size());
+        CHECK_MESSAGE(cells.size() == want, "SpatialTree::subdivide(threshold "
+                                                << T << ", maxCells " << c.maxCells << ") of one leaf with "
+                                                << c.samples << " records: expected " << want << " cells, got "
+                                                << cells.size());
         if (cells.size() != want) continue;
         std::vector<LeafBox> leaves;
         boxesOf(t, 0, t.bounds(), leaves);
-        CHECK_MESSAGE(leaves.size() == cells.size(),
-                      "SpatialTree::subdivide: expected one leaf per cell, got " << leaves.size() << " leaves for "
-                                                                                 << cells.size() << " cells");
+        CHECK_MESSAGE(leaves.size() == cells.size(), "SpatialTree::subdivide: expected one leaf per cell, got "
+                                                         << leaves.size() << " leaves for " << cells.size()
+                                                         << " cells");
         // Axes: every node's children cut the next axis; the leaves' cells are all different.
         bool axes = true;
         for (const ps::SpatialNode& n : t.nodes)
             if (!n.isLeaf())
                 for (const uint32_t k : n.child) axes = axes && t.nodes[k].axis == (n.axis + 1) % 3;
-        CHECK_MESSAGE(axes, "SpatialTree::subdivide: the children of a node cutting axis a must cut axis (a + 1) mod 3");
+        CHECK_MESSAGE(axes,
+                      "SpatialTree::subdivide: the children of a node cutting axis a must cut axis (a + 1) mod 3");
         std::vector<int> seen(cells.size(), 0);
         for (const LeafBox& l : leaves) seen[l.cell]++;
         bool once = true;
@@ -134,10 +137,9 @@ TEST_CASE("spatial tree: a leaf is cut when its cell has more than the stated nu
                           "SpatialTree::subdivide: cell " << k << " must be a copy of the cut one (its trees), got "
                                                           << num(cells[k].side[2].learning.total()) << " as a total");
             if (c.samples != 100 * T)
-                CHECK_MESSAGE(cells[k].samples == remaining, "SpatialTree::subdivide(" << c.what << "): cell " << k
-                                                                                       << " expected " << remaining
-                                                                                       << " records (halved at every cut), got "
-                                                                                       << cells[k].samples);
+                CHECK_MESSAGE(cells[k].samples == remaining,
+                              "SpatialTree::subdivide(" << c.what << "): cell " << k << " expected " << remaining
+                                                        << " records (halved at every cut), got " << cells[k].samples);
         }
     }
 }
@@ -174,9 +176,10 @@ TEST_CASE("learned field: a cell's statistics are the sums of what was recorded 
         if (pass == 1) {
             std::vector<LeafBox> leaves;
             boxesOf(field.spatialTree(), 0, field.spatialTree().bounds(), leaves);
-            CHECK_MESSAGE(leaves.size() > 4, "GuideField after a pass of 3000 records, threshold 40 sqrt(2^0): expected "
-                                             "the spatial tree cut where the records were, got "
-                                                 << leaves.size() << " leaves");
+            CHECK_MESSAGE(leaves.size() > 4,
+                          "GuideField after a pass of 3000 records, threshold 40 sqrt(2^0): expected "
+                          "the spatial tree cut where the records were, got "
+                              << leaves.size() << " leaves");
             int wrong = 0;
             std::string first;
             for (const LeafBox& l : leaves)
