@@ -40,6 +40,9 @@ struct RenderSettings {
     // Whitted's ambient radiance (lesson 11, `whitted` only): light no path carries, added at every
     // non-specular surface it shades as ambient times the albedo. 0: none.
     Color ambient = Color(0.0f);
+    // The most memory a learned guiding field may take, in bytes (lesson 12's pt-guided and
+    // pt-guided-adrrs, `--guide-budget MB`). 0: the integrator's default.
+    size_t guideBudget = 0;
 };
 
 // What a scene has, recorded at load time so integrators can leave out what it does not need.

@@ -37,7 +37,8 @@ const char* const kUsage = R"(converge options:
                      slope -1 guide), efficiency.md, equal-time.png (the algorithms' images at
                      the end of the budget, left to right in --algos order, then the reference,
                      each under its label: algorithm and spp)
-  --threads T, --maxdepth D, --no-prune, --progress/--no-progress   as for render
+  --threads T, --maxdepth D, --guide-budget MB, --no-prune, --progress/--no-progress   as for
+                     render
   --paths EXPR       every algorithm (and --ref-algo) renders only the paths EXPR matches, as
                      for render (a given --reference must be rendered with it too)
 A pixel in which a point light is seen directly is left out of every algorithm's error (a path
@@ -61,6 +62,7 @@ int runConverge(const std::vector<std::string>& args) {
     opt.progress = stderrIsTerminal();
     double refSeconds = 0.0;
     int maxDepth = -1;
+    double guideBudget = 0.0;
     bool prune = true;
     std::optional<PathExpression> paths;
     for (size_t i = 0; i < args.size(); ++i) {
@@ -76,6 +78,7 @@ int runConverge(const std::vector<std::string>& args) {
         else if (a == "--seeds") opt.seeds = parseAtLeast<int>(a, value(), 1);
         else if (a == "--threads") opt.threads = parseWithin<int>(a, value(), 1, kMaxThreads);
         else if (a == "--maxdepth") maxDepth = parseAtLeast<int>(a, value(), 0);
+        else if (a == "--guide-budget") guideBudget = parseWithin<double>(a, value(), 0.01, 65536.0);
         else if (a == "--out") outDir = value();
         else if (a == "--progress") opt.progress = true;
         else if (a == "--no-progress") opt.progress = false;
@@ -106,6 +109,7 @@ int runConverge(const std::vector<std::string>& args) {
     checkOutputFolder("--out", outDir, files);
     Scene scene = loadScene(scenePath);
     if (maxDepth >= 0) scene.settings.maxDepth = maxDepth;
+    if (guideBudget > 0.0) scene.settings.guideBudget = size_t(guideBudget * double(1 << 20));
     if (!regionNames.empty()) {
         try {
             opt.regions = materialRegions(scene, regionNames);

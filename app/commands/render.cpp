@@ -38,6 +38,8 @@ const char* const kUsage = R"(render options:
   --progress / --no-progress   progress bar on stderr (default: when stderr is a terminal)
   --ambient A        whitted's ambient radiance, one number or R,G,B (default: the scene's
                      'render ambient', else 0)
+  --guide-budget MB  pt-guided and pt-guided-adrrs only: the most memory their learned field
+                     may take, in MB (default 64; from 0.01 to 65536)
 )";
 
 int runRender(const std::vector<std::string>& args) {
@@ -48,6 +50,7 @@ int runRender(const std::vector<std::string>& args) {
     bool progress = stderrIsTerminal(), prune = true;
     std::optional<PathExpression> paths;
     std::optional<Color> ambient;
+    double guideBudget = 0.0;
     for (size_t i = 0; i < args.size(); ++i) {
         const std::string& a = args[i];
         auto value = [&]() -> std::string { return optionValue(args, i); };
@@ -66,6 +69,7 @@ int runRender(const std::vector<std::string>& args) {
         else if (a == "--no-prune") prune = false;
         else if (a == "--paths") paths = parsePathsOption(value());
         else if (a == "--ambient") ambient = parseAmbient(a, value());
+        else if (a == "--guide-budget") guideBudget = parseWithin<double>(a, value(), 0.01, 65536.0);
         else if (a == "--shots") shots = parseAtLeast<int>(a, value(), 1);
         else if (a == "--elements") {
             const std::string v = value();
@@ -96,6 +100,7 @@ int runRender(const std::vector<std::string>& args) {
     if (maxDepth >= 0) scene.settings.maxDepth = maxDepth;
     scene.settings.prune = prune;
     if (ambient) scene.settings.ambient = *ambient;
+    if (guideBudget > 0.0) scene.settings.guideBudget = size_t(guideBudget * double(1 << 20));
     if (shots > 0) scene.settings.shots = shots;
     if (elements[0] > 0) std::copy(elements, elements + 2, scene.settings.elements);
     std::unique_ptr<Integrator> integrator;

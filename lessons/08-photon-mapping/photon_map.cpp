@@ -54,13 +54,15 @@ const char* filterName(Filter f) {
 }
 
 PhotonMap tracePhotonMap(const Scene& scene, MapKind kind, int emitted, int maxDepth, uint64_t seed, uint32_t iteration,
-                         SampleStats& stats) {
+                         SampleStats& stats, const PhotonRules& rules) {
     PhotonMap map;
     map.emitted = emitted;
     if (emitted <= 0) return map;
     std::vector<std::vector<Photon>> perTask(size_t(taskCount(emitted)));
     runTasks(emitted, seed, iteration, nullptr, 0.0f, stats,
-             [&](int, Rng& rng, Task& task) { tracePhoton(scene, rng, maxDepth, kind, emitted, perTask[task.index]); });
+             [&](int, Rng& rng, Task& task) {
+                 tracePhoton(scene, rng, maxDepth, kind, emitted, perTask[task.index], rules ? rules() : ContinuationRule());
+             });
     std::vector<Photon> photons;
     size_t n = 0;
     for (const auto& list : perTask) n += list.size();

@@ -28,19 +28,28 @@ constexpr int kMinPhotons = 8192;
 constexpr uint64_t kPpmSalt = 0x6A09E667F3BCC909ull;
 int photonsPerPass(const Image& out) { return std::max(kMinPhotons, 4 * out.width * out.height); }
 
+}  // namespace
+
+void renderPpmPass(const Scene& scene, uint32_t iteration, uint64_t seed, Image& out, SampleStats& stats,
+                   const PhotonRules& rules) {
+    const double r1 = double(kInitialRadius) * scene.radius;
+    const float r2 = float(ppmRadius2(r1 * r1, int(iteration) + 1));
+    const int maxDepth = scene.settings.maxDepth;
+    const PhotonMap map =
+        tracePhotonMap(scene, MapKind::Global, photonsPerPass(out), maxDepth, seed ^ kPpmSalt, iteration, stats, rules);
+    renderPixelTasks(seed, iteration, out, stats, false, [&](int pixel, Rng& rng, Task&) {
+        const Ray ray = cameraRay(scene.camera, jitteredRaster(pixel, out.width, rng), rng);
+        return LiProgressive(scene, ray, rng, map, r2, maxDepth);
+    });
+}
+
+namespace {
+
 struct ProgressivePhotonMapper : Integrator {
     bool rendersThinLens() const override { return true; }  // lens rays (tasks.h, cameraRay), lesson 11
     void renderIteration(const Scene& scene, uint32_t iteration, uint64_t seed, Image& out,
                          SampleStats& stats) override {
-        const double r1 = double(kInitialRadius) * scene.radius;
-        const float r2 = float(ppmRadius2(r1 * r1, int(iteration) + 1));
-        const int maxDepth = scene.settings.maxDepth;
-        const PhotonMap map =
-            tracePhotonMap(scene, MapKind::Global, photonsPerPass(out), maxDepth, seed ^ kPpmSalt, iteration, stats);
-        renderPixelTasks(seed, iteration, out, stats, false, [&](int pixel, Rng& rng, Task&) {
-            const Ray ray = cameraRay(scene.camera, jitteredRaster(pixel, out.width, rng), rng);
-            return LiProgressive(scene, ray, rng, map, r2, maxDepth);
-        });
+        renderPpmPass(scene, iteration, seed, out, stats);
     }
 };
 
