@@ -5,11 +5,11 @@
 
 namespace ps {
 
-void traceLightPath(const Scene& scene, Rng& rng, int maxDepth, const SplatTarget& out) {
+void traceLightPath(const Scene& scene, Rng& rng, const WalkOptions& opt, const SplatTarget& out) {
     // The camera point every connection of this path goes to: the pinhole camera.position()
     // (no number drawn), or a point on a thin lens (lesson 11).
     const Vec3 z = scene.camera.samplePoint(rng);
-    lightWalk(scene, rng, {maxDepth}, [&](const WalkVertex& v, const LightPathStart& start) {
+    lightWalk(scene, rng, opt, [&](const WalkVertex& v, const LightPathStart& start) {
         // TODO(05) What vertex v adds to the image (Eq. 5.3, 5.4): connect it to the camera
         //          point z (connectToCamera(..., z)) and, if the connection is valid,
         //          out.add(c.raster, value).

@@ -15,15 +15,17 @@ float photonSurvival(const Color& throughput, int bounces) {
     return PS_TODO("lesson 08: photonSurvival", 1.0f);
 }
 
-void tracePhoton(const Scene& scene, Rng& rng, int maxDepth, MapKind kind, int emitted, std::vector<Photon>& out) {
-    // TODO(08) Eq. 8.1-8.3: lightWalk(scene, rng, {maxDepth, photonSurvival}, visitor). The visitor
+void tracePhoton(const Scene& scene, Rng& rng, int maxDepth, MapKind kind, int emitted, std::vector<Photon>& out,
+                 const ContinuationRule& continuation) {
+    // TODO(08) Eq. 8.1-8.3: lightWalk(scene, rng, options, visitor), the options {maxDepth,
+    //          photonSurvival} with `continuation` as their continuation rule. The visitor
     //          goes on at y0 (bounces 0). At a surface (bounces >= 1) with material m:
     //          - m.isDelta(): a specular bounce, nothing stored; go on.
     //          - else a photon {p = sp.p, power = beta / emitted, setWLight(v.wo)} goes to out
     //            for the global map always; for the caustic map only if every surface before this
     //            one was specular and there was at least one (L S+ D). The caustic walk ends at
     //            its first non-specular surface, the global walk goes on.
-    (void)scene; (void)rng; (void)maxDepth; (void)kind; (void)emitted; (void)out;
+    (void)scene; (void)rng; (void)maxDepth; (void)kind; (void)emitted; (void)out; (void)continuation;
     (void)PS_TODO("lesson 08: tracePhoton", 0);
 }
 

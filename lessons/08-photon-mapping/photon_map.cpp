@@ -59,10 +59,9 @@ PhotonMap tracePhotonMap(const Scene& scene, MapKind kind, int emitted, int maxD
     map.emitted = emitted;
     if (emitted <= 0) return map;
     std::vector<std::vector<Photon>> perTask(size_t(taskCount(emitted)));
-    runTasks(emitted, seed, iteration, nullptr, 0.0f, stats,
-             [&](int, Rng& rng, Task& task) {
-                 tracePhoton(scene, rng, maxDepth, kind, emitted, perTask[task.index], rules ? rules() : ContinuationRule());
-             });
+    runTasks(emitted, seed, iteration, nullptr, 0.0f, stats, [&](int, Rng& rng, Task& task) {
+        tracePhoton(scene, rng, maxDepth, kind, emitted, perTask[task.index], rules ? rules() : ContinuationRule());
+    });
     std::vector<Photon> photons;
     size_t n = 0;
     for (const auto& list : perTask) n += list.size();

@@ -126,7 +126,8 @@ void GuideField::endPass(int pass) {
         for (GuideSide& s : c.side) {
             const double n = s.samples, mean = n > 0 ? s.sum / n : 0.0;
             const double var = n > 1 ? std::max(0.0, (s.sumSq - n * mean * mean) / (n - 1.0)) : 0.0;
-            s.reliable = n > 1 && mean > 0.0 && std::sqrt(var / n) / mean <= double(kMaxRelativeError);
+            s.error = n > 1 && mean > 0.0 ? float(std::sqrt(var / n) / mean) : kInf;
+            s.reliable = s.error <= kMaxRelativeError;
             s.learnt = s.samples;
         }
     // 2. The spatial tree, within the budget (a new cell as large as the largest one will be).

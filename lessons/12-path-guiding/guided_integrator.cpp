@@ -114,98 +114,94 @@ int passOf(uint32_t iteration) {
     return k;
 }
 
-class GuidedPathTracer : public Integrator {
-public:
-    explicit GuidedPathTracer(bool adrrs = false) : adrrs_(adrrs) {}
-    bool rendersThinLens() const override { return true; }  // lens rays (tasks.h, cameraRay), lesson 11
+// One camera ray's estimate (lesson 3's MIS visitor on the guided walk) and its records; with
+// adrrs, the field's roulette and splitting as the walk's continuation rule.
+Color guidedLi(const Scene& scene, const GuideField& field, bool adrrs, const Ray& ray, Rng& rng,
+               std::vector<RadianceRecord>& records, DecisionCounts& counts) {
+    const int maxDepth = scene.settings.maxDepth;
+    SampleTree tree;
+    GuidedSampler sampler;
+    sampler.field = &field;
+    sampler.tree = &tree;
+    WalkOptions opt(maxDepth);
+    opt.sampler = &sampler;
+    float I = -1.0f;
+    int paths = 1;
+    if (adrrs)
+        opt.continuation = [&](const WalkVertex& v, Rng& r) {
+            if (v.bounces == 0) I = fieldPixelEstimate(field, scene, v);
+            const Decision d = fieldDecision(field, scene, v, I);
+            if (!d.decided) return Continuations{1, v.beta};  // lesson 3's roulette after the bounce
+            const float q = paths >= kMaxPathsPerCameraRay ? std::min(d.q, 1.0f) : d.q;
+            ++counts.decisions;
+            counts.roulette += q < 1.0f ? 1 : 0;
+            counts.splits += q > 1.0f ? 1 : 0;
+            Continuations c = continuations(v.beta, q, r);
+            c.roulette = false;  // the rule decided survival here
+            if (c.n > 0) paths += c.n - 1;
+            return c;
+        };
+    Color L(0.0f);
+    cameraWalk(scene, ray, rng, opt, [&](const WalkVertex& v) {
+        GuideVertex& g = tree.reach(v);
+        g.emitted = misEmission(scene, v);
+        g.added = g.emitted + misLightSample(scene, v, rng, maxDepth);
+        const int light = v.hit ? v.sp.light : scene.background;
+        if (light >= 0)
+            g.emittedFull = v.beta * (v.hit ? emittedRadiance(scene.lights[size_t(light)], v.sp.n, v.wo)
+                                            : scene.backgroundRadiance());
+        L += g.added;
+        return true;
+    });
+    radianceRecords(tree.vertices, records);
+    return L;
+}
 
-    void renderIteration(const Scene& scene, uint32_t iteration, uint64_t seed, Image& out,
-                         SampleStats& stats) override {
-        if (iteration == 0) {
-            GuideSettings settings;
-            if (scene.settings.guideBudget > 0) settings.budget = scene.settings.guideBudget;
-            field_ = GuideField(scene.bounds, settings);
-            counts_ = DecisionCounts();
-        }
-        const int pass = passOf(iteration);
-        if (iteration > 0 && passOf(iteration - 1) != pass) field_.endPass(pass - 1);
-        std::vector<std::vector<RadianceRecord>> lists(size_t(taskCount(out.width * out.height)));
-        std::vector<DecisionCounts> counts(lists.size());
-        renderPixelTasks(seed, iteration, out, stats, false, [&](int pixel, Rng& rng, Task& task) {
-            const Vec2 raster = jitteredRaster(pixel, out.width, rng);
-            return Li(scene, cameraRay(scene.camera, raster, rng), rng, lists[task.index], counts[task.index]);
-        });
-        for (size_t t = 0; t < lists.size(); ++t) {  // in task order
-            field_.add(lists[t]);
-            counts_ += counts[t];
-        }
+}  // namespace
+
+void GuidedPathTracer::renderIteration(const Scene& scene, uint32_t iteration, uint64_t seed, Image& out,
+                                       SampleStats& stats) {
+    if (iteration == 0) {
+        GuideSettings settings;
+        if (scene.settings.guideBudget > 0) settings.budget = scene.settings.guideBudget;
+        field_ = GuideField(scene.bounds, settings);
+        decisions_ = roulette_ = splits_ = 0;
     }
-
-    std::vector<std::string> report() const override {
-        std::ostringstream s;
-        s.precision(3);
-        s << "field: " << field_.cells() << " cells after " << field_.passes() << " passes of "
-          << field_.records() << " records, " << double(field_.bytes()) / double(1 << 20) << " MB";
-        std::vector<std::string> lines = {s.str()};
-        if (adrrs_) {
-            std::ostringstream d;
-            d.precision(3);
-            const double n = double(std::max<uint64_t>(counts_.decisions, 1));
-            d << counts_.decisions << " decisions on the field: " << 100.0 * double(counts_.roulette) / n
-              << " % roulette (q < 1), " << 100.0 * double(counts_.splits) / n << " % splitting (q > 1)";
-            lines.push_back(d.str());
-        }
-        return lines;
+    const int pass = passOf(iteration);
+    if (iteration > 0 && passOf(iteration - 1) != pass) field_.endPass(pass - 1);
+    std::vector<std::vector<RadianceRecord>> lists(size_t(taskCount(out.width * out.height)));
+    std::vector<DecisionCounts> counts(lists.size());
+    renderPixelTasks(seed, iteration, out, stats, false, [&](int pixel, Rng& rng, Task& task) {
+        const Vec2 raster = jitteredRaster(pixel, out.width, rng);
+        return guidedLi(scene, field_, adrrs_, cameraRay(scene.camera, raster, rng), rng, lists[task.index],
+                        counts[task.index]);
+    });
+    for (size_t t = 0; t < lists.size(); ++t) {  // in task order
+        field_.add(lists[t]);
+        decisions_ += counts[t].decisions;
+        roulette_ += counts[t].roulette;
+        splits_ += counts[t].splits;
     }
+}
 
-    const GuideField& field() const { return field_; }
-
-private:
-    bool adrrs_;
-    GuideField field_;
-    DecisionCounts counts_;
-
-    Color Li(const Scene& scene, const Ray& ray, Rng& rng, std::vector<RadianceRecord>& records,
-             DecisionCounts& counts) const {
-        const int maxDepth = scene.settings.maxDepth;
-        SampleTree tree;
-        GuidedSampler sampler;
-        sampler.field = &field_;
-        sampler.tree = &tree;
-        WalkOptions opt(maxDepth);
-        opt.sampler = &sampler;
-        float I = -1.0f;
-        int paths = 1;
-        if (adrrs_)
-            opt.continuation = [&](const WalkVertex& v, Rng& r) {
-                if (v.bounces == 0) I = fieldPixelEstimate(field_, scene, v);
-                const Decision d = fieldDecision(field_, scene, v, I);
-                if (!d.decided) return Continuations{1, v.beta};  // lesson 3's roulette after the bounce
-                const float q = paths >= kMaxPathsPerCameraRay ? std::min(d.q, 1.0f) : d.q;
-                ++counts.decisions;
-                counts.roulette += q < 1.0f ? 1 : 0;
-                counts.splits += q > 1.0f ? 1 : 0;
-                Continuations c = continuations(v.beta, q, r);
-                c.roulette = false;  // the rule decided survival here
-                if (c.n > 0) paths += c.n - 1;
-                return c;
-            };
-        Color L(0.0f);
-        cameraWalk(scene, ray, rng, opt, [&](const WalkVertex& v) {
-            GuideVertex& g = tree.reach(v);
-            g.emitted = misEmission(scene, v);
-            g.added = g.emitted + misLightSample(scene, v, rng, maxDepth);
-            const int light = v.hit ? v.sp.light : scene.background;
-            if (light >= 0)
-                g.emittedFull = v.beta * (v.hit ? emittedRadiance(scene.lights[size_t(light)], v.sp.n, v.wo)
-                                                : scene.backgroundRadiance());
-            L += g.added;
-            return true;
-        });
-        radianceRecords(tree.vertices, records);
-        return L;
+std::vector<std::string> GuidedPathTracer::report() const {
+    std::ostringstream s;
+    s.precision(3);
+    s << "field: " << field_.cells() << " cells after " << field_.passes() << " passes of " << field_.records()
+      << " records, " << double(field_.bytes()) / double(1 << 20) << " MB";
+    std::vector<std::string> lines = {s.str()};
+    if (adrrs_) {
+        std::ostringstream d;
+        d.precision(3);
+        const double n = double(std::max<uint64_t>(decisions_, 1));
+        d << decisions_ << " decisions on the field: " << 100.0 * double(roulette_) / n << " % roulette (q < 1), "
+          << 100.0 * double(splits_) / n << " % splitting (q > 1)";
+        lines.push_back(d.str());
     }
-};
+    return lines;
+}
+
+namespace {
 
 struct GuidedADRRS : GuidedPathTracer {
     GuidedADRRS() : GuidedPathTracer(true) {}
@@ -213,8 +209,9 @@ struct GuidedADRRS : GuidedPathTracer {
 
 }  // namespace
 
-PS_REGISTER_INTEGRATOR(GuidedPathTracer, "pt-guided",
-                       "path tracing guided by a learned radiance field (SD-tree), mixed with BSDF sampling (lesson 12)");
+PS_REGISTER_INTEGRATOR(
+    GuidedPathTracer, "pt-guided",
+    "path tracing guided by a learned radiance field (SD-tree), mixed with BSDF sampling (lesson 12)");
 PS_REGISTER_INTEGRATOR(GuidedADRRS, "pt-guided-adrrs",
                        "pt-guided with adjoint-driven roulette and splitting on the learned field (lesson 12)");
 

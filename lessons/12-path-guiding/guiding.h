@@ -9,7 +9,9 @@
 // assignments/12-path-guiding/*.cpp (yours); lessons/12-path-guiding/README.md derives every
 // formula (Eq. 12.1-12.17).
 #pragma once
+#include <atomic>
 #include <cstdint>
+#include <string>
 #include <utility>
 #include <vector>
 #include "03-path-tracing/pathtracer.h"
@@ -96,6 +98,7 @@ struct GuideSide {
     // kMaxRelativeError (lesson 10).
     float irradiance = 0.0f;
     bool reliable = false;
+    float error = kInf;  // the relative standard error of that pass's mean record (reliable: <= 30 %)
 };
 struct GuideCell {
     GuideSide side[6];
@@ -280,5 +283,48 @@ void appendImportons(const std::vector<ImportanceVertex>& path, int pixels, int 
 // material's albedo times the entry's estimate (the importance reflected by a white Lambertian
 // surface there).
 Decision particleDecision(const AdjointCache& importance, const Scene& scene, const WalkVertex& y, float imageTotal);
+
+// ---------------------------------------------------------------------------------------------
+// The integrators (plumbing). "pt-guided" and "pt-guided-adrrs" (guided_integrator.cpp): lesson
+// 3's path tracer on the guided mixture, learning its field pass after pass; with ADRRS on the
+// field as the walk's continuation rule.
+class GuidedPathTracer : public Integrator {
+public:
+    explicit GuidedPathTracer(bool adrrs = false) : adrrs_(adrrs) {}
+    void renderIteration(const Scene& scene, uint32_t iteration, uint64_t seed, Image& out,
+                         SampleStats& stats) override;
+    std::vector<std::string> report() const override;
+    bool rendersThinLens() const override { return true; }  // lens rays (tasks.h, cameraRay), lesson 11
+    const GuideField& field() const { return field_; }
+    uint64_t decisions() const { return decisions_; }
+
+private:
+    bool adrrs_;
+    GuideField field_;
+    uint64_t decisions_ = 0, roulette_ = 0, splits_ = 0;
+};
+
+// "lt-adrrs" and "ppm-adrrs" (particle_integrator.cpp): the camera pass (Eq. 12.16, 12.17) and the
+// rule it gives the particles' walks.
+struct ImportancePass {
+    AdjointCache cache;       // the importance reflected by a white Lambertian surface, per entry
+    float imageTotal = 0.0f;  // T (Eq. 12.17), the mean of its channels
+    size_t importons = 0;
+    int paths = 0;
+};
+// `paths` camera paths of lesson 3's pt (path i through pixel i mod pixels), their importons, and
+// lesson 8's k-nearest density estimate at up to 2^15 of them into lesson 10's cache (the same for
+// any number of threads).
+ImportancePass importancePass(const Scene& scene, int paths, uint64_t seed, SampleStats& stats);
+// What the particles' rule decided, summed over the threads.
+struct ParticleCounts {
+    std::atomic<uint64_t> decisions{0}, roulette{0}, splits{0};
+    void reset() { decisions = roulette = splits = 0; }
+};
+// particleDecision as the continuation rule of one particle's walk (lesson 3's Eq. 3.10): where it
+// decides, lesson 10's continuations with the walk's own roulette off after them; where it does
+// not, one continuation and the walk's own roulette. At most kMaxPathsPerCameraRay paths per
+// particle, as lesson 10 allows a camera ray.
+ContinuationRule particleRule(const Scene& scene, const ImportancePass& pass, ParticleCounts& counts);
 
 }  // namespace ps

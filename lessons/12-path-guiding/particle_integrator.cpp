@@ -16,7 +16,6 @@
 //   iteration     continuation rule.
 #include <algorithm>
 #include <memory>
-#include <atomic>
 #include <sstream>
 #include "12-path-guiding/guiding.h"
 #include "tasks.h"
@@ -26,15 +25,10 @@ namespace ps {
 namespace {
 
 constexpr uint64_t kImportanceTag = 0x696d706f72746f6eull;  // "importon"
-constexpr int kMaxQueries = 1 << 15;                         // density estimates for the cache
+constexpr int kMaxQueries = 1 << 15;                        // density estimates for the cache
 constexpr int kImportonsPerEstimate = 32;                   // k of lesson 8's k-nearest estimate
 
-struct ImportancePass {
-    AdjointCache cache;
-    float imageTotal = 0.0f;  // T (Eq. 12.17), the mean of its channels
-    size_t importons = 0;
-    int paths = 0;
-};
+}  // namespace
 
 ImportancePass importancePass(const Scene& scene, int paths, uint64_t seed, SampleStats& stats) {
     ImportancePass pass;
@@ -102,16 +96,6 @@ ImportancePass importancePass(const Scene& scene, int paths, uint64_t seed, Samp
     return pass;
 }
 
-// What the rule decided, summed over the threads (integers: the same totals in any order).
-struct ParticleCounts {
-    std::atomic<uint64_t> decisions{0}, roulette{0}, splits{0};
-    void reset() { decisions = roulette = splits = 0; }
-};
-
-// particleDecision as the continuation rule of one particle's walk (lesson 3's Eq. 3.10): where it
-// decides, q with lesson 10's continuations and no roulette of the walk's own after them; where it
-// does not, the walk's own roulette (lesson 5's, or lesson 8's photonSurvival). At most
-// kMaxPathsPerCameraRay paths per particle, as lesson 10 allows a camera ray.
 ContinuationRule particleRule(const Scene& scene, const ImportancePass& pass, ParticleCounts& counts) {
     auto paths = std::make_shared<int>(1);
     return [&scene, &pass, &counts, paths](const WalkVertex& v, Rng& r) {
@@ -128,14 +112,16 @@ ContinuationRule particleRule(const Scene& scene, const ImportancePass& pass, Pa
     };
 }
 
+namespace {
+
 std::string describe(const ImportancePass& pass, const ParticleCounts& counts) {
     const uint64_t decisions = counts.decisions, roulette = counts.roulette, splits = counts.splits;
     std::ostringstream s;
     s.precision(3);
-    s << "importance: " << pass.cache.reliableEntries() << " of " << pass.cache.entries()
-      << " entries reliable from " << pass.importons << " importons of " << pass.paths << " camera paths; "
-      << decisions << " decisions: " << (decisions ? 100.0 * double(roulette) / double(decisions) : 0.0)
-      << " % roulette, " << (decisions ? 100.0 * double(splits) / double(decisions) : 0.0) << " % splitting";
+    s << "importance: " << pass.cache.reliableEntries() << " of " << pass.cache.entries() << " entries reliable from "
+      << pass.importons << " importons of " << pass.paths << " camera paths; " << decisions
+      << " decisions: " << (decisions ? 100.0 * double(roulette) / double(decisions) : 0.0) << " % roulette, "
+      << (decisions ? 100.0 * double(splits) / double(decisions) : 0.0) << " % splitting";
     return s.str();
 }
 

@@ -138,7 +138,8 @@ TEST_CASE("photons: a continuation rule given to tracePhoton reaches the photon 
             return v.bounces == 1 ? ps::Continuations{2, v.beta * 0.5f} : ps::Continuations{1, v.beta};
         });
     };
-    const PhotonMap map = ps::tracePhotonMap(scene, ps::MapKind::Global, N, 3, ps::testseed::seed(814), 0, stats, rules);
+    const PhotonMap map =
+        ps::tracePhotonMap(scene, ps::MapKind::Global, N, 3, ps::testseed::seed(814), 0, stats, rules);
     int full = 0, half = 0, other = 0;
     for (size_t i = 1; i <= map.size(); ++i) {
         const double p = map.nodes[i].power.r;

@@ -30,11 +30,23 @@ using ps::testfiles::sourcePath;
 // energies, the spatial tree's boxes, a hand-made path's records, the replayed numbers):
 //   chi-square: the directional tree's sampling against its energies; the guided mixture's
 //               sampling against its pdf                                                  -> 2
-//   z-tests:    pt-guided, pt-guided-adrrs and lt-adrrs against the stored references     -> 3
-// m = 5; each runs at the Sidak level alpha' = 1 - (1 - a_L)^(1/5) of this lesson's share a_L
+//   z-test:     the learned field's irradiance against the lamp's (test_learning.cpp)      -> 1
+//   z-tests:    pt-guided, pt-guided-adrrs and lt-adrrs against the stored references, per
+//               pixel and on the whole image's mean                                        -> 6
+//   t-test:     the power photons store with roulette and splitting by importance          -> 1
+// m = 10; each runs at the Sidak level alpha' = 1 - (1 - a_L)^(1/10) of this lesson's share a_L
 // of the whole graded suite's 1 % (tests/support/alpha.h).
-constexpr int kStatisticalTests = 5;
+constexpr int kStatisticalTests = 10;
 inline double alpha() { return ps::testalpha::perTest(kStatisticalTests); }
+// The two-sided critical value of the standard normal at alpha() (bisection on its tail).
+inline double zCritical() {
+    double lo = 0.0, hi = 20.0;
+    for (int i = 0; i < 100; ++i) {
+        const double mid = 0.5 * (lo + hi);
+        (ps::stats::normalTwoSided(mid) > alpha() ? lo : hi) = mid;
+    }
+    return hi;
+}
 
 constexpr double kPiD = 3.14159265358979323846;
 
