@@ -17,12 +17,13 @@ constexpr float kLe = 10.0f, kHalf = 0.2f, kHeight = 1.5f;  // the lamp: 0.4 m s
 
 ps::Scene lampOverFloor() {
     const std::string h = std::to_string(kHalf), y = std::to_string(kHeight), le = std::to_string(kLe);
-    const std::string text = "camera eye 0.6 1.2 0.3  target 0.6 0 0.3  up 0 0 1  fov 20  resolution 16 16\n"
-                             "material floor diffuse albedo 0.5 0.5 0.5\n"
-                             "quad -4 0 -4  -4 0 4  4 0 4  4 0 -4  material floor\n"
-                             "quad -" + h + " " + y + " -" + h + "  " + h + " " + y + " -" + h + "  " + h + " " + y +
-                             " " + h + "  -" + h + " " + y + " " + h + "  emission " + le + " " + le + " " + le +
-                             "\nrender maxdepth 4\n";
+    const std::string text =
+        "camera eye 0.6 1.2 0.3  target 0.6 0 0.3  up 0 0 1  fov 20  resolution 16 16\n"
+        "material floor diffuse albedo 0.5 0.5 0.5\n"
+        "quad -4 0 -4  -4 0 4  4 0 4  4 0 -4  material floor\n"
+        "quad -" +
+        h + " " + y + " -" + h + "  " + h + " " + y + " -" + h + "  " + h + " " + y + " " + h + "  -" + h + " " + y +
+        " " + h + "  emission " + le + " " + le + " " + le + "\nrender maxdepth 4\n";
     return ps::parseScene(text, "lamp-over-floor.scene (test_learning.cpp)");
 }
 
@@ -51,7 +52,8 @@ double irradiance(const Vec3& p) {
 
 }  // namespace
 
-TEST_CASE("learned field: under one small lamp the floor's guide points at it, with the lamp's irradiance (Eq. 12.6, 12.13, 12.14) [2 pts]") {
+TEST_CASE(
+    "learned field: under one small lamp the floor's guide points at it, with the lamp's irradiance (Eq. 12.6, 12.13, 12.14) [2 pts]") {
     const ps::Scene scene = lampOverFloor();
     ps::GuidedPathTracer pt;
     ps::RenderOptions opt;
@@ -105,8 +107,8 @@ TEST_CASE("learned field: under one small lamp the floor's guide points at it, w
     CHECK_MESSAGE(z <= zCritical(),
                   "pt-guided after 31 spp: the floor side's irradiance from the field (Eq. 12.14) expected the lamp's "
                   "irradiance on the footprint, "
-                      << num(E) << ", got " << num(floor.irradiance) << " (relative standard error "
-                      << num(floor.error) << ", z = " << num(z) << "; a record is the radiance over the throughput "
+                      << num(E) << ", got " << num(floor.irradiance) << " (relative standard error " << num(floor.error)
+                      << ", z = " << num(z) << "; a record is the radiance over the throughput "
                       << "and over the pdf, Eq. 12.13)");
     CHECK(r.stats.bad() == 0);
 }

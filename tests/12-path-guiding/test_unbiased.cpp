@@ -37,9 +37,9 @@ void checkMean(const std::string& what, const ps::Image& img, const ps::Image& v
         vb += ps::testrender::sum(refVar.pixels[i]);
     }
     const double z = std::abs(a - b) / std::sqrt(va + vb);
-    CHECK_MESSAGE(z <= zCritical(), what << ": the sum of every pixel's channels expected the reference's "
-                                         << num(b) << ", got " << num(a) << " (z = " << num(z)
-                                         << ", level " << num(alpha()) << ")");
+    CHECK_MESSAGE(z <= zCritical(), what << ": the sum of every pixel's channels expected the reference's " << num(b)
+                                         << ", got " << num(a) << " (z = " << num(z) << ", level " << num(alpha())
+                                         << ")");
 }
 
 // Renders and checks the pixels where `tested` is true (all: empty) per pixel and on their mean;
@@ -69,15 +69,19 @@ ps::Image checkAgainst(const std::string& algo, ps::Integrator& integrator, cons
 
 }  // namespace
 
-TEST_CASE("pt-guided: converges to the reference with a mirror, glass, a Phong floor and a point light (z-tests) [2 pts]") {
+TEST_CASE(
+    "pt-guided: converges to the reference with a mirror, glass, a Phong floor and a point light (z-tests) [2 pts]") {
     // SmallVCM's scene 2 at 32 x 32: delta BSDFs (never guided), a glossy floor (the mixture with
     // a lobe), a point light (light samples only). Its reference: 65536 spp of lesson 3's pt
-    // (lessons/12-path-guiding/README.md, section 4, has the command).
+    // (lessons/12-path-guiding/README.md, section 4, has the command). 2048 spp: at 512 the glossy
+    // floor's rare large samples make the per-pixel variance estimate unreliable (lesson 3's pt
+    // itself failed 2 seeds of 3 there; at 2048 it passed 3 of 3, pt-guided 3 of 3).
     const ps::Scene scene = loadSceneAt("scenes/smallvcm-point.scene", 32, 32);
     ps::GuidedPathTracer pt;
-    checkAgainst("pt-guided", pt, scene, "tests/12-path-guiding/data/smallvcm-point-32", 512, 1209);
-    CHECK_MESSAGE(pt.field().passes() >= 9, "pt-guided after 512 spp: expected 9 passes of learning (2^k spp each), got "
-                                                << pt.field().passes());
+    checkAgainst("pt-guided", pt, scene, "tests/12-path-guiding/data/smallvcm-point-32", 2048, 1209);
+    CHECK_MESSAGE(
+        pt.field().passes() >= 11,
+        "pt-guided after 2048 spp: expected 11 passes of learning (2^k spp each), got " << pt.field().passes());
 }
 
 TEST_CASE("pt-guided-adrrs: converges to the reference under a background light (z-tests) [2 pts]") {
@@ -110,11 +114,14 @@ TEST_CASE("photons: rouletted and split by visual importance, they store the ana
     const std::string albedo = std::to_string(a);
     const std::string text =
         "camera eye 0.5 0.5 0.1  target 0.5 0.5 1  up 0 1 0  fov 70  resolution 16 16\n"
-        "material w diffuse albedo " + albedo + " " + albedo + " " + albedo + "\n"
+        "material w diffuse albedo " +
+        albedo + " " + albedo + " " + albedo +
+        "\n"
         "quad 0 0 0  1 0 0  1 0 1  0 0 1  material w\nquad 0 1 0  0 1 1  1 1 1  1 1 0  material w\n"
         "quad 0 0 0  0 0 1  0 1 1  0 1 0  material w\nquad 1 0 0  1 1 0  1 1 1  1 0 1  material w\n"
         "quad 0 0 0  0 1 0  1 1 0  1 0 0  material w\nquad 0 0 1  1 0 1  1 1 1  0 1 1  material w\n"
-        "pointlight position 0.5 0.7 0.6  intensity 1 1 1\nrender maxdepth " + std::to_string(D) + "\n";
+        "pointlight position 0.5 0.7 0.6  intensity 1 1 1\nrender maxdepth " +
+        std::to_string(D) + "\n";
     const ps::Scene scene = ps::parseScene(text, "closed-cube-point.scene (test_unbiased.cpp)");
     ps::SampleStats stats;
     const ps::ImportancePass pass = ps::importancePass(scene, 8192, ps::testseed::seed(1212), stats);
@@ -131,10 +138,10 @@ TEST_CASE("photons: rouletted and split by visual importance, they store the ana
         w.add(total);
     }
     const uint64_t decided = counts.decisions, roulette = counts.roulette, splits = counts.splits;
-    CHECK_MESSAGE((roulette > 0 && splits > 0), "photons in the closed cube with particleRule: expected the rule to "
-                                                "roulette and to split somewhere, got "
-                                                    << decided << " decisions, " << roulette << " with q < 1, "
-                                                    << splits << " with q > 1");
+    CHECK_MESSAGE((roulette > 0 && splits > 0),
+                  "photons in the closed cube with particleRule: expected the rule to "
+                  "roulette and to split somewhere, got "
+                      << decided << " decisions, " << roulette << " with q < 1, " << splits << " with q > 1");
     const ps::stats::TTestResult t = ps::stats::tTest(w, want, alpha(), 0.02);
     CHECK_MESSAGE(t.passed, "photons with roulette and splitting by visual importance in a closed cube (a = 1/2, D = "
                                 << D << "): the power stored per emitted path expected Phi (1 - a^D) / (1 - a) = "
