@@ -111,4 +111,13 @@ TEST_CASE(
                       << ", z = " << num(z) << "; a record is the radiance over the throughput "
                       << "and over the pdf, Eq. 12.13)");
     CHECK(r.stats.bad() == 0);
+
+    // The memory budget (--guide-budget): the same render with 20 kB at most.
+    ps::Scene capped = scene;
+    capped.settings.guideBudget = 20000;
+    ps::GuidedPathTracer small;
+    ps::render(capped, small, opt);
+    CHECK_MESSAGE(small.field().bytes() <= capped.settings.guideBudget,
+                  "pt-guided with a memory budget of 20000 bytes (--guide-budget): expected the field within it, got "
+                      << small.field().bytes() << " bytes (" << small.field().cells() << " cells)");
 }
