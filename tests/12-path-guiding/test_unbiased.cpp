@@ -15,16 +15,7 @@ using namespace lesson12;
 
 namespace {
 
-// The pixels of img where mask is true, in a row.
-ps::Image select(const ps::Image& img, const std::vector<bool>& mask) {
-    int n = 0;
-    for (bool m : mask) n += m;
-    ps::Image out(n, 1);
-    int k = 0;
-    for (size_t i = 0; i < img.pixels.size(); ++i)
-        if (mask[i]) out.pixels[size_t(k++)] = img.pixels[i];
-    return out;
-}
+using ps::testrender::select;
 
 // The whole image's mean against the reference's: a z-test with both variances of the mean.
 void checkMean(const std::string& what, const ps::Image& img, const ps::Image& var, const ps::Image& ref,
