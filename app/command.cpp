@@ -7,7 +7,7 @@
 #include <fstream>
 #include <iostream>
 #include <sstream>
-#include "integrator.h"
+#include "errors.h"
 #include "scene.h"
 #if defined(_WIN32)
 #include <io.h>
@@ -17,31 +17,14 @@
 
 namespace ps {
 
-namespace {
-std::vector<Command>& registry() {
-    static std::vector<Command> commands;  // filled before main by static initialisers
-    return commands;
-}
-}  // namespace
-
-bool registerCommand(const Command& command) {
-    registry().push_back(command);
-    return true;
-}
-
 std::vector<Command> commandList() {
-    std::vector<Command> list = registry();
-    std::sort(list.begin(), list.end(), [](const Command& a, const Command& b) {
-        return a.order != b.order ? a.order < b.order : a.name < b.name;
-    });
+    std::vector<Command> list;
+    for (const auto& e : Registry<Command>::sorted()) list.push_back(e.value);
+    std::stable_sort(list.begin(), list.end(), [](const Command& a, const Command& b) { return a.order < b.order; });
     return list;
 }
 
-const Command* findCommand(const std::string& name) {
-    for (const Command& c : registry())
-        if (c.name == name) return &c;
-    return nullptr;
-}
+const Command* findCommand(const std::string& name) { return Registry<Command>::find(name); }
 
 double parsePositive(const std::string& opt, const std::string& s) {
     const double v = parseNumber<double>(opt, s);
@@ -175,34 +158,38 @@ void listAlgorithms(std::ostream& os) {
     os << "algorithms:\n";
     for (const auto& i : list)
         os << "  " << i.name << std::string(width + 2 - i.name.size(), ' ') << i.description
-           << (honoursPaths(i.name) ? " *" : "") << "\n";
-    os << "  (* also renders only the paths of an expression: --paths)\n";
+           << (takesAlgorithmOption(i.name) ? " *" : "") << "\n";
+    const std::vector<std::string> options = algorithmOptionNames();
+    if (options.empty()) return;
+    std::string names;
+    for (const std::string& o : options) names += (names.empty() ? "--" : ", --") + o;
+    os << "  (* also takes " << names << ")\n\nalgorithm options (render, converge, pyramid):\n";
+    for (const auto& e : Registry<AlgorithmOption>::sorted()) os << e.value.help;
 }
 
-const char* const kPathsHelp =
-    R"(  --paths EXPR       render only the paths Heckbert's expression EXPR matches (lesson 11): the
-                     types of a path's vertices from the light to the eye: L light, D diffuse,
-                     G glossy (Phong), S specular (mirror, glass), E eye; . any type, [DS] one
-                     of, [^S] any but, ( ), | or, postfix * + ? (zero or more, one or more, zero
-                     or one). Every path is L.*E = L(D|G|S)*E. The algorithms marked * below
-                     honour it, the others refuse it. Examples (quote them in the shell):
-                       LE        lights seen directly        LDE      direct light on diffuse
-                       LD+E      diffuse interreflection      LS+DE    caustics
-                       L.*S.*E   paths with a specular vertex L[DG]S*E what Whitted carries
-)";
-
-PathExpression parsePathsOption(const std::string& text) {
+bool parseAlgorithmOption(const std::vector<std::string>& args, size_t& i, AlgorithmOptions& options) {
+    const std::string& a = args[i];
+    if (a.size() < 3 || a.compare(0, 2, "--") != 0) return false;
+    const AlgorithmOption* option = Registry<AlgorithmOption>::find(a.substr(2));
+    if (!option) return false;
+    const std::string& value = optionValue(args, i);
     try {
-        return PathExpression(text);
-    } catch (const PathExpressionError& e) { throw UsageError("option --paths: " + e.pointed("  ")); }
+        option->check(value);
+    } catch (const OptionError& e) { throw UsageError(e.what()); }
+    options.push_back({a.substr(2), value});
+    return true;
 }
 
-void requirePathFilter(const std::string& algo, const PathExpression& paths) {
-    if (honoursPaths(algo)) return;
-    std::string can;
-    for (const std::string& n : pathFilteredAlgorithms()) can += (can.empty() ? "" : ", ") + n;
-    throw UsageError("algorithm '" + algo + "' cannot render only the paths of an expression (--paths '" +
-                     paths.text() + "'); these can: " + (can.empty() ? std::string("none") : can));
+std::unique_ptr<Integrator> makeAlgorithm(const std::string& algo, const AlgorithmOptions& options) {
+    try {
+        return makeIntegrator(algo, options);
+    } catch (const OptionError& e) { throw UsageError(e.what()); }
+}
+
+std::string describeOptions(const AlgorithmOptions& options) {
+    std::string s;
+    for (const auto& [name, value] : options) s += (s.empty() ? "" : ", ") + ("--" + name + " '" + value + "'");
+    return s.empty() ? s : " (" + s + ")";
 }
 
 Color parseAmbient(const std::string& opt, const std::string& s) {

@@ -1,21 +1,23 @@
-// The program's commands register themselves the way integrators do (framework/integrator.h):
-// each command's file says, at namespace scope,
-//   PS_REGISTER_COMMAND(render, 10, "render SCENE [options]", "render a scene file", kUsage, true, run);
+// The program's commands register themselves the way integrators do (framework/registry.h): each
+// command's file fills a Command, field by field, and registers it at namespace scope,
+//   PS_REGISTER_COMMAND(renderCommand());
 // and main.cpp only looks the name up. `pathspace --help` and `pathspace help COMMAND` are built
-// from the same entries, so a new command is documented as soon as it exists.
+// from the same entries, so a new command is documented as soon as it exists. A command parses
+// its arguments in one function (into a struct of its options) and runs in another.
 #pragma once
+#include <memory>
 #include <ostream>
 #include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
-#include "vecmath.h"
+#include "integrator.h"
 #include "numbers.h"
-#include "path_expression.h"
+#include "registry.h"
+#include "vecmath.h"
 
 namespace ps {
 
-class Integrator;
 class Scene;
 
 struct Command {
@@ -24,20 +26,21 @@ struct Command {
     std::string synopsis;          // "render SCENE [options]"
     std::string summary;           // one line: what it does
     std::string usage;             // its options, one per line or two, ending in a newline
-    bool takesAlgorithms = false;  // its help lists the registered integrators
+    bool takesAlgorithms = false;  // it makes integrators: its help lists them and the algorithm options
     int (*run)(const std::vector<std::string>& args) = nullptr;  // exit status
 };
 
-// Adds a command; returns true. Use PS_REGISTER_COMMAND.
-bool registerCommand(const Command& command);
-// The commands, in `order`.
+// The commands (Registry<Command>), in `order`.
 std::vector<Command> commandList();
 // nullptr for a name no command has.
 const Command* findCommand(const std::string& name);
 
-#define PS_REGISTER_COMMAND(id, order, synopsis, summary, usage, takesAlgorithms, run) \
-    static const bool psCommand_##id =                                                 \
-        ::ps::registerCommand({#id, order, synopsis, summary, usage, takesAlgorithms, run})
+// In a command's .cpp at namespace scope, with a Command made field by field.
+#define PS_REGISTER_COMMAND(command)                                                                                 \
+    namespace {                                                                                                      \
+    const ::ps::Command psCommand = command;                                                                         \
+    [[maybe_unused]] const bool psCommandRegistered = ::ps::Registry<::ps::Command>::add(psCommand.name, psCommand); \
+    }
 
 // A bad command line: main prints "pathspace: MESSAGE (run 'pathspace --help' for usage)" and
 // exits with status 2. (Bad input files throw InputError instead: status 1.)
@@ -114,22 +117,22 @@ std::string stem(const std::string& path);
 std::string baseName(const std::string& path);
 std::vector<std::string> splitList(const std::string& s);
 
-// --paths EXPR (Heckbert's path expressions, framework/path_expression.h): the compiled
-// expression, else UsageError "option --paths: PROBLEM" with the expression and a caret under
-// the offending character on the next two lines.
-PathExpression parsePathsOption(const std::string& text);
-// UsageError "algorithm 'A' cannot render only the paths of an expression (--paths ...); these
-// can: ..." unless algo has a filtered form (framework/integrator.h).
-void requirePathFilter(const std::string& algo, const PathExpression& paths);
-// The help's paragraph on --paths (render, converge, pyramid share it).
-extern const char* const kPathsHelp;
+// An algorithm option (framework/integrator.h: --NAME VALUE, registered by a lesson, e.g. --paths)
+// at args[i]: appends (NAME, VALUE) to options, i moved onto the value, and returns true; its value
+// checked now (a bad one: UsageError); false if args[i] names no algorithm option.
+bool parseAlgorithmOption(const std::vector<std::string>& args, size_t& i, AlgorithmOptions& options);
+// makeIntegrator(algo, options), a bad option (OptionError) turned into a UsageError.
+std::unique_ptr<Integrator> makeAlgorithm(const std::string& algo, const AlgorithmOptions& options);
+// " (--NAME 'VALUE', ...)" for messages, "" without options.
+std::string describeOptions(const AlgorithmOptions& options);
 // --ambient A or R,G,B: Whitted's ambient radiance (lesson 11), each value finite and >= 0.
 Color parseAmbient(const std::string& opt, const std::string& s);
 
 // One line "pathspace: ALGO leaves out ..." on stderr per piece of work the integrator leaves
 // out on this scene (Integrator::leftOut).
 void printLeftOut(const std::string& algo, const Integrator& integrator, const Scene& scene);
-// "algorithms:" and one line per registered integrator: name and description.
+// "algorithms:" and one line per registered integrator: name and description (marked * where it
+// takes an algorithm option), then the algorithm options' help.
 void listAlgorithms(std::ostream& os);
 // Whether standard error is a terminal (the default of --progress).
 bool stderrIsTerminal();

@@ -165,7 +165,7 @@ std::vector<RaySet> makeRays(const Scene& s, size_t n) {
             sets[0].rays.push_back(s.camera.generateRay(Vec2(x + u.x, y + u.y)));
         }
     const Vec3 lo = s.bounds.lo, ext = s.bounds.extent();
-    auto point = [&](Rng& rng) { return lo + ext * Vec3(rng.uniform(), rng.uniform(), rng.uniform()); };
+    auto point = [&](Rng& rng) { return lo + ext * Vec3{rng.uniform(), rng.uniform(), rng.uniform()}; };
     for (size_t i = 0; i < n; ++i) {
         Rng rng = taskRng(kSeedIncoherent, 0, uint32_t(i));
         const Vec3 o = point(rng);

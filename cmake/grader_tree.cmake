@@ -70,7 +70,14 @@ foreach(L ${LESSONS})
       string(APPEND _includes " -isystem ${_d}")  # a dependency outside the system's folders (e.g. Homebrew)
     endif()
   endforeach()
+  # The compiler by its real path, unless that loses the C++ name: clang++ is a link to clang,
+  # which, called by that name, links as a C compiler (without the C++ library).
   file(REAL_PATH ${CXX} _cxx)
+  get_filename_component(_name ${CXX} NAME)
+  get_filename_component(_real ${_cxx} NAME)
+  if(_name MATCHES "[+][+]" AND NOT _real MATCHES "[+][+]")
+    set(_cxx ${CXX})
+  endif()
   string(REPLACE ";" " " _libs "${LIBS}")
   file(WRITE ${TREE}/rules/${NN}.mk
     "# Lesson ${L}: compiler and flags of the reference build (cmake/grader_tree.cmake).\n"

@@ -1,27 +1,32 @@
 # Which lessons are built from the student's files (assignments/) and which from the
-# reference (solutions/). Any mix can be built and graded:
-#   -DPATHSPACE_STUDENT=""      every lesson from solutions/ (the default when solutions/ exists)
-#   -DPATHSPACE_STUDENT=all     every lesson from assignments/ (the default in the handout)
-#   -DPATHSPACE_STUDENT="3;5"   lessons 3 and 5 from assignments/, the rest from solutions/
+# reference. Any mix can be built and graded:
+#   -DPATHSPACE_STUDENT=""      every lesson from its reference, where there is one (the default)
+#   -DPATHSPACE_STUDENT=all     every lesson from assignments/
+#   -DPATHSPACE_STUDENT="3;5"   lessons 3 and 5 from assignments/, the rest from their reference
+# A lesson's reference is solutions/NN-name/ (the lecturer's repository) or released/NN-name/ (a
+# student handout after the lecturer released that lesson's reference: scripts/handout.sh
+# --release). A lesson without one is built from assignments/ whatever PATHSPACE_STUDENT says: in
+# a handout without a release, every lesson. So `-DPATHSPACE_STUDENT=8` means the same everywhere:
+# lesson 8 yours, every other lesson the reference wherever this tree has it.
 # -DPATHSPACE_ASSIGNMENTS_DIR=DIR takes the student's files from DIR (a submission) instead of
 # assignments/.
 set(PATHSPACE_HAVE_SOLUTIONS OFF)
 if(IS_DIRECTORY ${PROJECT_SOURCE_DIR}/solutions)
   set(PATHSPACE_HAVE_SOLUTIONS ON)
-  set(_student_default "")
-else()
-  set(_student_default "all")
 endif()
-set(PATHSPACE_STUDENT "${_student_default}" CACHE STRING "lessons built from assignments/: '', 'all' or a list like '3;5'")
+set(PATHSPACE_STUDENT "" CACHE STRING "lessons built from assignments/: '', 'all' or a list like '3;5'")
 set(PATHSPACE_ASSIGNMENTS_DIR "${PROJECT_SOURCE_DIR}/assignments" CACHE PATH "where the student's lesson folders are")
-# The handout has no reference: every lesson is the student's, whatever the command line says (a
-# lesson README's `-DPATHSPACE_STUDENT=3` works in the repository and in the handout alike, and
-# nothing sticks in the cache).
-if(NOT PATHSPACE_HAVE_SOLUTIONS AND NOT PATHSPACE_STUDENT STREQUAL "all")
-  message(STATUS "pathspace: no solutions/ here (the student handout): every lesson is built from "
-                 "assignments/ (PATHSPACE_STUDENT='${PATHSPACE_STUDENT}' applies only where the reference is)")
-  set(PATHSPACE_STUDENT "all" CACHE STRING "lessons built from assignments/: '', 'all' or a list like '3;5'" FORCE)
-endif()
+
+# pathspace_lesson_reference(NAME OUT): the folder of lesson NAME's reference pieces, or "" (none here).
+function(pathspace_lesson_reference NAME OUT)
+  set(_dir "")
+  if(IS_DIRECTORY ${PROJECT_SOURCE_DIR}/solutions/${NAME})
+    set(_dir ${PROJECT_SOURCE_DIR}/solutions/${NAME})
+  elseif(IS_DIRECTORY ${PROJECT_SOURCE_DIR}/released/${NAME})
+    set(_dir ${PROJECT_SOURCE_DIR}/released/${NAME})
+  endif()
+  set(${OUT} "${_dir}" PARENT_SCOPE)
+endfunction()
 
 # The lesson folders: lessons/NN-name.
 file(GLOB _lesson_paths LIST_DIRECTORIES true ${PROJECT_SOURCE_DIR}/lessons/[0-9][0-9]-*)
@@ -33,7 +38,8 @@ foreach(_p ${_lesson_paths})
   endif()
 endforeach()
 
-# pathspace_lesson_is_student(NN OUT): TRUE if lesson NN (two digits) comes from the student.
+# pathspace_lesson_is_student(NN OUT): TRUE if lesson NN (two digits) comes from the student:
+# asked for in PATHSPACE_STUDENT, or without a reference in this tree.
 function(pathspace_lesson_is_student NN OUT)
   math(EXPR _n "${NN}")
   set(_is FALSE)
@@ -47,13 +53,24 @@ function(pathspace_lesson_is_student NN OUT)
       endif()
     endforeach()
   endif()
+  if(NOT _is)
+    file(GLOB _named LIST_DIRECTORIES true ${PROJECT_SOURCE_DIR}/lessons/${NN}-*)
+    set(_ref "")
+    foreach(_p ${_named})
+      get_filename_component(_name ${_p} NAME)
+      pathspace_lesson_reference(${_name} _ref)
+    endforeach()
+    if(NOT _ref)
+      set(_is TRUE)
+    endif()
+  endif()
   set(${OUT} ${_is} PARENT_SCOPE)
 endfunction()
 
 # pathspace_lesson_sources(NAME PIECES PLUMBING): the .cpp files of lesson NAME (e.g.
 # 01-monte-carlo). PLUMBING: the lesson's own code, lessons/NAME/*.cpp (integrator registration,
 # task loops: the same for everyone). PIECES: what the student writes, from the student's folder
-# or the reference (solutions/NAME/*.cpp), as chosen above. A file in the student's folder with
+# or the reference (solutions/NAME/*.cpp, or released/NAME/*.cpp in a handout), as chosen above. A file in the student's folder with
 # the name of a plumbing file (a submission made from an older handout) is left out: the
 # lesson's wins.
 function(pathspace_lesson_sources NAME PIECES PLUMBING)
@@ -62,9 +79,16 @@ function(pathspace_lesson_sources NAME PIECES PLUMBING)
   if(_student)
     set(_dir ${PATHSPACE_ASSIGNMENTS_DIR}/${NAME})
     set(_from "student (${_dir})")
+    pathspace_lesson_reference(${NAME} _ref)
+    if(NOT _ref)
+      set(_from "student, no reference here (${_dir})")
+    endif()
   else()
-    set(_dir ${PROJECT_SOURCE_DIR}/solutions/${NAME})
+    pathspace_lesson_reference(${NAME} _dir)
     set(_from "reference")
+    if(NOT PATHSPACE_HAVE_SOLUTIONS)
+      set(_from "released reference (${_dir})")
+    endif()
   endif()
   file(GLOB _files CONFIGURE_DEPENDS ${_dir}/*.cpp)
   if(NOT _files)

@@ -2,9 +2,8 @@
 
 namespace ps {
 
-Camera::Camera(const Vec3& eye, const Vec3& target, const Vec3& up, float fovY, int width, int height, float lensRadius,
-               float focusDistance)
-    : eye_(eye), width_(width), height_(height), lensRadius_(lensRadius), focus_(focusDistance) {
+Camera::Camera(const Vec3& eye, const Vec3& target, const Vec3& up, float fovY, int width, int height)
+    : eye_(eye), width_(width), height_(height) {
     forward_ = glm::normalize(target - eye);
     right_ = glm::normalize(glm::cross(forward_, up));
     up_ = glm::cross(right_, forward_);
@@ -43,41 +42,6 @@ float Camera::pdfDirection(const Vec3& dir) const {
     if (!(cosTheta > 0.0f) || !rasterOf(dir, forward_, right_, up_, tanHalfX_, tanHalfY_, width_, height_, raster))
         return 0.0f;
     return 1.0f / (imagePlaneArea() * cosTheta * cosTheta * cosTheta);
-}
-
-// Camera::lensPoint, pdfLens, lensRay, lensRasterOfDirection, lensWe and lensPdfDirection (the
-// thin lens) are lesson 11's pieces: solutions/11-classics/thinlens.cpp.
-
-bool Camera::hitLens(const Ray& ray, float& t, Vec3& z) const {
-    if (isPinhole()) return false;
-    const float cosD = glm::dot(ray.d, forward_);
-    if (!(cosD < 0.0f)) return false;
-    const float tHit = glm::dot(eye_ - ray.o, forward_) / cosD;
-    if (!(tHit > 0.0f && tHit < ray.tMax)) return false;
-    // The offset from the lens centre, projected into the lens plane (rounding leaves a little
-    // of it along forward_).
-    Vec3 q = (ray.o + tHit * ray.d) - eye_;
-    q -= glm::dot(q, forward_) * forward_;
-    if (!(glm::dot(q, q) <= lensRadius_ * lensRadius_)) return false;
-    t = tHit;
-    z = eye_ + q;
-    return true;
-}
-
-namespace {
-Camera::LensRays gLensRays = nullptr;  // set once at start-up by lesson 11's plumbing
-}
-
-bool Camera::setLensRays(LensRays rays) {
-    gLensRays = rays;
-    return true;
-}
-
-bool Camera::lensRaysAvailable() { return gLensRays != nullptr; }
-
-Ray Camera::sampleRay(const Vec2& raster, const Vec2& uLens) const {
-    if (isPinhole() || gLensRays == nullptr) return generateRay(raster);  // render() refuses the second case
-    return gLensRays(*this, raster, uLens);
 }
 
 }  // namespace ps

@@ -13,4 +13,11 @@ public:
         : std::runtime_error(file + (line > 0 ? ":" + std::to_string(line) : std::string()) + ": " + problem) {}
 };
 
+// A bad value of a command-line option that a lesson gives its meaning (an algorithm option,
+// integrator.h): the program prints it and exits with status 2, as for any bad command line.
+class OptionError : public std::runtime_error {
+public:
+    explicit OptionError(const std::string& msg) : std::runtime_error(msg) {}
+};
+
 }  // namespace ps

@@ -72,8 +72,9 @@ private:
 };
 
 // Where a light path's contributions go: one task's list of the iteration's splat buffer
-// (framework/tasks.h), with the factor 1/N of the N light paths of the iteration (lesson 5,
-// Eq. 5.4). Without a buffer the splats are dropped (scale still says 1/N).
+// (framework/tasks.h), with the factor 1/N of the N light paths of the iteration (each light
+// path is one estimate of the whole image). Without a buffer the splats are dropped (scale still
+// says 1/N).
 struct SplatTarget {
     SplatBuffer* buffer = nullptr;
     size_t task = 0;

@@ -1,7 +1,5 @@
 #include "integrator.h"
 #include "errors.h"
-#include <algorithm>
-#include <map>
 #include "eyelight.h"
 #include "tasks.h"
 
@@ -15,76 +13,59 @@ void PixelIntegrator::renderIteration(const Scene& scene, uint32_t iteration, ui
     });
 }
 
-namespace {
-// The framework's own integrators, then whatever the lessons register during static
-// initialisation (lesson code is linked as object files, so its registrations are kept).
-std::vector<IntegratorInfo>& registry() {
-    static std::vector<IntegratorInfo> list = {
-        {"eyelight", "reflectance times |cos| between the normal and the eye ray at the first hit",
-         [] { return std::unique_ptr<Integrator>(std::make_unique<EyeLight>()); }},
-        {"normals", "the surface normal at the first hit, mapped to colours (n + 1) / 2",
-         [] { return std::unique_ptr<Integrator>(std::make_unique<NormalView>()); }},
-    };
-    return list;
-}
-}  // namespace
-
-bool registerIntegrator(const IntegratorInfo& info) {
-    registry().push_back(info);
-    return true;
-}
+// The framework's own integrators (this file is linked into every program that makes one).
+PS_REGISTER_INTEGRATOR(EyeLight, "eyelight",
+                       "reflectance times |cos| between the normal and the eye ray at the first hit");
+PS_REGISTER_INTEGRATOR(NormalView, "normals", "the surface normal at the first hit, mapped to colours (n + 1) / 2");
 
 std::vector<IntegratorInfo> integratorList() {
-    std::vector<IntegratorInfo> list = registry();
-    std::sort(list.begin(), list.end(), [](const auto& a, const auto& b) { return a.name < b.name; });
+    std::vector<IntegratorInfo> list;
+    for (const auto& e : Registry<IntegratorInfo>::sorted()) list.push_back(e.value);
     return list;
 }
 
 std::unique_ptr<Integrator> makeIntegrator(const std::string& name) {
-    for (const IntegratorInfo& i : registry())
-        if (i.name == name) {
-            std::unique_ptr<Integrator> made = i.make();
-            made->name = name;
-            return made;
-        }
-    std::string known;
-    for (const auto& i : integratorList()) known += (known.empty() ? "" : ", ") + i.name;
-    throw InputError("unknown algorithm '" + name + "' (known: " + known + ")");
+    const IntegratorInfo* info = Registry<IntegratorInfo>::find(name);
+    if (!info) throw InputError("unknown algorithm '" + name + "' (known: " + Registry<IntegratorInfo>::names() + ")");
+    std::unique_ptr<Integrator> made = info->make();
+    made->name = name;
+    made->caps = info->caps;
+    return made;
 }
 
-namespace {
-std::map<std::string, PathFilteredMaker>& pathFilters() {
-    static std::map<std::string, PathFilteredMaker> filters;
-    return filters;
-}
-}  // namespace
-
-bool registerPathFilter(const std::string& name, PathFilteredMaker make) {
-    pathFilters()[name] = make;
-    return true;
-}
-
-std::vector<std::string> pathFilteredAlgorithms() {
+std::vector<std::string> algorithmOptionNames() {
     std::vector<std::string> names;
-    for (const auto& [name, make] : pathFilters()) names.push_back(name);
+    for (const auto& e : Registry<AlgorithmOption>::sorted()) names.push_back(e.name);
     return names;
 }
 
-bool honoursPaths(const std::string& name) { return pathFilters().count(name) > 0; }
+bool takesAlgorithmOption(const std::string& algo) {
+    for (const auto& e : Registry<AlgorithmOption>::sorted())
+        for (const std::string& a : e.value.algorithms())
+            if (a == algo) return true;
+    return false;
+}
 
-std::unique_ptr<Integrator> makeIntegrator(const std::string& name, const PathExpression* paths) {
-    if (!paths) return makeIntegrator(name);
-    const auto it = pathFilters().find(name);
-    if (it != pathFilters().end()) {
-        std::unique_ptr<Integrator> made = it->second(*paths);
-        made->name = name;
-        return made;
+std::unique_ptr<Integrator> makeIntegrator(const std::string& name, const AlgorithmOptions& options) {
+    std::unique_ptr<Integrator> plain = makeIntegrator(name);  // an unknown name says so first
+    if (options.empty()) return plain;
+    if (options.size() > 1)
+        throw OptionError("algorithm options cannot be combined (--" + options[0].first + " and --" + options[1].first +
+                          ")");
+    const auto& [option, value] = options[0];
+    const AlgorithmOption* o = Registry<AlgorithmOption>::find(option);
+    if (!o) throw OptionError("unknown algorithm option '--" + option + "'");
+    o->check(value);
+    std::unique_ptr<Integrator> made = o->make(name, value);
+    if (!made) {
+        std::string can;
+        for (const std::string& a : o->algorithms()) can += (can.empty() ? "" : ", ") + a;
+        throw OptionError("algorithm '" + name + "' does not take --" + option + " (" + o->valueName + " '" + value +
+                          "'); these do: " + (can.empty() ? std::string("none") : can));
     }
-    makeIntegrator(name);  // an unknown name says so first
-    std::string can;
-    for (const std::string& n : pathFilteredAlgorithms()) can += (can.empty() ? "" : ", ") + n;
-    throw InputError("algorithm '" + name + "' cannot render only the paths of an expression (--paths '" +
-                     paths->text() + "'); these can: " + (can.empty() ? std::string("none") : can));
+    made->name = name;
+    made->caps = plain->caps;  // the algorithm's, whatever form the option gave it
+    return made;
 }
 
 }  // namespace ps

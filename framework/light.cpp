@@ -35,12 +35,16 @@ Color emittedRadiance(const Light& light, const Vec3& n, const Vec3& w) {
     return glm::dot(n, w) > 0.0f ? light.Le : Color(0.0f);
 }
 
-float pdfLightArea(const Scene& scene, int l) {
+LightPdf pdfLight(const Scene& scene, int l) {
     const Light& light = scene.lights[l];
-    return light.kind == LightKind::Area && light.area > 0.0f ? 1.0f / light.area : 0.0f;
+    LightPdf p;
+    switch (light.kind) {
+    case LightKind::Area: p.pdfA = light.area > 0.0f ? 1.0f / light.area : 0.0f; break;
+    case LightKind::Point: p.pdfA = 1.0f; break;
+    case LightKind::Background: p.pdfW = uniformSpherePdf(); break;
+    }
+    return p;
 }
-
-float pdfBackgroundDirection() { return uniformSpherePdf(); }
 
 LightSample sampleLight(const Scene& scene, int l, const Vec3& ref, const Vec2& u) {
     const Light& light = scene.lights[l];
@@ -52,7 +56,7 @@ LightSample sampleLight(const Scene& scene, int l, const Vec3& ref, const Vec2& 
         s.dist = glm::length(d);
         s.wi = d / s.dist;
         s.Le = emittedRadiance(light, s.n, -s.wi);
-        s.pdf = pdfLightArea(scene, l);
+        s.pdfA = pdfLight(scene, l).pdfA;
         break;
     }
     case LightKind::Point: {
@@ -61,14 +65,14 @@ LightSample sampleLight(const Scene& scene, int l, const Vec3& ref, const Vec2& 
         s.dist = glm::length(d);
         s.wi = d / s.dist;
         s.Le = light.Le;
-        s.pdf = 1.0f;
+        s.pdfA = pdfLight(scene, l).pdfA;
         break;
     }
     case LightKind::Background:
         s.wi = sampleUniformSphere(u);
         s.dist = kInf;
         s.Le = light.Le;
-        s.pdf = uniformSpherePdf();
+        s.pdfW = pdfLight(scene, l).pdfW;
         break;
     }
     return s;
@@ -82,7 +86,7 @@ EmissionSample sampleEmission(const Scene& scene, int l, const Vec2& uPos, const
         sampleAreaPoint(scene, light, uPos, e.p, e.n);
         const Vec3 local = sampleCosineHemisphere(cosineWarpU(uDir));  // never the rim
         e.dir = Frame(e.n).toWorld(local);
-        e.pdfA = pdfLightArea(scene, l);
+        e.pdfA = pdfLight(scene, l).pdfA;
         e.pdfW = cosineHemispherePdf(local);
         e.Le = light.Le;
         break;
@@ -117,7 +121,7 @@ EmissionPdf pdfEmission(const Scene& scene, int l, const Vec3& n, const Vec3& di
     EmissionPdf p;
     switch (light.kind) {
     case LightKind::Area:
-        p.pdfA = pdfLightArea(scene, l);
+        p.pdfA = pdfLight(scene, l).pdfA;
         p.pdfW = std::max(0.0f, glm::dot(n, dir)) * kInvPi;
         break;
     case LightKind::Point:
@@ -126,7 +130,7 @@ EmissionPdf pdfEmission(const Scene& scene, int l, const Vec3& n, const Vec3& di
         break;
     case LightKind::Background:
         p.pdfA = 1.0f / (kPi * scene.radius * scene.radius);
-        p.pdfW = pdfBackgroundDirection();
+        p.pdfW = pdfLight(scene, l).pdfW;
         break;
     }
     return p;

@@ -32,25 +32,30 @@ struct Light {
     bool isInfinite() const { return kind == LightKind::Background; }
 };
 
-// A point on a light, sampled for a reference point ref (next-event estimation).
+// A point on a light, sampled for a reference point ref (next-event estimation), with the
+// densities it was sampled with, each in its own measure (the other one 0):
 struct LightSample {
     Vec3 p;             // point on the light (point light: its position; background: unused)
     Vec3 n;             // normal at p (area lights)
     Vec3 wi;            // unit direction from ref towards the light
     float dist = kInf;  // distance from ref to p (background: infinite)
     Color Le;           // radiance leaving p towards ref; point light: intensity
-    float pdf = 0.0f;   // area light: pdf per unit AREA at p; background: per unit SOLID ANGLE;
-                        // point light: 1 (the probability of the delta position)
+    float pdfA = 0.0f;  // per unit AREA at p: an area light's (uniform by area); a point light's 1,
+                        // the coefficient of its delta position; 0 for the background (no point)
+    float pdfW = 0.0f;  // per unit SOLID ANGLE of wi: the background's; 0 for the others (theirs
+                        // is pdfA, converted at ref)
 };
 
 // Samples a point on light `l` for the reference point ref; u uniform in [0,1)^2.
 LightSample sampleLight(const Scene& scene, int l, const Vec3& ref, const Vec2& u);
 
-// Area pdf with which sampleLight picks a given point of an area light (uniform by area).
-float pdfLightArea(const Scene& scene, int l);
-
-// Solid-angle pdf with which sampleLight picks direction w of the background.
-float pdfBackgroundDirection();
+// The densities with which sampleLight picks a point (pdfA) or a direction (pdfW) of light l:
+// LightSample's two fields, for any point or direction of the light (they do not depend on it).
+struct LightPdf {
+    float pdfA = 0.0f;
+    float pdfW = 0.0f;
+};
+LightPdf pdfLight(const Scene& scene, int l);
 
 // Radiance an area light emits from a point with normal n in direction w (one-sided).
 Color emittedRadiance(const Light& light, const Vec3& n, const Vec3& w);
@@ -69,7 +74,7 @@ EmissionSample sampleEmission(const Scene& scene, int l, const Vec2& uPos, const
 // The densities sampleEmission samples with (its pdfA and pdfW), for light l, an origin with
 // normal n and the unit direction dir: area light pdfA = 1 / area, pdfW = max(0, dot(n, dir)) / pi;
 // point light 1 (a delta position) and 1 / (4 pi); background pdfA = 1 / (pi R^2) (the disk of
-// radius R = scene.radius facing dir) and pdfW = pdfBackgroundDirection(). Without the
+// radius R = scene.radius facing dir) and pdfW = 1 / (4 pi), as pdfLight's. Without the
 // light-selection probability (Scene::lightSelectionProb). pdfA does not depend on n or dir.
 struct EmissionPdf {
     float pdfA = 0.0f;

@@ -3,7 +3,7 @@
 //   relMSE = mean of (x - r)^2 / (r^2 + eps), eps = 0.01
 //   relMSE without the largest 0.1 % of its terms (reported beside relMSE, never instead).
 // A comparison may leave some pixels out (a point light seen directly, which some algorithms
-// cannot sample: app/report/converge.h); the means are then over the other pixels.
+// cannot sample: report/converge.h); the means are then over the other pixels.
 #pragma once
 #include <vector>
 #include "image.h"

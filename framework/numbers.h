@@ -18,7 +18,7 @@
 namespace ps {
 
 // The strtod road, compiled everywhere so that the tests can compare it with std::from_chars.
-// (It differs only below the smallest normal float, where from_chars may say out of range.)
+// (It differs only below the smallest normal number, where from_chars may say out of range.)
 template <class T>
 std::errc parseFloatWithStrtod(const std::string& s, T& v) {
     static_assert(std::is_floating_point_v<T>, "floats only");
@@ -29,14 +29,13 @@ std::errc parseFloatWithStrtod(const std::string& s, T& v) {
         return std::errc::invalid_argument;  // strtod reads hexadecimal, from_chars (general) does not
     char* end = nullptr;
     errno = 0;
-    const double d = std::strtod(s.c_str(), &end);
+    // strtof for a float: rounded once, as from_chars does (strtod and then float could round twice).
+    T x{};
+    if constexpr (std::is_same_v<T, float>) x = std::strtof(s.c_str(), &end);
+    else x = static_cast<T>(std::strtod(s.c_str(), &end));
     if (end != s.c_str() + s.size()) return std::errc::invalid_argument;
-    if (errno == ERANGE && (d == HUGE_VAL || d == -HUGE_VAL)) return std::errc::result_out_of_range;
-    if constexpr (std::is_same_v<T, float>) {
-        const double big = static_cast<double>(std::numeric_limits<float>::max());
-        if (std::isfinite(d) && (d > big || d < -big)) return std::errc::result_out_of_range;
-    }
-    v = static_cast<T>(d);
+    if (errno == ERANGE && std::isinf(x)) return std::errc::result_out_of_range;
+    v = x;
     return std::errc();
 }
 

@@ -27,26 +27,23 @@ void drawProgress(int done, int total, double seconds, double budget) {
 
 void checkCamera(const Scene& scene, const Integrator& integrator) {
     const Camera& camera = scene.camera;
-    if (camera.isPinhole()) return;
+    if (camera.isPinhole() || integrator.caps.cameraModels) return;
     const std::string algo = integrator.name.empty() ? "this algorithm" : "'" + integrator.name + "'";
-    if (!integrator.rendersThinLens()) {
-        std::string can;
-        for (const IntegratorInfo& info : integratorList())
-            if (info.make()->rendersThinLens()) can += (can.empty() ? "" : ", ") + info.name;
-        char radius[32];
-        std::snprintf(radius, sizeof radius, "%g", double(camera.lensRadius()));
-        throw InputError(scene.path, camera.line,
-                         std::string("the camera has a thin lens (lens ") + radius + "), which " + algo +
-                             " cannot render (it assumes a pinhole camera); these can: " + can);
-    }
-    if (!Camera::lensRaysAvailable())
-        throw InputError(scene.path, camera.line,
-                         "the camera has a thin lens, but this program was built without lesson 11, whose "
-                         "pieces make its rays");
+    std::string can;
+    for (const IntegratorInfo& info : integratorList())
+        if (info.caps.cameraModels) can += (can.empty() ? "" : ", ") + info.name;
+    throw InputError(scene.path, camera.line,
+                     "the camera has a camera model (" + camera.model()->describe() + "), which " + algo +
+                         " cannot render (it assumes a pinhole camera); these can: " + can);
+}
+
+void checkScene(const Scene& scene, const Integrator& integrator) {
+    if (integrator.caps.checkScene) integrator.caps.checkScene(scene);
+    checkCamera(scene, integrator);
 }
 
 RenderResult render(const Scene& scene, Integrator& integrator, const RenderOptions& opt) {
-    integrator.checkScene(scene);
+    checkScene(scene, integrator);
     if (opt.threads > 0) omp_set_num_threads(opt.threads);
         // Rays traced before this render (by any thread) are not this render's: discard their count.
 #pragma omp parallel
@@ -57,7 +54,6 @@ RenderResult render(const Scene& scene, Integrator& integrator, const RenderOpti
 
     double elapsed = 0.0, lastDraw = -1.0;
     int lastCheckpoint = 0;
-    checkCamera(scene, integrator);
     auto t0 = Clock::now();
     integrator.prepare(scene);
     elapsed += std::chrono::duration<double>(Clock::now() - t0).count();
@@ -70,7 +66,7 @@ RenderResult render(const Scene& scene, Integrator& integrator, const RenderOpti
         t0 = Clock::now();
         std::fill(iterImage.pixels.begin(), iterImage.pixels.end(), Color(0.0f));
         integrator.renderIteration(scene, static_cast<uint32_t>(it), opt.seed, iterImage, res.stats);
-        if (integrator.latestIterationIsImage()) res.film = Film(res.film.width(), res.film.height());
+        if (integrator.caps.latestIterationIsImage) res.film = Film(res.film.width(), res.film.height());
         res.film.addIteration(iterImage);
         elapsed += std::chrono::duration<double>(Clock::now() - t0).count();
         res.iterations = it + 1;

@@ -32,9 +32,12 @@ struct RenderResult {
 // CSV header of the error log: one row per iteration.
 extern const char* const kErrorCsvHeader;
 
-// Throws InputError when the scene's camera has a thin lens and the integrator cannot render
-// one (Integrator::rendersThinLens), or the program lacks lesson 11's lens; render() calls it first.
+// Throws InputError when the scene's camera has a camera model and the integrator cannot render
+// one (IntegratorCaps::cameraModels), naming those that can.
 void checkCamera(const Scene& scene, const Integrator& integrator);
+// The integrator's own check of the scene (IntegratorCaps::checkScene), then checkCamera: whether
+// it can render the scene at all. render() calls it first; commands call it before they print.
+void checkScene(const Scene& scene, const Integrator& integrator);
 
 RenderResult render(const Scene& scene, Integrator& integrator, const RenderOptions& opt);
 

@@ -5,7 +5,7 @@
 #include <cstdint>
 #include "vecmath.h"
 
-// A branch the hot loop almost never takes (the path tracer's numbers are replayed only by lesson 9).
+// A branch the hot loop almost never takes (numbers are replayed only by a Metropolis sampler).
 #if defined(__GNUC__) || defined(__clang__)
 #define PS_UNLIKELY(x) __builtin_expect(!!(x), 0)
 #else
@@ -22,9 +22,8 @@ inline uint64_t mix64(uint64_t x) {
     return x ^ (x >> 31);
 }
 
-// Where an Rng's uniform() takes its numbers from instead of its own generator: lesson 9's
-// Metropolis sampler replays a vector of primary samples through the unchanged path tracer
-// (lessons/09-metropolis/pssmlt.h, PrimarySamples).
+// Where an Rng's uniform() takes its numbers from instead of its own generator: a Metropolis
+// sampler replays a vector of primary samples through an unchanged path tracer.
 class UniformSource {
 public:
     virtual float next() = 0;  // the next number in [0, 1)

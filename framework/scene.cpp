@@ -33,7 +33,7 @@ std::string Capabilities::describe() const {
     list({{areaLights, "area"}, {pointLights, "point"}, {backgroundLight, "background"}});
     os << " bsdfs=";
     list({{diffuse, "diffuse"}, {glossy, "phong"}, {mirror, "mirror"}, {dielectric, "dielectric"}});
-    os << " camera=" << (pinholeCamera ? "pinhole" : "lens");
+    os << " camera=" << cameraModel;
     if (unsampleablePaths()) os << " (has L S+ E paths no technique samples)";
     return os.str();
 }
@@ -125,6 +125,11 @@ void Scene::finalize() {
         }
     }
     caps.pinholeCamera = camera.isPinhole();
+    caps.cameraModel = "pinhole";
+    if (const CameraModel* m = camera.model()) {
+        const std::string d = m->describe();
+        caps.cameraModel = d.substr(0, d.find(' '));
+    }
 }
 
 // A point light within 2^-17 of its coordinates' magnitude (64 float ulps) of a triangle's plane,

@@ -29,7 +29,7 @@ struct RenderSettings {
     int maxDepth = 8;  // maximum number of bounces; 0 = only emission seen directly
     std::string algo = "eyelight";
     int algoLine = 0;  // the scene file line that set algo (for messages), 0 if none
-    // Lesson 11's radiosity (no other integrator reads these): each quad is cut into
+    // For radiosity (no other integrator reads these): each quad is cut into
     // elements[0] x elements[1] elements (along its edges 1-2 and 1-4), and every iteration
     // makes `shots` shooting steps.
     int elements[2] = {8, 8};
@@ -37,12 +37,9 @@ struct RenderSettings {
     // Integrators leave out work the capabilities show cannot contribute (Integrator::leftOut);
     // false (`--no-prune`) makes them do all of it, to check that pruning changes nothing.
     bool prune = true;
-    // Whitted's ambient radiance (lesson 11, `whitted` only): light no path carries, added at every
+    // Whitted's ambient radiance (`whitted` only): light no path carries, added at every
     // non-specular surface it shades as ambient times the albedo. 0: none.
     Color ambient = Color(0.0f);
-    // The most memory a learned guiding field may take, in bytes (lesson 12's pt-guided and
-    // pt-guided-adrrs, `--guide-budget MB`). 0: the integrator's default.
-    size_t guideBudget = 0;
 };
 
 // What a scene has, recorded at load time so integrators can leave out what it does not need.
@@ -50,6 +47,7 @@ struct Capabilities {
     bool areaLights = false, pointLights = false, backgroundLight = false;
     bool diffuse = false, glossy = false, mirror = false, dielectric = false;
     bool pinholeCamera = true;
+    std::string cameraModel = "pinhole";  // the camera model's keyword (CameraModel::describe's first word)
     bool hasLights() const { return areaLights || pointLights || backgroundLight; }
     bool hasDeltaBSDF() const { return mirror || dielectric; }
     bool hasNonDeltaBSDF() const { return diffuse || glossy; }
@@ -62,8 +60,8 @@ struct Capabilities {
 
 // A quad of the scene file as it was written: its corners (counter-clockwise seen from the side
 // its normal points to) and its two triangles, prims[prim] = corners (1, 2, 3) and
-// prims[prim + 1] = (1, 3, 4). Nothing renders from it (the triangles are the geometry); lesson
-// 11's radiosity makes its patches from the quads.
+// prims[prim + 1] = (1, 3, 4). Nothing renders from it (the triangles are the geometry); radiosity
+// makes its patches from the quads.
 struct Quad {
     Vec3 corners[4];
     uint32_t prim = 0;  // the first of its two primitives

@@ -5,6 +5,9 @@
 #include <fstream>
 #include <map>
 #include <sstream>
+#ifdef PATHSPACE_TINYOBJLOADER_FROM_HEADER  // framework/CMakeLists.txt: a libc++ build
+#define TINYOBJLOADER_IMPLEMENTATION
+#endif
 #include <tiny_obj_loader.h>
 #include "errors.h"
 #include "numbers.h"
@@ -214,8 +217,11 @@ private:
 
     void camera(Statement& st) {
         if (haveCamera_) st.fail("a second 'camera': a scene has one camera");
-        st.readOptions(
-            {{"eye", 3}, {"target", 3}, {"up", 3}, {"fov", 1}, {"resolution", 2}, {"lens", 1}, {"focus", 1}});
+        // The pinhole's keywords, and those of every registered camera model (camera.h).
+        std::map<std::string, int> arity = {{"eye", 3}, {"target", 3}, {"up", 3}, {"fov", 1}, {"resolution", 2}};
+        for (const auto& model : Registry<CameraModelType>::inOrder())
+            for (const auto& [key, n] : model.value.keywords) arity[key] = n;
+        st.readOptions(arity);
         for (const char* key : {"eye", "target", "fov", "resolution"}) st.require(key);
         const Vec3 eye = st.optVec3("eye", Vec3()), target = st.optVec3("target", Vec3());
         const Vec3 up = st.optVec3("up", Vec3(0, 1, 0));
@@ -231,19 +237,23 @@ private:
         const Vec3 f = glm::normalize(target - eye);
         if (!(glm::length(glm::cross(f, up)) > 1e-6f * glm::length(up)))
             st.fail("'up' is parallel to the view direction");
-        // The thin lens (lesson 11): radius 0 is the pinhole; the plane of focus defaults to the
-        // target's distance. pi r^2 and its inverse must be normal floats (W_e divides by it).
-        const float lens = st.optNumber("lens", 0.0f);
-        if (lens < 0.0f) st.fail("'lens' (the lens radius) must not be negative, got " + st.options.at("lens")[0]);
-        if (lens > 0.0f && !(std::isnormal(kPi * lens * lens) && std::isnormal(1.0f / (kPi * lens * lens))))
-            st.fail("'lens' radius " + st.options.at("lens")[0] +
-                    ": pi r^2 or its inverse leaves float's normal range (scale the scene's units)");
-        if (st.has("focus") && !st.has("lens"))
-            st.fail("'focus' without 'lens RADIUS': a pinhole is sharp at every distance");
-        const float focus = st.optNumber("focus", glm::length(target - eye));
-        if (!(focus > 0.0f && std::isfinite(focus)))
-            st.fail("'focus' (the distance of the plane of focus) must be positive and finite");
-        scene_.camera = Camera(eye, target, up, fov, w, h, lens, focus);
+        scene_.camera = Camera(eye, target, up, fov, w, h);
+        // A camera model: the one whose keywords the line has (none: the pinhole).
+        CameraModelArgs args;
+        args.targetDistance = glm::length(target - eye);
+        args.has = [&](const std::string& key) { return st.has(key); };
+        args.number = [&](const std::string& key, float def) { return st.optNumber(key, def); };
+        args.text = [&](const std::string& key) { return st.has(key) ? st.options.at(key)[0] : std::string(); };
+        args.fail = [&](const std::string& problem) { st.fail(problem); };
+        std::string selected;
+        for (const auto& model : Registry<CameraModelType>::inOrder()) {
+            bool given = false;
+            for (const auto& kw : model.value.keywords) given = given || st.has(kw.first);
+            if (!given) continue;
+            if (!selected.empty()) st.fail("two camera models: '" + selected + "' and '" + model.name + "'");
+            selected = model.name;
+            scene_.camera.setModel(model.value.make(scene_.camera, args));
+        }
         scene_.camera.line = st.line;
         haveCamera_ = true;
     }

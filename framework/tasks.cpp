@@ -5,8 +5,8 @@
 
 namespace ps {
 
-void runTasks(int items, uint64_t seed, uint32_t iteration, SplatBuffer* splats, float splatScale, SampleStats& stats,
-              const TaskItem& item) {
+void runTasks(const TaskLoop& loop, SampleStats& stats, const TaskItem& item) {
+    const int items = loop.items;
     const int tasks = taskCount(items);
     std::vector<SampleStats> taskStats(static_cast<size_t>(tasks));
     uint64_t rays = 0;
@@ -17,10 +17,10 @@ void runTasks(int items, uint64_t seed, uint32_t iteration, SplatBuffer* splats,
         for (int t = 0; t < tasks; ++t) {
             Task task;
             task.index = static_cast<size_t>(t);
-            task.splat = SplatTarget{splats, task.index, &task.stats, splatScale};
+            task.splat = SplatTarget{loop.splats, task.index, &task.stats, loop.splatScale};
             const int end = std::min(items, (t + 1) * kItemsPerTask);
             for (int i = t * kItemsPerTask; i < end; ++i) {
-                Rng rng = taskRng(seed, iteration, static_cast<uint32_t>(i));
+                Rng rng = taskRng(loop.seed, loop.iteration, static_cast<uint32_t>(i));
                 item(i, rng, task);
             }
             task.stats.rays += takeRayCount();
@@ -35,10 +35,12 @@ void renderPixelTasks(uint64_t seed, uint32_t iteration, Image& out, SampleStats
                       const PixelSample& sample) {
     const int pixels = out.width * out.height;
     SplatBuffer splats(out.width, out.height, splatting ? static_cast<size_t>(taskCount(pixels)) : 0);
-    runTasks(pixels, seed, iteration, splatting ? &splats : nullptr, 1.0f / static_cast<float>(pixels), stats,
-             [&](int pixel, Rng& rng, Task& task) {
-                 out.pixels[size_t(pixel)] = checkSample(sample(pixel, rng, task), task.stats);
-             });
+    TaskLoop loop(pixels, seed, iteration);
+    loop.splats = splatting ? &splats : nullptr;
+    loop.splatScale = 1.0f / static_cast<float>(pixels);
+    runTasks(loop, stats, [&](int pixel, Rng& rng, Task& task) {
+        out.pixels[size_t(pixel)] = checkSample(sample(pixel, rng, task), task.stats);
+    });
     splats.resolve(out);
 }
 
@@ -46,7 +48,10 @@ void renderLightPathTasks(uint64_t seed, uint32_t iteration, Image& out, SampleS
                           const LightPathSample& path) {
     const int paths = out.width * out.height;
     SplatBuffer splats(out.width, out.height, static_cast<size_t>(taskCount(paths)));
-    runTasks(paths, seed, iteration, &splats, 1.0f / static_cast<float>(paths), stats, path);
+    TaskLoop loop(paths, seed, iteration);
+    loop.splats = &splats;
+    loop.splatScale = 1.0f / static_cast<float>(paths);
+    runTasks(loop, stats, path);
     splats.resolve(out);
 }
 

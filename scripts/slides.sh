@@ -35,20 +35,7 @@ if ! command -v node >/dev/null 2>&1 || ! command -v npm >/dev/null 2>&1; then
   echo "slides: node (>= 18) and npm are needed; on Debian 12: apt-get install nodejs npm" >&2; exit 1
 fi
 if [ -z "${CHROME_PATH:-}" ]; then
-  if ! command -v chromium >/dev/null 2>&1; then
-    line="apt-get install -y --no-install-recommends chromium"
-    if [ "$(id -u)" -eq 0 ]; then
-      echo "slides: installing chromium" >&2
-      apt-get update -qq && DEBIAN_FRONTEND=noninteractive $line >/dev/null
-    elif command -v sudo >/dev/null 2>&1; then
-      echo "slides: installing chromium (sudo)" >&2
-      sudo apt-get update -qq && sudo DEBIAN_FRONTEND=noninteractive $line >/dev/null
-    else
-      echo "slides: chromium is missing; run as root:  apt-get update && $line" >&2
-      echo "        (or set CHROME_PATH to a Chrome/Chromium binary)" >&2
-      exit 1
-    fi
-  fi
+  bash scripts/deps.sh chromium   # apt-get as root or through sudo, else the line to run
   CHROME_PATH="$(command -v chromium)"
 fi
 export CHROME_PATH

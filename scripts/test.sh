@@ -6,11 +6,14 @@ cd "$(dirname "$0")/.."
 phases="" t0=$SECONDS
 phase() { phases+="$(printf '  %-34s %4d s' "$1" $((SECONDS - t0)))"$'\n'; t0=$SECONDS; }
 bash scripts/deps.sh
-# Fast checks first (seconds): the mutation catalogues still apply to solutions/, and the code is
-# formatted as .clang-format says (clang-format 14, Debian 12's; skipped with a note without it).
+# Fast checks first (seconds): the mutation catalogues still apply to solutions/, the code is
+# formatted as .clang-format says (clang-format 14, Debian 12's; skipped with a note without it),
+# and the include graph keeps the layering: no lesson includes a later one, framework/, app/ and
+# report/ include no lesson (scripts/check-includes.sh).
 bash scripts/mutants.sh --check
 bash scripts/check-format.sh
-phase "packages, mutants --check, format"
+bash scripts/check-includes.sh
+phase "packages, mutants --check, format, includes"
 # ccache (scripts/deps.sh installs it) lets the handout build below reuse this build's objects:
 # the framework and the tests compile the same in both trees. Without it, both compile in full.
 launcher=()

@@ -238,7 +238,10 @@ Svg cosineWarp() {
     std::vector<P> disk;
     const int n = 10;
     for (int i = 0; i < n; ++i)
-        for (int j = 0; j < n; ++j) disk.push_back(concentric((i + rng.next()) / n, (j + rng.next()) / n));
+        for (int j = 0; j < n; ++j) {
+            const double ux = rng.next(), uy = rng.next();  // in this order (a call's arguments have none)
+            disk.push_back(concentric((i + ux) / n, (j + uy) / n));
+        }
     for (P d : disk) s.dot(c + R * P{d.x, -d.y}, kCamera, 3.5);
     s.text({c.x, 420}, "uniform points on the unit disk", "middle", 20);
     s.text({c.x, 448}, "(stratified, concentric map)", "middle", 18, kGrey);
@@ -956,48 +959,41 @@ struct FamilyNode {
     const char* paths;
     const char* note;
 };
+// The family tree is shown on a lecture slide 470 pixels high: its text is 27 to 33 units in a
+// 1000 x 662 drawing, 19 to 23 pixels there (it was 18 to 22 units in 1000 x 720: 12 to 14 pixels).
+constexpr double kFamilyBoxHeight = 118;
 void familyBox(Svg& s, const FamilyNode& n) {
-    const double h = 96, l = n.centre.x - n.width / 2, t = n.centre.y - h / 2;
+    const double h = kFamilyBoxHeight, l = n.centre.x - n.width / 2, t = n.centre.y - h / 2;
     s.rect({l, t}, {l + n.width, t + h}, "#f4f4f4", kInk, 1, 2);
-    s.text({n.centre.x, t + 27}, n.name, "middle", 19);
-    s.text({n.centre.x, t + 57}, n.paths, "middle", 22, kBsdf);
-    s.text({n.centre.x, t + 84}, n.note, "middle", 18, kGrey);
+    s.text({n.centre.x, t + 34}, n.name, "middle", 29);
+    s.text({n.centre.x, t + 71}, n.paths, "middle", 33, kBsdf);
+    s.text({n.centre.x, t + 105}, n.note, "middle", 27, kGrey);
 }
 // An edge from the bottom of box a to the top of box b, with its label beside its middle.
 void familyEdge(Svg& s, const FamilyNode& a, const FamilyNode& b, const char* label, const char* anchor, P offset) {
-    const P from = a.centre + P{0, 48}, to = b.centre - P{0, 48};
-    s.arrow(from, to, kInk, 2);
-    s.text(lerp(from, to, 0.5) + offset, label, anchor, 18, kRed, true);
+    const P from = a.centre + P{0, kFamilyBoxHeight / 2}, to = b.centre - P{0, kFamilyBoxHeight / 2};
+    s.arrow(from, to, kInk, 3);
+    s.text(lerp(from, to, 0.5) + offset, label, anchor, 27, kRed, true);
 }
 Svg familyTree() {
-    Svg s(1000, 720);
-    s.text({500, 34}, "which paths each classic carries (Heckbert's notation, 11.1)", "middle", 20);
-    s.text({500, 60}, "a box carries a part of the paths of the box above it; the arrows say which part", "middle", 18,
-           kGrey);
-    const FamilyNode all{{500, 140},
-                         600,
-                         "pt, lt, bpt, pm (1986-1996)",
-                         "L (D|G|S)* E: every path",
-                         "each with blind spots of its own (section 1.17)"};
-    const FamilyNode drt{{260, 330},
-                         460,
-                         "distributed ray tracing, drt (1984)",
-                         "L D? (G|S)* E",
-                         "light samples at D and G; walks on at G, S"};
-    const FamilyNode rad{{760, 330}, 420, "radiosity (1984, 1988)", "L D* E", "diffuse quads, constant on elements"};
-    const FamilyNode whitted{
-        {260, 510}, 460, "Whitted (1980)", "L [DG] S* E | L S* E", "point lights only; walks on at S only"};
-    const FamilyNode common{
-        {510, 660}, 620, "common to all of them", "L D? E", "the lamps seen, and direct light on D"};
-    familyEdge(s, all, drt, "D only next to L", "end", {-24, -10});
-    familyEdge(s, all, rad, "only D", "start", {24, -10});
-    familyEdge(s, drt, whitted, "G only next to L", "start", {14, 6});
+    // (The caption, "which paths each classic carries", is the lesson text's and the slide's.)
+    Svg s(1000, 662);
+    const FamilyNode all{
+        {500, 60}, 640, "pt, lt, bpt, pm (1986-1996)", "L (D|G|S)* E: all paths", "each with its blind spots (1.17)"};
+    const FamilyNode drt{
+        {255, 240}, 500, "distributed ray tracing (1984)", "L D? (G|S)* E", "light samples at D and G"};
+    const FamilyNode rad{{772, 240}, 440, "radiosity (1984, 1988)", "L D* E", "diffuse quads only"};
+    const FamilyNode whitted{{255, 420}, 500, "Whitted (1980)", "L [DG] S* E | L S* E", "point lights only"};
+    const FamilyNode common{{500, 600}, 640, "common to all of them", "L D? E", "lamps seen, direct light on D"};
+    familyEdge(s, all, drt, "D only next to L", "end", {-20, -8});
+    familyEdge(s, all, rad, "only D", "start", {20, -8});
+    familyEdge(s, drt, whitted, "G only next to L", "start", {14, 4});
     // Whitted's and radiosity's arrows go straight down onto the common box's top.
-    const double top = common.centre.y - 48;
+    const double top = common.centre.y - kFamilyBoxHeight / 2;
     for (const FamilyNode* n : {&whitted, &rad}) {
-        const P from = n->centre + P{0, 48};
-        s.arrow(from, {from.x, top}, kInk, 2);
-        s.text({from.x + 14, 0.5 * (from.y + top) + 6}, n == &whitted ? "no G, no S" : "one D at most", "start", 18,
+        const P from = n->centre + P{0, kFamilyBoxHeight / 2};
+        s.arrow(from, {from.x, top}, kInk, 3);
+        s.text({from.x + 14, 0.5 * (from.y + top) + 9}, n == &whitted ? "no G, no S" : "one D at most", "start", 27,
                kRed, true);
     }
     for (const FamilyNode* n : {&all, &drt, &rad, &whitted, &common}) familyBox(s, *n);

@@ -207,7 +207,7 @@ int figures(const Settings& s) {
         Scene fine = scene;
         fine.settings.elements[0] = fine.settings.elements[1] = s.shotElements;
         RadiosityIntegrator flat(false), ambient(true);
-        flat.checkScene(fine);
+        checkRadiosityScene(fine);
         flat.prepare(fine);
         ambient.prepare(fine);
         std::vector<Image> a, b;

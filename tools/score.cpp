@@ -42,7 +42,9 @@ std::set<int> parseLessons(const std::string& s) {
 }
 
 // One line for the table that says why a test failed: the pieces the test ran into that are still
-// TODO, then the test's own message (doctest's first "logged:" line: what it expected and what it
+// TODO, then the test's own message (the first failure's "ERROR:" line, which the test programs'
+// reporter makes the test's message, tests/support/doctest_main.cpp; or doctest's first "logged:"
+// line: what it expected and what it
 // got; its next line too when the first ends in "got"), at most about two lines of a terminal.
 // The test's whole output stays in results.json.
 std::string whyFailed(const TestResult& r) {
@@ -60,8 +62,13 @@ std::string whyFailed(const TestResult& r) {
         if (!piece.empty() && todo.find(piece) == std::string::npos) todo += (todo.empty() ? "" : ", ") + piece;
     }
     std::string logged;
-    if (const size_t l = out.find("logged: "); l != std::string::npos) {
-        logged = trim(line(l + 8));
+    size_t l = out.find("ERROR: "), skip = 7;
+    if (l == std::string::npos || out.compare(l + 7, 7, "CHECK( ") == 0 || out.compare(l + 7, 9, "REQUIRE( ") == 0) {
+        l = out.find("logged: ");  // a check without a message, or doctest's own reporter
+        skip = 8;
+    }
+    if (l != std::string::npos) {
+        logged = trim(line(l + skip));
         const size_t next = out.find('\n', l);
         if (logged.size() >= 3 && logged.compare(logged.size() - 3, 3, "got") == 0 && next != std::string::npos)
             logged += " " + trim(line(next + 1));
@@ -132,7 +139,7 @@ int main(int argc, char** argv) {
     double seconds = 0;  // execution_time: the time the tests took in the student's run
     for (const TestResult& r : results) seconds += r.seconds;
     writeReport(results, notes, out, false, seconds);
-    std::cout << "\nA test's whole message: ctest --test-dir build -L lesson-NN -R 'part of its name' "
+    std::cout << "\nA test's whole message:\n  ctest --test-dir build -L lesson-NN -R 'part of its name' "
                  "--output-on-failure\n";
     return 0;
 }

@@ -1,5 +1,5 @@
 // pathspace converge SCENE --algos A,B,... (--time SECONDS | --spp N) [options]: error against run
-// time of several algorithms (the report itself: app/report/converge.h).
+// time of several algorithms (the report itself: report/converge.h).
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -37,10 +37,9 @@ const char* const kUsage = R"(converge options:
                      slope -1 guide), efficiency.md, equal-time.png (the algorithms' images at
                      the end of the budget, left to right in --algos order, then the reference,
                      each under its label: algorithm and spp)
-  --threads T, --maxdepth D, --guide-budget MB, --no-prune, --progress/--no-progress   as for
-                     render
-  --paths EXPR       every algorithm (and --ref-algo) renders only the paths EXPR matches, as
-                     for render (a given --reference must be rendered with it too)
+  --threads T, --maxdepth D, --no-prune, --progress/--no-progress   as for render
+  an algorithm option (below, e.g. --paths EXPR) applies to every algorithm and --ref-algo (a
+                     given --reference must be rendered with it too)
 A pixel in which a point light is seen directly is left out of every algorithm's error (a path
 tracer cannot sample that path: both ends are delta positions); the report says which.
 )";
@@ -54,72 +53,80 @@ void writeText(const std::string& path, const std::string& text) {
     if (!f) throw InputError(path, 0, "write failed");
 }
 
-int runConverge(const std::vector<std::string>& args) {
+// What the command line asks for (parseConverge), before anything is loaded.
+struct ConvergeArgs {
     std::string scenePath, reference, refAlgo, outDir;
     std::vector<std::string> regionNames;
     ConvergeOptions opt;
-    opt.seconds = 0.0;
-    opt.progress = stderrIsTerminal();
     double refSeconds = 0.0;
     int maxDepth = -1;
-    double guideBudget = 0.0;
     bool prune = true;
-    std::optional<PathExpression> paths;
+};
+
+ConvergeArgs parseConverge(const std::vector<std::string>& args) {
+    ConvergeArgs c;
+    ConvergeOptions& opt = c.opt;
+    opt.seconds = 0.0;
+    opt.progress = stderrIsTerminal();
     for (size_t i = 0; i < args.size(); ++i) {
         const std::string& a = args[i];
         auto value = [&]() -> std::string { return optionValue(args, i); };
         if (a == "--algos") opt.algos = splitList(value());
         else if (a == "--time") opt.seconds = parsePositive(a, value());
         else if (a == "--spp") opt.spp = parseAtLeast<int>(a, value(), 1);
-        else if (a == "--regions") regionNames = splitList(value());
-        else if (a == "--reference") reference = value();
-        else if (a == "--ref-algo") refAlgo = value();
-        else if (a == "--ref-time") refSeconds = parsePositive(a, value());
+        else if (a == "--regions") c.regionNames = splitList(value());
+        else if (a == "--reference") c.reference = value();
+        else if (a == "--ref-algo") c.refAlgo = value();
+        else if (a == "--ref-time") c.refSeconds = parsePositive(a, value());
         else if (a == "--seeds") opt.seeds = parseAtLeast<int>(a, value(), 1);
         else if (a == "--threads") opt.threads = parseWithin<int>(a, value(), 1, kMaxThreads);
-        else if (a == "--maxdepth") maxDepth = parseAtLeast<int>(a, value(), 0);
-        else if (a == "--guide-budget") guideBudget = parseWithin<double>(a, value(), 0.01, 65536.0);
-        else if (a == "--out") outDir = value();
+        else if (a == "--maxdepth") c.maxDepth = parseAtLeast<int>(a, value(), 0);
+        else if (a == "--out") c.outDir = value();
         else if (a == "--progress") opt.progress = true;
         else if (a == "--no-progress") opt.progress = false;
-        else if (a == "--no-prune") prune = false;
-        else if (a == "--paths") paths = parsePathsOption(value());
+        else if (a == "--no-prune") c.prune = false;
+        else if (parseAlgorithmOption(args, i, opt.options)) continue;
         else if (!a.empty() && a[0] == '-') throw UsageError("unknown option '" + a + "'");
-        else if (scenePath.empty()) scenePath = a;
-        else throw UsageError("more than one scene given ('" + scenePath + "' and '" + a + "')");
+        else if (c.scenePath.empty()) c.scenePath = a;
+        else throw UsageError("more than one scene given ('" + c.scenePath + "' and '" + a + "')");
     }
-    if (scenePath.empty()) throw UsageError("'converge' needs a scene file");
+    if (c.scenePath.empty()) throw UsageError("'converge' needs a scene file");
     if (opt.algos.empty()) throw UsageError("'converge' needs --algos A,B,...");
     if (opt.seconds == 0.0 && opt.spp == 0) throw UsageError("'converge' needs --time SECONDS or --spp N");
-    if (opt.seconds == 0.0 && reference.empty() && refSeconds == 0.0)
+    if (opt.seconds == 0.0 && c.reference.empty() && c.refSeconds == 0.0)
         throw UsageError("'converge' without --time needs --reference REF or --ref-time SECONDS");
-    for (const std::string& a : opt.algos) makeIntegrator(a);  // unknown names fail now, not later
-    if (paths) {
-        opt.paths = &*paths;
-        for (const std::string& a : opt.algos) requirePathFilter(a, *paths);
-        if (!refAlgo.empty()) requirePathFilter(refAlgo, *paths);
-    }
+    // Unknown names, and algorithms that refuse the options, fail now, not later.
+    for (const std::string& a : opt.algos) makeAlgorithm(a, opt.options);
+    if (!c.refAlgo.empty()) makeAlgorithm(c.refAlgo, opt.options);
     // The report's folder and every file in it, checked before the scene is loaded (command.h).
-    const std::string name = stem(baseName(scenePath));
-    if (outDir.empty()) outDir = "converge-" + name;
+    if (c.outDir.empty()) c.outDir = "converge-" + stem(baseName(c.scenePath));
     std::vector<std::string> files = {"convergence.csv", "convergence.svg", "efficiency.md", "equal-time.png",
                                       "equal-time.pfm"};
-    if (reference.empty()) files.insert(files.end(), {"reference.pfm", "reference-variance.pfm"});
-    if (!regionNames.empty()) files.push_back("regions.md");
-    checkOutputFolder("--out", outDir, files);
+    if (c.reference.empty()) files.insert(files.end(), {"reference.pfm", "reference-variance.pfm"});
+    if (!c.regionNames.empty()) files.push_back("regions.md");
+    checkOutputFolder("--out", c.outDir, files);
+    return c;
+}
+
+int runConverge(ConvergeArgs c) {
+    ConvergeOptions& opt = c.opt;
+    const std::string& scenePath = c.scenePath;
+    const std::string& outDir = c.outDir;
+    const std::string& reference = c.reference;
+    const std::vector<std::string>& regionNames = c.regionNames;
+    std::string& refAlgo = c.refAlgo;
+    const std::string name = stem(baseName(scenePath));
     Scene scene = loadScene(scenePath);
-    if (maxDepth >= 0) scene.settings.maxDepth = maxDepth;
-    if (guideBudget > 0.0) scene.settings.guideBudget = size_t(guideBudget * double(1 << 20));
+    if (c.maxDepth >= 0) scene.settings.maxDepth = c.maxDepth;
     if (!regionNames.empty()) {
         try {
             opt.regions = materialRegions(scene, regionNames);
         } catch (const InputError& e) { throw InputError(scenePath, 0, e.what()); }
     }
-    scene.settings.prune = prune;
-    for (const std::string& a : opt.algos)
-        checkCamera(scene, *makeIntegrator(a, opt.paths));  // a thin lens it cannot render
-    if (reference.empty() && !refAlgo.empty()) checkCamera(scene, *makeIntegrator(refAlgo, opt.paths));  // the same
-    for (const std::string& a : opt.algos) printLeftOut(a, *makeIntegrator(a, opt.paths), scene);
+    scene.settings.prune = c.prune;
+    for (const std::string& a : opt.algos) checkScene(scene, *makeAlgorithm(a, opt.options));  // e.g. a camera model
+    if (reference.empty() && !refAlgo.empty()) checkScene(scene, *makeAlgorithm(refAlgo, opt.options));  // the same
+    for (const std::string& a : opt.algos) printLeftOut(a, *makeAlgorithm(a, opt.options), scene);
     const std::vector<PointLightPixel> leftOut = pointLightsInView(scene);
     for (const PointLightPixel& p : leftOut) std::cerr << "pathspace: " << describe(p) << "\n";
     std::error_code ec;
@@ -133,9 +140,9 @@ int runConverge(const std::vector<std::string>& args) {
             throw InputError(reference, 0, "reference size differs from the scene's resolution");
     } else {
         if (refAlgo.empty()) refAlgo = opt.algos[0];
-        auto integrator = makeIntegrator(refAlgo, opt.paths);
+        auto integrator = makeAlgorithm(refAlgo, opt.options);
         RenderOptions ro;
-        ro.seconds = refSeconds > 0.0 ? refSeconds : 10.0 * opt.seconds;
+        ro.seconds = c.refSeconds > 0.0 ? c.refSeconds : 10.0 * opt.seconds;
         ro.seed = 1000003;  // independent of the compared runs (seeds 0 .. K-1)
         ro.threads = opt.threads;
         ro.progress = opt.progress;
@@ -205,9 +212,20 @@ int runConverge(const std::vector<std::string>& args) {
     return 0;
 }
 
+Command convergeCommand() {
+    Command c;
+    c.name = "converge";
+    c.order = 20;
+    c.synopsis = "converge SCENE --algos A,B,... (--time SECONDS | --spp N) [options]";
+    c.summary = "error against run time of several algorithms";
+    c.usage = kUsage;
+    c.takesAlgorithms = true;
+    c.run = [](const std::vector<std::string>& args) { return runConverge(parseConverge(args)); };
+    return c;
+}
+
 }  // namespace
 
-PS_REGISTER_COMMAND(converge, 20, "converge SCENE --algos A,B,... (--time SECONDS | --spp N) [options]",
-                    "error against run time of several algorithms", kUsage, true, runConverge);
+PS_REGISTER_COMMAND(convergeCommand());
 
 }  // namespace ps

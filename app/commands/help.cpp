@@ -84,6 +84,18 @@ std::string commandHelp(const Command& c) {
     return os.str();
 }
 
-PS_REGISTER_COMMAND(help, 90, "help [COMMAND]", "this text, or the options of one command", "", false, runHelp);
+namespace {
+Command helpCommand() {
+    Command c;
+    c.name = "help";
+    c.order = 90;
+    c.synopsis = "help [COMMAND]";
+    c.summary = "this text, or the options of one command";
+    c.run = runHelp;
+    return c;
+}
+}  // namespace
+
+PS_REGISTER_COMMAND(helpCommand());
 
 }  // namespace ps

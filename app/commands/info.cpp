@@ -21,8 +21,18 @@ int runInfo(const std::vector<std::string>& args) {
     return 0;
 }
 
+Command infoCommand() {
+    Command c;
+    c.name = "info";
+    c.order = 30;
+    c.synopsis = "info SCENE";
+    c.summary = "print what the scene contains and needs";
+    c.run = runInfo;
+    return c;
+}
+
 }  // namespace
 
-PS_REGISTER_COMMAND(info, 30, "info SCENE", "print what the scene contains and needs", "", false, runInfo);
+PS_REGISTER_COMMAND(infoCommand());
 
 }  // namespace ps

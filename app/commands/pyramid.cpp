@@ -1,14 +1,13 @@
-// pathspace pyramid SCENE [options]: Veach's pyramid (lesson 7). Every technique (s, t) of path
-// lengths 1..K alone, as images laid out in rows k = 1..K, centred, row k holding s = 0..k+1.
-// (Lesson 7's plumbing: it could live in lessons/07-bidirectional/ next to the integrator.)
+// pathspace pyramid SCENE [options]: Veach's pyramid. An algorithm that combines several sampling
+// techniques (bidirectional path tracing, lesson 7, and whatever registers per-technique images:
+// IntegratorCaps::techniqueImages) renders every technique alone, as images laid out in rows, one
+// per path length, centred; the algorithm says which cells a row has.
 #include <algorithm>
 #include <cmath>
 #include <iostream>
-#include <optional>
-#include "07-bidirectional/bpt.h"
-#include "11-classics/path_filter.h"
 #include "command.h"
 #include "image.h"
+#include "render.h"
 #include "report/label.h"
 #include "scene_loader.h"
 
@@ -16,123 +15,148 @@ namespace ps {
 namespace {
 
 const char* const kUsage = R"(pyramid options:
+  --algo NAME        the algorithm whose techniques are drawn (default bpt; those that have
+                     per-technique images are listed in the error when another is given)
   --max-length K     path lengths 1..K (K edges at most, 1 to 12; default 4); row k of the
-                     pyramid holds the techniques s = 0..k+1 (t = k+1-s) from left to right
+                     pyramid holds the algorithm's techniques of length k, e.g. bpt's s = 0..k+1
+                     (t = k+1-s) from left to right
   --spp N            samples per pixel (default: the scene's)
-  --seed S, --threads T, --no-prune, --paths EXPR   as for render (--paths: each technique's
-                     image holds only the paths EXPR matches)
+  --seed S, --threads T, --no-prune   as for render; an algorithm option (e.g. --paths EXPR: each
+                     technique's image holds only the paths EXPR matches) as for render
   --exposure E       PNG exposure in stops, -100 to 100 (default 0)
   --out PREFIX       writes PREFIX-unweighted.png (each technique alone, its unweighted
                      estimate), PREFIX-weighted.png (the MIS-weighted ones: a row adds up
-                     to the paths of that length), PREFIX-s-t.pfm and PREFIX-s-t-weighted.pfm
-                     for each technique (default: SCENE's name + -pyramid); cells of techniques
-                     that cannot sample the scene's paths stay black (listed on stdout)
+                     to the paths of that length), PREFIX-CELL.pfm and PREFIX-CELL-weighted.pfm
+                     for each cell (bpt: CELL = s-t; default PREFIX: SCENE's name + -pyramid);
+                     cells of techniques that cannot sample the scene's paths stay black
+                     (listed on stdout)
 )";
 
 constexpr int kMaxLength = 12;
 constexpr float kMaxExposure = 100.0f;  // 2^100 still fits a float
 
-int runPyramid(const std::vector<std::string>& args) {
-    std::string scenePath, out;
-    int maxLength = 4, spp = 0, threads = 0;
-    uint64_t seed = 0;
+// What the command line asks for (parsePyramid), before anything is loaded.
+struct PyramidArgs {
+    std::string scenePath, out, algo = "bpt";
+    TechniqueImagesOptions images;
     float exposure = 0.0f;
     bool prune = true;
-    std::optional<PathExpression> paths;
+    AlgorithmOptions options;
+    std::unique_ptr<Integrator> integrator;
+    std::vector<TechniqueRow> layout;
+};
+
+PyramidArgs parsePyramid(const std::vector<std::string>& args) {
+    PyramidArgs p;
+    p.images.spp = 0;
     for (size_t i = 0; i < args.size(); ++i) {
         const std::string& a = args[i];
         auto value = [&]() -> std::string { return optionValue(args, i); };
-        if (a == "--max-length") maxLength = parseWithin<int>(a, value(), 1, kMaxLength);
-        else if (a == "--spp") spp = parseAtLeast<int>(a, value(), 1);
-        else if (a == "--seed") seed = parseNumber<uint64_t>(a, value());
-        else if (a == "--threads") threads = parseWithin<int>(a, value(), 1, kMaxThreads);
-        else if (a == "--exposure") exposure = parseWithin<float>(a, value(), -kMaxExposure, kMaxExposure);
-        else if (a == "--out") out = value();
-        else if (a == "--no-prune") prune = false;
-        else if (a == "--paths") paths = parsePathsOption(value());
+        if (a == "--algo") p.algo = value();
+        else if (a == "--max-length") p.images.maxLength = parseWithin<int>(a, value(), 1, kMaxLength);
+        else if (a == "--spp") p.images.spp = parseAtLeast<int>(a, value(), 1);
+        else if (a == "--seed") p.images.seed = parseNumber<uint64_t>(a, value());
+        else if (a == "--threads") p.images.threads = parseWithin<int>(a, value(), 1, kMaxThreads);
+        else if (a == "--exposure") p.exposure = parseWithin<float>(a, value(), -kMaxExposure, kMaxExposure);
+        else if (a == "--out") p.out = value();
+        else if (a == "--no-prune") p.prune = false;
+        else if (parseAlgorithmOption(args, i, p.options)) continue;
         else if (!a.empty() && a[0] == '-') throw UsageError("unknown option '" + a + "'");
-        else if (scenePath.empty()) scenePath = a;
+        else if (p.scenePath.empty()) p.scenePath = a;
         else throw UsageError("'pyramid' takes one scene file");
     }
-    if (scenePath.empty()) throw UsageError("'pyramid' needs a scene file");
+    if (p.scenePath.empty()) throw UsageError("'pyramid' needs a scene file");
+    p.integrator = makeAlgorithm(p.algo, p.options);
+    if (!p.integrator->caps.techniqueImages) {
+        std::string can;
+        for (const IntegratorInfo& info : integratorList())
+            if (info.caps.techniqueImages) can += (can.empty() ? "" : ", ") + info.name;
+        throw UsageError("algorithm '" + p.algo + "' has no per-technique images; these have: " + can);
+    }
     // Every file this run writes, checked before the scene is loaded (command.h).
-    if (out.empty()) out = stem(baseName(scenePath)) + "-pyramid";
-    std::vector<OutputFile> outputs = {{"--out", out + "-unweighted.png", {".png"}},
-                                       {"--out", out + "-weighted.png", {".png"}}};
-    for (int k = 1; k <= maxLength; ++k)
-        for (int s = 0; s <= k + 1; ++s) {
-            const std::string name = out + "-" + std::to_string(s) + "-" + std::to_string(k + 1 - s);
-            outputs.push_back({"--out", name + ".pfm", {".pfm"}});
-            outputs.push_back({"--out", name + "-weighted.pfm", {".pfm"}});
+    if (p.out.empty()) p.out = stem(baseName(p.scenePath)) + "-pyramid";
+    std::vector<OutputFile> outputs = {{"--out", p.out + "-unweighted.png", {".png"}},
+                                       {"--out", p.out + "-weighted.png", {".png"}}};
+    p.layout = p.integrator->techniques.layout(p.images.maxLength);
+    for (const TechniqueRow& row : p.layout)
+        for (const TechniqueCell& cell : row.cells) {
+            outputs.push_back({"--out", p.out + "-" + cell.name + ".pfm", {".pfm"}});
+            outputs.push_back({"--out", p.out + "-" + cell.name + "-weighted.pfm", {".pfm"}});
         }
     checkOutputFiles(outputs);
-    Scene scene = loadScene(scenePath);
-    scene.settings.prune = prune;
-    if (spp == 0) spp = scene.settings.spp;
-    BptOptions opt;
-    for (const std::string& line : bptLeftOut(scene, opt))
+    return p;
+}
+
+int runPyramid(PyramidArgs p) {
+    Scene scene = loadScene(p.scenePath);
+    scene.settings.prune = p.prune;
+    if (p.images.spp == 0) p.images.spp = scene.settings.spp;
+    checkScene(scene, *p.integrator);
+    for (const std::string& line : p.integrator->leftOut(scene))
         std::cerr << "pathspace: pyramid leaves out " << line << "\n";
-    if (paths) {  // lesson 11's filter, as in `bpt --paths`
-        opt.pathTest = [&](const Subpath& light, const Subpath& camera, int s, int t) {
-            return bptPathMatches(*paths, scene, light, camera, s, t);
-        };
-        for (const std::string& line : pathFilterLeftOut(
-                 *paths, scene, "a technique connects (traces its shadow ray) only where its path matches"))
-            std::cerr << "pathspace: pyramid leaves out " << line << "\n";
-    }
-    const TechniqueImages t = renderTechniques(scene, maxLength, spp, seed, threads, opt);
+    const TechniquePyramid t = p.integrator->techniques.render(scene, p.images);
     const int w = scene.camera.width(), h = scene.camera.height(), gap = std::max(2, w / 16);
-    const int cols = maxLength + 2;
-    // Each cell under its label "(s,t)", the first of a row under "k=K (0,t)" too (label.h); the
-    // ink is white after the PNG's exposure.
+    size_t cols = 0;
+    for (const TechniqueRow& row : t.rows) cols = std::max(cols, row.cells.size());
+    const int rows = static_cast<int>(t.rows.size());
+    // Each cell under its label, the first of a row under the row's label too (label.h); the ink
+    // is white after the PNG's exposure.
     const int scale = labelScale(w), band = (kGlyphHeight + 2) * scale;
-    const Color ink(std::exp2(-exposure));
-    Image unweighted(cols * (w + gap) + gap, maxLength * (h + band + gap) + gap, Color(0.15f));
+    const Color ink(std::exp2(-p.exposure));
+    Image unweighted(int(cols) * (w + gap) + gap, rows * (h + band + gap) + gap, Color(0.15f));
     Image weighted = unweighted;
-    std::cout << "pathspace: pyramid of " << scenePath << ", " << spp << " spp; row k = path length k (k edges), "
-              << "cells s = 0..k+1 from the left (t = k+1-s):\n";
-    for (int k = 1; k <= maxLength; ++k) {
-        const int x0 = gap + (maxLength - k) * (w + gap) / 2, y0 = gap + (k - 1) * (h + band + gap) + band;
-        std::cout << "  k = " << k << ":";
-        for (int s = 0; s <= k + 1; ++s) {
-            const int idx = techniqueIndex(s, k);
-            const Image& u = t.unweighted[size_t(idx)];
-            const Image& wt = t.weighted[size_t(idx)];
+    std::cout << "pathspace: pyramid of " << p.scenePath << " by " << p.algo << describeOptions(p.options) << ", "
+              << p.images.spp << " spp; one row per path length:\n";
+    for (int r = 0; r < rows; ++r) {
+        const TechniqueRow& row = t.rows[size_t(r)];
+        const int n = static_cast<int>(row.cells.size());
+        const int x0 = gap + (int(cols) - n) * (w + gap) / 2, y0 = gap + r * (h + band + gap) + band;
+        std::cout << "  " << row.label << ":";
+        for (int c = 0; c < n; ++c) {
+            const TechniqueCell& cell = row.cells[size_t(c)];
             double sum = 0.0;
-            for (const auto& c : u.pixels) sum += double(c.r) + c.g + c.b;
-            std::cout << "  (" << s << "," << k + 1 - s << ")" << (sum > 0.0 ? "" : " black");
-            const std::string st = "(" + std::to_string(s) + "," + std::to_string(k + 1 - s) + ")";
-            const std::string label = s == 0 ? "k=" + std::to_string(k) + " " + st : st;
-            const int lx = x0 + s * (w + gap), ly = y0 - band + scale / 2;
+            for (const auto& v : cell.unweighted.pixels) sum += double(v.r) + v.g + v.b;
+            std::cout << "  " << cell.label << (sum > 0.0 ? "" : " black");
+            const std::string label = c == 0 ? row.label + " " + cell.label : cell.label;
+            const int lx = x0 + c * (w + gap), ly = y0 - band + scale / 2;
             drawText(unweighted, lx, ly, label, scale, ink, lx + w);
             drawText(weighted, lx, ly, label, scale, ink, lx + w);
             for (int y = 0; y < h; ++y)
                 for (int x = 0; x < w; ++x) {
-                    unweighted.at(x0 + s * (w + gap) + x, y0 + y) = u.at(x, y);
-                    weighted.at(x0 + s * (w + gap) + x, y0 + y) = wt.at(x, y);
+                    unweighted.at(lx + x, y0 + y) = cell.unweighted.at(x, y);
+                    weighted.at(lx + x, y0 + y) = cell.weighted.at(x, y);
                 }
-            const std::string name = out + "-" + std::to_string(s) + "-" + std::to_string(k + 1 - s);
-            writePFM(name + ".pfm", u);
-            writePFM(name + "-weighted.pfm", wt);
+            writePFM(p.out + "-" + cell.name + ".pfm", cell.unweighted);
+            writePFM(p.out + "-" + cell.name + "-weighted.pfm", cell.weighted);
         }
         std::cout << "\n";
     }
-    std::cout << "  black: the technique cannot sample (t = 0: a pinhole camera; s = 0 with point lights only; "
-                 "a connection at a specular vertex) or found nothing at this spp\n";
-    writePNG(out + "-unweighted.png", unweighted, exposure);
-    writePNG(out + "-weighted.png", weighted, exposure);
+    std::cout << "  black: the technique cannot sample these paths on this scene (its leaves-out lines say why), or "
+                 "found nothing at this spp\n";
+    writePNG(p.out + "-unweighted.png", unweighted, p.exposure);
+    writePNG(p.out + "-weighted.png", weighted, p.exposure);
     std::cout << "pathspace: " << t.stats.nan << " NaN, " << t.stats.inf
               << " Inf values (counted, left out of the images)\n";
-    std::cout << "pathspace: wrote " << out << "-unweighted.png, " << out << "-weighted.png and " << out
-              << "-S-T[-weighted].pfm\n";
+    std::cout << "pathspace: wrote " << p.out << "-unweighted.png, " << p.out << "-weighted.png and " << p.out
+              << "-CELL[-weighted].pfm\n";
     return 0;
+}
+
+Command pyramidCommand() {
+    Command c;
+    c.name = "pyramid";
+    c.order = 40;
+    c.synopsis = "pyramid SCENE [options]";
+    c.summary =
+        "Veach's pyramid: the image of every technique of a bidirectional algorithm alone (s, t), per path length";
+    c.usage = kUsage;
+    c.takesAlgorithms = true;
+    c.run = [](const std::vector<std::string>& args) { return runPyramid(parsePyramid(args)); };
+    return c;
 }
 
 }  // namespace
 
-PS_REGISTER_COMMAND(pyramid, 40, "pyramid SCENE [options]",
-                    "Veach's pyramid: the image of every bidirectional technique (s, t) alone, per path length "
-                    "(lesson 7)",
-                    kUsage, false, runPyramid);
+PS_REGISTER_COMMAND(pyramidCommand());
 
 }  // namespace ps

@@ -38,137 +38,147 @@ const char* const kUsage = R"(render options:
   --progress / --no-progress   progress bar on stderr (default: when stderr is a terminal)
   --ambient A        whitted's ambient radiance, one number or R,G,B (default: the scene's
                      'render ambient', else 0)
-  --guide-budget MB  pt-guided and pt-guided-adrrs only: the most memory their learned field
-                     may take, in MB (default 64; from 0.01 to 65536)
 )";
 
-int runRender(const std::vector<std::string>& args) {
+// What the command line asks for (parseRender), before anything is loaded.
+struct RenderArgs {
     std::string scenePath, algo, out, reference, csvPath, variancePath;
     int spp = 0, threads = 0, maxDepth = -1, shots = 0, elements[2] = {0, 0};
     double seconds = 0.0;
     uint64_t seed = 0;
-    bool progress = stderrIsTerminal(), prune = true;
-    std::optional<PathExpression> paths;
+    bool progress = false, prune = true;
+    AlgorithmOptions options;  // --paths EXPR and the like (integrator.h)
     std::optional<Color> ambient;
-    double guideBudget = 0.0;
+};
+
+RenderArgs parseRender(const std::vector<std::string>& args) {
+    RenderArgs r;
+    r.progress = stderrIsTerminal();
     for (size_t i = 0; i < args.size(); ++i) {
         const std::string& a = args[i];
         auto value = [&]() -> std::string { return optionValue(args, i); };
-        if (a == "--algo") algo = value();
-        else if (a == "--spp") spp = parseAtLeast<int>(a, value(), 1);
-        else if (a == "--time") seconds = parsePositive(a, value());
-        else if (a == "--maxdepth") maxDepth = parseAtLeast<int>(a, value(), 0);
-        else if (a == "--seed") seed = parseNumber<uint64_t>(a, value());
-        else if (a == "--threads") threads = parseWithin<int>(a, value(), 1, kMaxThreads);
-        else if (a == "--out") out = value();
-        else if (a == "--reference") reference = value();
-        else if (a == "--csv") csvPath = value();
-        else if (a == "--variance") variancePath = value();
-        else if (a == "--progress") progress = true;
-        else if (a == "--no-progress") progress = false;
-        else if (a == "--no-prune") prune = false;
-        else if (a == "--paths") paths = parsePathsOption(value());
-        else if (a == "--ambient") ambient = parseAmbient(a, value());
-        else if (a == "--guide-budget") guideBudget = parseWithin<double>(a, value(), 0.01, 65536.0);
-        else if (a == "--shots") shots = parseAtLeast<int>(a, value(), 1);
+        if (a == "--algo") r.algo = value();
+        else if (a == "--spp") r.spp = parseAtLeast<int>(a, value(), 1);
+        else if (a == "--time") r.seconds = parsePositive(a, value());
+        else if (a == "--maxdepth") r.maxDepth = parseAtLeast<int>(a, value(), 0);
+        else if (a == "--seed") r.seed = parseNumber<uint64_t>(a, value());
+        else if (a == "--threads") r.threads = parseWithin<int>(a, value(), 1, kMaxThreads);
+        else if (a == "--out") r.out = value();
+        else if (a == "--reference") r.reference = value();
+        else if (a == "--csv") r.csvPath = value();
+        else if (a == "--variance") r.variancePath = value();
+        else if (a == "--progress") r.progress = true;
+        else if (a == "--no-progress") r.progress = false;
+        else if (a == "--no-prune") r.prune = false;
+        else if (a == "--ambient") r.ambient = parseAmbient(a, value());
+        else if (a == "--shots") r.shots = parseAtLeast<int>(a, value(), 1);
         else if (a == "--elements") {
             const std::string v = value();
             const size_t x = v.find('x');
-            elements[0] = parseWithin<int>(a, v.substr(0, x), 1, kMaxElements);
-            elements[1] = x == std::string::npos ? elements[0] : parseWithin<int>(a, v.substr(x + 1), 1, kMaxElements);
-        } else if (!a.empty() && a[0] == '-') throw UsageError("unknown option '" + a + "'");
-        else if (scenePath.empty()) scenePath = a;
-        else throw UsageError("more than one scene given ('" + scenePath + "' and '" + a + "')");
+            r.elements[0] = parseWithin<int>(a, v.substr(0, x), 1, kMaxElements);
+            r.elements[1] =
+                x == std::string::npos ? r.elements[0] : parseWithin<int>(a, v.substr(x + 1), 1, kMaxElements);
+        } else if (parseAlgorithmOption(args, i, r.options)) continue;
+        else if (!a.empty() && a[0] == '-') throw UsageError("unknown option '" + a + "'");
+        else if (r.scenePath.empty()) r.scenePath = a;
+        else throw UsageError("more than one scene given ('" + r.scenePath + "' and '" + a + "')");
     }
-    if (scenePath.empty()) throw UsageError("'render' needs a scene file");
-    if (paths && !algo.empty()) {
-        makeIntegrator(algo);  // an unknown name says so first
-        requirePathFilter(algo, *paths);
-    }
+    if (r.scenePath.empty()) throw UsageError("'render' needs a scene file");
+    if (!r.options.empty() && !r.algo.empty()) makeAlgorithm(r.algo, r.options);  // refused before anything is loaded
     // Every file this run writes, checked before the scene is loaded (command.h).
-    if (out.empty()) out = stem(baseName(scenePath)) + ".png";
-    std::vector<OutputFile> outputs = {{"--out", out, imageExtensions()}};
-    if (stem(out) + ".pfm" != out) outputs.push_back({"--out", stem(out) + ".pfm", {".pfm"}});  // written next to it
-    if (!variancePath.empty()) outputs.push_back({"--variance", variancePath, {".pfm"}});
-    if (!reference.empty()) {
-        if (csvPath.empty()) csvPath = stem(out) + ".csv";
-        outputs.push_back({"--csv", csvPath, {}});
+    if (r.out.empty()) r.out = stem(baseName(r.scenePath)) + ".png";
+    std::vector<OutputFile> outputs = {{"--out", r.out, imageExtensions()}};
+    if (stem(r.out) + ".pfm" != r.out)
+        outputs.push_back({"--out", stem(r.out) + ".pfm", {".pfm"}});  // written next to it
+    if (!r.variancePath.empty()) outputs.push_back({"--variance", r.variancePath, {".pfm"}});
+    if (!r.reference.empty()) {
+        if (r.csvPath.empty()) r.csvPath = stem(r.out) + ".csv";
+        outputs.push_back({"--csv", r.csvPath, {}});
     }
     checkOutputFiles(outputs);
+    return r;
+}
 
-    Scene scene = loadScene(scenePath);
-    if (maxDepth >= 0) scene.settings.maxDepth = maxDepth;
-    scene.settings.prune = prune;
-    if (ambient) scene.settings.ambient = *ambient;
-    if (guideBudget > 0.0) scene.settings.guideBudget = size_t(guideBudget * double(1 << 20));
-    if (shots > 0) scene.settings.shots = shots;
-    if (elements[0] > 0) std::copy(elements, elements + 2, scene.settings.elements);
+int runRender(RenderArgs r) {
+    Scene scene = loadScene(r.scenePath);
+    if (r.maxDepth >= 0) scene.settings.maxDepth = r.maxDepth;
+    scene.settings.prune = r.prune;
+    if (r.ambient) scene.settings.ambient = *r.ambient;
+    if (r.shots > 0) scene.settings.shots = r.shots;
+    if (r.elements[0] > 0) std::copy(r.elements, r.elements + 2, scene.settings.elements);
     std::unique_ptr<Integrator> integrator;
-    if (algo.empty()) {
-        algo = scene.settings.algo;
+    if (r.algo.empty()) {
+        r.algo = scene.settings.algo;
         try {
-            integrator = makeIntegrator(algo);
+            makeIntegrator(r.algo);
         } catch (const InputError& e) {  // name the scene line that asked for it
-            throw InputError(scenePath, scene.settings.algoLine, e.what());
+            throw InputError(r.scenePath, scene.settings.algoLine, e.what());
         }
-        if (paths) requirePathFilter(algo, *paths);
     }
-    if (paths) integrator = makeIntegrator(algo, &*paths);
-    else if (!integrator) integrator = makeIntegrator(algo);
-    if (spp == 0 && seconds == 0.0) spp = scene.settings.spp;
-    integrator->checkScene(scene);    // a refusal (InputError) before anything is printed
-    checkCamera(scene, *integrator);  // a thin lens it cannot render: one error line, before anything else
+    integrator = makeAlgorithm(r.algo, r.options);
+    if (r.spp == 0 && r.seconds == 0.0) r.spp = scene.settings.spp;
+    checkScene(scene, *integrator);  // a refusal (InputError) before anything is printed
 
     Image ref;
     std::ofstream csv;
     RenderOptions opt;
-    opt.spp = spp;
-    opt.seconds = seconds;
-    opt.seed = seed;
-    opt.threads = threads;
-    opt.progress = progress;
-    if (!reference.empty()) {
-        ref = readImage(reference);
+    opt.spp = r.spp;
+    opt.seconds = r.seconds;
+    opt.seed = r.seed;
+    opt.threads = r.threads;
+    opt.progress = r.progress;
+    if (!r.reference.empty()) {
+        ref = readImage(r.reference);
         if (ref.width != scene.camera.width() || ref.height != scene.camera.height())
-            throw InputError(reference, 0,
+            throw InputError(r.reference, 0,
                              "reference is " + std::to_string(ref.width) + "x" + std::to_string(ref.height) +
                                  " but the scene renders " + std::to_string(scene.camera.width()) + "x" +
                                  std::to_string(scene.camera.height()));
-        csv.open(csvPath);
-        if (!csv) throw InputError(csvPath, 0, "cannot open for writing");
+        csv.open(r.csvPath);
+        if (!csv) throw InputError(r.csvPath, 0, "cannot open for writing");
         opt.reference = &ref;
         opt.csv = &csv;
     }
-    std::cerr << "pathspace: " << scenePath << " (" << scene.caps.describe() << "), algo " << algo
-              << (paths ? ", paths '" + paths->text() + "'" : std::string()) << "\n";
-    printLeftOut(algo, *integrator, scene);
+    std::cerr << "pathspace: " << r.scenePath << " (" << scene.caps.describe() << "), algo " << r.algo;
+    for (const auto& [name, value] : r.options) std::cerr << ", " << name << " '" << value << "'";
+    std::cerr << "\n";
+    printLeftOut(r.algo, *integrator, scene);
 
     const RenderResult res = ps::render(scene, *integrator, opt);
     const Image img = res.film.mean();
-    writeImage(out, img);
-    std::string written = out;
-    if (stem(out) + ".pfm" != out) {
-        writePFM(stem(out) + ".pfm", img);
-        written += ", " + stem(out) + ".pfm";
+    writeImage(r.out, img);
+    std::string written = r.out;
+    if (stem(r.out) + ".pfm" != r.out) {
+        writePFM(stem(r.out) + ".pfm", img);
+        written += ", " + stem(r.out) + ".pfm";
     }
-    if (!variancePath.empty()) {
-        writePFM(variancePath, res.film.varianceOfMean());
-        written += ", " + variancePath;
+    if (!r.variancePath.empty()) {
+        writePFM(r.variancePath, res.film.varianceOfMean());
+        written += ", " + r.variancePath;
     }
-    if (opt.csv) written += ", " + csvPath;
+    if (opt.csv) written += ", " + r.csvPath;
     std::cout << "pathspace: " << summaryLine(res) << "; wrote " << written << "\n";
-    for (const std::string& line : integrator->report()) std::cout << "pathspace: " << algo << ": " << line << "\n";
+    for (const std::string& line : integrator->report()) std::cout << "pathspace: " << r.algo << ": " << line << "\n";
     if (res.stats.bad() > 0)
         std::cerr << "pathspace: warning: " << res.stats.bad()
                   << " samples were NaN or Inf; they were left out of the image (see the counts above)\n";
     return 0;
 }
 
-const std::string kRenderUsage = std::string(kUsage) + kPathsHelp;
+Command renderCommand() {
+    Command c;
+    c.name = "render";
+    c.order = 10;
+    c.synopsis = "render SCENE [options]";
+    c.summary = "render a scene file (see scenes/README.md)";
+    c.usage = kUsage;
+    c.takesAlgorithms = true;
+    c.run = [](const std::vector<std::string>& args) { return runRender(parseRender(args)); };
+    return c;
+}
 
 }  // namespace
 
-PS_REGISTER_COMMAND(render, 10, "render SCENE [options]", "render a scene file (see scenes/README.md)", kRenderUsage,
-                    true, runRender);
+PS_REGISTER_COMMAND(renderCommand());
 
 }  // namespace ps

@@ -38,10 +38,10 @@ float pdfAToSolidAngle(float pdfA, float dist, float cosAtLight) {
 float pdfLightDirection(const Scene& scene, int light, const Vec3& ref, const Vec3& p, const Vec3& n) {
     // TODO(02) The pdf of the direction from ref to p under light sampling (Eq. 2.4): the
     //          selection probability scene.lightSelectionProb(light) times
-    //            area light: pdfLightArea(scene, light) converted by pdfAToSolidAngle, with the
+    //            area light: pdfLight's area density converted by pdfAToSolidAngle, with the
     //                        distance from ref to p and the cosine between n and the unit
     //                        direction from p to ref;
-    //            background: pdfBackgroundDirection();
+    //            background: pdfLight's solid-angle density;
     //            point light: 0 (a delta light: no direction hits it by chance, Eq. 2.12).
     (void)scene; (void)light; (void)ref; (void)p; (void)n;
     return PS_TODO("lesson 02: pdfLightDirection", 0.0f);
@@ -55,9 +55,9 @@ DirectSample sampleDirectLight(const Scene& scene, const SurfacePoint& sp, const
     //             l, sp.p, uPoint); d.wi = ls.wi.
     //          2. f = evalBSDF(material of sp, sp.n, wo, ls.wi), cos = |dot(sp.n, ls.wi)|.
     //          3. The pdf of ls.wi per unit solid angle, times select (d.pdfLight):
-    //               area light: ls.pdf is per unit area: convert it (Eq. 2.3) with ls.dist and
+    //               area light: ls.pdfA is per unit area: convert it (Eq. 2.3) with ls.dist and
     //                           the cosine at the light, dot(ls.n, -ls.wi);
-    //               background: ls.pdf is already per solid angle;
+    //               background: ls.pdfW is already per solid angle;
     //               point light: no density; d.pdfLight = select, d.delta = true, and ls.Le is
     //                            an intensity: the value is f I cos / (select dist^2) (Eq. 2.4).
     //          4. d.pdfBSDF = pdfBSDF(material, sp.n, wo, ls.wi) (0 for a point light, Eq. 2.12).

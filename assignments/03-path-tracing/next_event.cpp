@@ -11,8 +11,9 @@ Color LiNextEvent(const Scene& scene, const Ray& cameraRay, Rng& rng, int maxDep
         // TODO(03) What vertex x_k adds to L with next-event estimation (Eq. 3.6): the emission
         //          the walk finds (surface or background) only where no light sample could
         //          have found it (v.specular); then, if k < maxDepth and the material is not
-        //          delta, beta_k times one light sample, lesson 2's
-        //          sampleDirectLight(scene, v.sp, v.wo, rng.uniform(), rng.uniform2()).value.
+        //          delta, beta_k times one light sample, lesson 2's sampleDirectLight(scene,
+        //          v.sp, v.wo, uLight, uPoint).value, uLight = rng.uniform() drawn before
+        //          uPoint = rng.uniform2() (into variables: a call's arguments have no order).
         //          Return true.
         //          Pitfall: the light sample at x_k makes a path of k + 1 bounces.
         (void)v;

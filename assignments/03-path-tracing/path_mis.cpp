@@ -19,8 +19,9 @@ Color misEmission(const Scene& scene, const WalkVertex& v) {
 
 Color misLightSample(const Scene& scene, const WalkVertex& v, Rng& rng, int maxDepth) {
     // TODO(03) The second half of Eq. 3.7 at x_k, where LiNextEvent takes one: beta_k times the
-    //          light sample, weighted by kPathHeuristic from DirectSample's light density against
-    //          the density with which the walk itself leaves x_k in that direction (pdfWalk).
+    //          light sample (its numbers drawn as in LiNextEvent), weighted by kPathHeuristic from
+    //          DirectSample's light density against the density with which the walk itself leaves
+    //          x_k in that direction (pdfWalk).
     //          Pitfall: the light sample at the vertex with maxDepth bounces would make a path
     //          of maxDepth + 1 bounces.
     (void)scene; (void)v; (void)rng; (void)maxDepth;

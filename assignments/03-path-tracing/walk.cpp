@@ -21,7 +21,8 @@ namespace {
     //          reads the throughput since the walk's start and the bounces since then, this one
     //          included; no roulette when `roulette` is false (the rule decided survival).
     //          Pitfalls: a survivor divides beta AND the throughput by q. The tests replay the
-    //          random numbers: the direction's drawn inside the call (or u before uLobe), the
+    //          random numbers: the direction's u = rng.uniform2() before uLobe = rng.uniform(),
+    //          into variables (C++ evaluates a call's arguments in no fixed order), the
     //          roulette's only when q < 1.
     (void)scene; (void)v; (void)beta; (void)roulette; (void)start; (void)scatter; (void)rng; (void)opt;
     (void)next;

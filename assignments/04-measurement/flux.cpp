@@ -8,8 +8,9 @@ namespace ps {
 Color fluxParticle(const Scene& scene, const Region& S, Rng& rng) {
     // TODO(04) One particle (Eq. 4.12, 4.13), drawing the random numbers in this order:
     //          1. l = scene.selectLight(rng.uniform(), P); return 0 if l < 0.
-    //          2. e = sampleEmission(scene, l, rng.uniform2(), rng.uniform2()); return 0 if
-    //             e.pdfA or e.pdfW is 0.
+    //          2. e = sampleEmission(scene, l, uPos, uDir), uPos = rng.uniform2() drawn before
+    //             uDir = rng.uniform2() (into variables: a call's arguments have no order);
+    //             return 0 if e.pdfA or e.pdfW is 0.
     //          3. The particle's power: Le |cos theta| / (P pdfA pdfW), cos theta between e.n
     //             and e.dir for an area light; a point light (Light::isDelta) and the
     //             background have no cosine here (their Le is an intensity, or the disk they

@@ -6,8 +6,8 @@
 namespace ps {
 
 CameraConnection connectToCamera(const Scene& scene, const SurfacePoint& y, bool onSurface, const Vec3& z) {
-    // TODO(05) The connection of y to the pinhole e = z (= camera.position(); lesson 11 passes a
-    //          point on a lens) (Eq. 5.3, 5.5):
+    // TODO(05) The connection of y to the pinhole e = z (= camera.position(); a camera model's
+    //          point otherwise) (Eq. 5.3, 5.5):
     //          1. raster: camera.rasterPosition(e, y.p, raster); invalid if false.
     //          2. d = distance from y to e, wCam = (e - y.p) / d; the direction from the
     //             pinhole to y is -wCam. W = the pixel's sensor there (lesson 4, Eq. 4.6):

@@ -8,7 +8,9 @@ namespace ps {
 
 void lightWalk(const Scene& scene, Rng& rng, const WalkOptions& opt, const LightWalkVisitor& visit) {
     // TODO(05) The particle's walk (Eq. 5.1, 5.2, 5.6-5.8): start it with startLightPath
-    //          (rng.uniform(), rng.uniform2(), rng.uniform2()); nothing if not valid. Visit y0
+    //          (scene, uLight, uPos, uDir), drawn into variables in that order (rng.uniform(),
+    //          rng.uniform2(), rng.uniform2(): a call's arguments have no order); nothing if
+    //          not valid. Visit y0
     //          (a WalkVertex with bounces 0, hit, sp = start.y0, beta = start.beta), then lesson
     //          3's randomWalk from a WalkStart along start.ray (its fields say what the particle's
     //          first hit y1 shows), scattering with sampleAdjointBSDF and the options given, with

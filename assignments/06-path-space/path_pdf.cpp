@@ -17,7 +17,7 @@ double pdfTechnique(const Scene& scene, const Path& x, int s) {
     //          Pitfalls: 0 for what cannot be sampled (Eq. 6.12: t < 1, s = 0 at a point light, a
     //          specular end of the joining edge, t = 1 with x_{k-1} the background); in double;
     //          pdfBSDF's first argument is the direction the walk arrived from; no Russian roulette.
-    //          (Lesson 11: t = 0 when x_k is a lens point, x[k].lens: the light subpath samples
+    //          (A camera model: t = 0 when x_k is its point, x[k].onCamera: the light subpath samples
     //          every vertex, x_k included, and there is no joining edge.)
     (void)scene; (void)x; (void)s;
     return PS_TODO("lesson 06: pdfTechnique", 0.0);

@@ -7,8 +7,8 @@ namespace ps {
 
 bool techniqueSamples(const PathVertex* x, int n, int sPrime) {
     // TODO(07) Eq. 7.7 / 7.12: whether technique s' can make the joined path x_0 .. x_{n-1}.
-    //          Pitfalls: t' = 0 never at the pinhole (it cannot be hit; lesson 11's lens point,
-    //          x[n-1].lens, can: then always), s' = 0 not with a point light, no edge at a specular
+    //          Pitfalls: t' = 0 never at the pinhole (it cannot be hit; a camera model's point,
+    //          x[n-1].onCamera, can: then always), s' = 0 not with a point light, no edge at a specular
     //          vertex, and not the background joined straight to the pinhole.
     (void)x; (void)n; (void)sPrime;
     return PS_TODO("lesson 07: techniqueSamples", false);

@@ -1,6 +1,7 @@
-// Lesson 8 — the photon map's kd-tree: left-balanced, in one array in heap order. Interface:
+// Lesson 8 — the kd-tree over a set of points (the photon map's): left-balanced, in arrays in heap order. Interface:
 // lessons/08-photon-mapping/photonmap.h. Equation numbers refer to lessons/08-photon-mapping/README.md.
 #include <algorithm>
+#include <tuple>
 #include "08-photon-mapping/photonmap.h"
 #include "todo.h"
 
@@ -16,16 +17,17 @@ size_t leftSubtreeSize(size_t n) {
 }
 
 
-void buildPhotonMap(std::vector<Photon> photons, PhotonMap& map) {
-    // TODO(08) Eq. 8.4: map.nodes gets n + 1 entries (node 0 unused), then the tree of all photons
-    //          at node 1, recursively, for the photons of a node in one range [begin, end) of the
-    //          array: the axis of largest extent of their bounding box; the median index
-    //          m = begin + leftSubtreeSize(end - begin), found with std::nth_element on that
-    //          coordinate (O(n) per level, O(n log n) in all; do not sort); the median photon goes
-    //          to the node with its axis, [begin, m) to node 2i, (m, end) to node 2i + 1. A node
-    //          without children keeps axis 0. No photons: map.nodes empty.
-    (void)photons; (void)map;
-    (void)PS_TODO("lesson 08: buildPhotonMap", 0);
+void buildKdTree(const std::vector<Vec3>& points, KdTree& tree) {
+    // TODO(08) Eq. 8.4: the tree's arrays get n + 1 entries (index 0 unused), then the tree of all
+    //          points at node 1, recursively, for the points of a node in one range [begin, end)
+    //          of an array of their indices: the axis of largest extent of their bounding box; the
+    //          median index m = begin + leftSubtreeSize(end - begin), found with std::nth_element
+    //          on that coordinate (O(n) per level, O(n log n) in all; do not sort); the median
+    //          point goes to the node with its index and axis, [begin, m) to node 2i, (m, end) to
+    //          node 2i + 1. A node without children keeps axis 0. No points: empty arrays.
+    (void)points;
+    tree = KdTree();
+    (void)PS_TODO("lesson 08: buildKdTree", 0);
 }
 
 }  // namespace ps

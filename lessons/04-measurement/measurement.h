@@ -47,10 +47,11 @@ SurfacePoint emissionPoint(const Scene& scene, int l, const EmissionSample& e);
 
 // One particle of the flux through S, measured from the lights (Eq. 4.12, 4.13): choose a light
 // by power (scene.selectLight(rng.uniform(), P)), a point and direction on it
-// (sampleEmission(scene, l, rng.uniform2(), rng.uniform2())), give the particle the power it
-// carries, trace its ray, and return that power if the first surface it hits belongs to S
-// (from either side), else 0. The mean over many particles is the flux through S of the light
-// that reaches S straight from the lights (the only light in a scene where nothing else reflects).
+// (sampleEmission(scene, l, uPos, uDir), uPos = rng.uniform2() drawn before uDir = rng.uniform2()),
+// give the particle the power it carries, trace its ray, and return that power if the first
+// surface it hits belongs to S (from either side), else 0. The mean over many particles is the
+// flux through S of the light that reaches S straight from the lights (the only light in a scene
+// where nothing else reflects).
 Color fluxParticle(const Scene& scene, const Region& S, Rng& rng);
 
 }  // namespace ps

@@ -41,9 +41,6 @@ struct LightTracer : Integrator {
             "connected to the pinhole (lesson 5, Eq. 5.9)"};
     }
 
-    // A thin lens (lesson 11): traceLightPath connects each path to a point on the lens.
-    bool rendersThinLens() const override { return true; }
-
     void renderIteration(const Scene& scene, uint32_t iteration, uint64_t seed, Image& out,
                          SampleStats& stats) override {
         const int maxDepth = onlyLightVertices(scene) ? 0 : scene.settings.maxDepth;
@@ -54,7 +51,9 @@ struct LightTracer : Integrator {
 
 }  // namespace
 
-PS_REGISTER_INTEGRATOR(LightTracer, "lt",
-                       "light tracing: paths from the lights, every vertex connected to the camera (lesson 5)");
+// A camera model: traceLightPath connects each path to one of the camera's points.
+PS_REGISTER_INTEGRATOR_CAPS(LightTracer, "lt",
+                            "light tracing: paths from the lights, every vertex connected to the camera (lesson 5)",
+                            IntegratorCaps().withCameraModels());
 
 }  // namespace ps

@@ -38,12 +38,13 @@ struct CameraConnection {
                               // Eq. 4.6) times the geometry term cos(theta_e) |cos(theta_y)| / d^2,
                               // without |cos(theta_y)| when y is not on a surface (a point light),
                               // over the density of the camera point e, camera.pdfPoint() (1 for
-                              // the pinhole; a lens point's, lesson 11)
+                              // the pinhole; a camera model's point's, framework/camera.h)
 };
 
-// Connects y to the camera point z (Eq. 5.5): the pinhole camera.position(), or (lesson 11) a
-// point on a thin lens, for which camera.rasterPosition(z, ...) and camera.We(z, ...) hold the
-// lens's own raster position and importance (for the pinhole they are the one-point forms).
+// Connects y to the camera point z (Eq. 5.5): the pinhole camera.position(), or a point of the
+// camera's model (framework/camera.h), for which camera.rasterPosition(z, ...) and
+// camera.We(z, ...) hold the model's own raster position and importance (for the pinhole they are
+// the one-point forms).
 // onSurface: y lies on a surface with normal y.n (false for a point light's position).
 CameraConnection connectToCamera(const Scene& scene, const SurfacePoint& y, bool onSurface, const Vec3& z);
 // The same for the pinhole, z = camera.position() (plumbing).
@@ -64,10 +65,10 @@ bool sampleAdjointBSDF(const Material& m, const Vec3& n, const Vec3& wLight, con
 using LightWalkVisitor = std::function<bool(const WalkVertex& v, const LightPathStart& start)>;
 
 // The particle's random walk (Eq. 5.1, 5.2, 5.6-5.8): startLightPath with rng.uniform(),
-// rng.uniform2(), rng.uniform2() (nothing if it is not valid), visit y0, then lesson 3's walk
-// (randomWalk) from y0's ray with the particle's power start.beta, scattering with the adjoint
-// BSDF (sampleAdjointBSDF), visiting every surface the particle hits (not a miss: a particle that
-// leaves the scene is gone), at most opt.maxDepth bounces; Russian roulette as lesson 3's on the
+// rng.uniform2(), rng.uniform2(), drawn in that order (nothing if it is not valid), visit y0,
+// then lesson 3's walk (randomWalk) from y0's ray with the particle's power start.beta,
+// scattering with the adjoint BSDF (sampleAdjointBSDF), visiting every surface the particle hits
+// (not a miss: a particle that leaves the scene is gone), at most opt.maxDepth bounces; Russian roulette as lesson 3's on the
 // product of the scattering weights alone (the throughput since y0, without start.beta): q =
 // opt.survival(throughput, bounces). The options' direction sampler and continuation rule work as
 // in lesson 3's walk. Lesson 7's light subpath is this walk too; lesson 8's photons take it with a
@@ -77,8 +78,7 @@ void lightWalk(const Scene& scene, Rng& rng, const WalkOptions& opt, const Light
 // One light path (Eq. 5.1-5.4): the light walk, whose visitor connects y0 and every
 // non-specular vertex to the camera and adds each connection's contribution through
 // out.add(raster, value) (a SplatTarget, framework/film.h). Every connection goes to one camera
-// point z, drawn before the walk: the pinhole (no number drawn), or for a thin lens (lesson 11) a
-// point on the lens.
+// point z, drawn before the walk: the pinhole (no number drawn), or a point of the camera's model.
 void traceLightPath(const Scene& scene, Rng& rng, int maxDepth, const SplatTarget& out);
 // The same with the light walk's options given (lesson 3's WalkOptions: its maximum depth, and a
 // survival function, direction sampler or continuation rule of the caller's); the form above is

@@ -26,6 +26,19 @@ PathVertex lightVertex(const Scene& scene, int l, const EmissionSample& e) {
     return v;
 }
 
+PathVertex lightVertex(const Scene& scene, int l, const LightSample& ls) {
+    const Light& light = scene.lights[size_t(l)];
+    if (light.isInfinite()) return backgroundVertex(scene, ls.wi);
+    PathVertex v;
+    v.sp.p = ls.p;
+    v.sp.n = ls.n;
+    v.sp.errScale = maxAbsComponent(ls.p);
+    v.sp.light = l;
+    v.onLight = true;
+    v.pointLight = light.isDelta();
+    return v;
+}
+
 PathVertex backgroundVertex(const Scene& scene, const Vec3& towardsBackground) {
     PathVertex v;
     v.sp.n = towardsBackground;
@@ -48,7 +61,7 @@ PathVertex cameraVertex(const Scene& scene, const Vec3& z) {
     PathVertex v;
     v.sp.p = z;
     v.sp.n = scene.camera.forward();
-    v.lens = true;
+    v.onCamera = true;
     return v;
 }
 
@@ -74,9 +87,9 @@ bool visible(const Scene& scene, const PathVertex& a, const PathVertex& b) {
         // point light that lies on a surface, which it moves off that surface.
         return glm::length(b.sp.p - a.sp.p) > 0.0f && !scene.occluded(scene.spawnRayTo(a.sp, b.sp.p));
     }
-    // A point on a thin lens is no surface of the scene either: no offset at it.
-    if (b.deltaPosition() || b.lens) return !scene.occluded(scene.spawnRayTo(a.sp, b.sp.p));
-    if (a.deltaPosition() || a.lens) return !scene.occluded(scene.spawnRayTo(b.sp, a.sp.p));
+    // A camera model's point is no surface of the scene either: no offset at it.
+    if (b.deltaPosition() || b.onCamera) return !scene.occluded(scene.spawnRayTo(a.sp, b.sp.p));
+    if (a.deltaPosition() || a.onCamera) return !scene.occluded(scene.spawnRayTo(b.sp, a.sp.p));
     return !scene.occluded(scene.spawnRayTo(a.sp, b.sp));
 }
 

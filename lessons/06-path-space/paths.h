@@ -1,5 +1,5 @@
 // Lesson 6's path space: a light path as a point x = x0 x1 ... xk of the path space (x0 on a
-// light, xk the camera: the pinhole, or a point on a thin lens (lesson 11); k edges: "path
+// light, xk the camera: the pinhole, or a point of a camera model (framework/camera.h); k edges: "path
 // length k"), the measurement contribution f(x) in
 // three-point form (Eq. 6.3), the geometry term (Eq. 6.4), the solid-angle -> area conversion
 // (Eq. 6.6) and the area-measure pdf p_{s,t}(x) of a path under each sampling technique (s light
@@ -28,8 +28,8 @@ struct PathVertex {
                               // that emits (a camera ray may hit it)
     bool pointLight = false;  // a point light: a delta position, no surface, no cosine
     bool pinhole = false;     // the pinhole camera: a delta position; sp.n = camera.forward()
-    bool lens = false;        // a point on a thin lens (lesson 11): a camera vertex a ray can hit;
-                              // on a surface (the lens's disk), sp.n = camera.forward()
+    bool onCamera = false;    // a point of a camera model (framework/camera.h): a camera vertex a
+                              // ray can hit; on the camera's surface, sp.n = camera.forward()
     bool specular = false;    // a surface whose material is delta (mirror, glass)
     bool infinite = false;    // the background: not a point but a direction; sp.n is the unit
                               // direction from x1 towards the background, sp.p is unused
@@ -44,7 +44,7 @@ struct PathVertex {
     // A delta position (point light or pinhole): no ray can hit it.
     bool deltaPosition() const { return pointLight || pinhole; }
     // The camera's vertex x_k (z_0 of a camera subpath).
-    bool isCamera() const { return pinhole || lens; }
+    bool isCamera() const { return pinhole || onCamera; }
     // The vertex lies on a surface with normal sp.n (cosines count there).
     bool onSurface() const { return !pointLight && !pinhole && !infinite; }
 };
@@ -69,7 +69,7 @@ float pdfSolidAngleToArea(float pdfW, const PathVertex& from, const PathVertex& 
 //   f(x) = Le(x0 -> x1) G(x0, x1) V(x0, x1) prod_{i=1}^{k-1} f_s(x_{i-1} -> x_i -> x_{i+1}) G(x_i, x_{i+1}) V(x_i, x_{i+1})
 //          * W_e^(j)(x_{k-1} -> x_k),
 // W_e^(j) = width * height * camera.We(x_k, direction from x_k to x_{k-1}) (lesson 4, Eq. 4.6;
-// the two-argument We also serves a thin lens, lesson 11), V from visible(). In double: a long path's f in a scene at scale 1e-4 or 1e4 leaves
+// the two-argument We also serves a camera model), V from visible(). In double: a long path's f in a scene at scale 1e-4 or 1e4 leaves
 // the float range (it has a 1/d^2 per edge), while f / p stays moderate. A specular vertex contributes the coefficient of its Dirac delta
 // (deltaLobe, Eq. 6.11), 0 if the directions are not its reflected / refracted pair.
 DColor contribution(const Scene& scene, const Path& x);
@@ -79,7 +79,7 @@ DColor contribution(const Scene& scene, const Path& x);
 // x_{k-t+1}, and the deterministic edge x_{s-1} x_s joins them. The camera point x_k has density
 // camera.pdfPoint() (1 for the pinhole: a delta position), its direction camera.pdfDirection(x_k,
 // ...). 0 if the technique cannot sample the path (Eq. 6.12): t = 0 with a pinhole (no ray hits
-// it; a thin lens can be hit, lesson 11: then the light subpath samples every vertex and there is
+// it; a camera model's points can be: then the light subpath samples every vertex and there is
 // no joining edge), s = 0 with a point light, a specular vertex at either end of the joining edge,
 // t = 1 with x_{k-1} the background (k = 1: a direction cannot be joined to the camera). Lesson
 // 7's techniqueSamples is the same rule. Russian roulette is not part of p_{s,t}. In double, as f.
@@ -89,10 +89,13 @@ double pdfTechnique(const Scene& scene, const Path& x, int s);
 
 // Vertices from what the framework gives: a surface point hit by a ray (on a light if it is
 // emissive; specular if its material is delta), a point on light l chosen by sampleEmission
-// (the background: the direction -e.dir), the camera's: the pinhole, or the lens point z (a
-// thin lens, lesson 11; the one-argument form is the pinhole's vertex, also for a lens camera).
+// (the background: the direction -e.dir), the camera's: the pinhole, or the point z of a camera
+// model (the one-argument form is the pinhole's vertex, also for a camera with a model).
 PathVertex surfaceVertex(const Scene& scene, const SurfacePoint& sp);
 PathVertex lightVertex(const Scene& scene, int l, const EmissionSample& e);
+// The same for a point of light l that sampleLight chose (next-event estimation; the background:
+// the direction ls.wi).
+PathVertex lightVertex(const Scene& scene, int l, const LightSample& ls);
 PathVertex backgroundVertex(const Scene& scene, const Vec3& towardsBackground);
 PathVertex cameraVertex(const Scene& scene);
 PathVertex cameraVertex(const Scene& scene, const Vec3& z);
@@ -142,8 +145,8 @@ float deltaTolerance(const PathVertex& a, const PathVertex& v, const PathVertex&
 // subpath of s vertices (a light chosen by power, sampleEmission, then sampleBSDF in Importance
 // mode), a camera subpath of t vertices (the camera point, a ray through a uniform raster
 // position, then sampleBSDF in Radiance mode), joined by an edge. raster: the pixel it lands in
-// (t >= 2: the camera ray's; t = 1: where x_{k-1} projects). t = 0 (s = k + 1, a thin lens only,
-// lesson 11): the light subpath's last direction must hit the lens, unoccluded; raster: where.
+// (t >= 2: the camera ray's; t = 1: where x_{k-1} projects). t = 0 (s = k + 1, a camera model
+// only): the light subpath's last direction must hit the camera, unoccluded; raster: where.
 // valid is false if sampling failed (a miss, s = 0 ending on a non-emitter, an invalid BSDF
 // sample); the estimate is then 0.
 struct TechniqueSample {

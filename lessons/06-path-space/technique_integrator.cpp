@@ -14,7 +14,6 @@ namespace {
 struct TechniqueIntegrator : Integrator {
     int k, s;  // k < 0: maxdepth + 1; s < 0: s = k (t = 1)
     TechniqueIntegrator(int k_, int s_) : k(k_), s(s_) {}
-    bool rendersThinLens() const override { return true; }  // sampleTechnique takes lens points
 
     void renderIteration(const Scene& scene, uint32_t iteration, uint64_t seed, Image& out,
                          SampleStats& stats) override {
@@ -42,15 +41,21 @@ using PathT1 = FixedS<-1>;
 
 }  // namespace
 
-PS_REGISTER_INTEGRATOR(PathS0, "path-s0",
-                       "paths of length maxdepth + 1 by technique s = 0 alone: camera subpath hits a light (lesson 6)");
-PS_REGISTER_INTEGRATOR(PathS1, "path-s1",
-                       "paths of length maxdepth + 1 by technique s = 1 alone: next-event estimation (lesson 6)");
-PS_REGISTER_INTEGRATOR(PathS2, "path-s2", "paths of length maxdepth + 1 by technique s = 2 alone (lesson 6)");
-PS_REGISTER_INTEGRATOR(PathS3, "path-s3", "paths of length maxdepth + 1 by technique s = 3 alone (lesson 6)");
-PS_REGISTER_INTEGRATOR(PathS4, "path-s4", "paths of length maxdepth + 1 by technique s = 4 alone (lesson 6)");
-PS_REGISTER_INTEGRATOR(PathT1, "path-t1",
-                       "paths of length maxdepth + 1 by technique t = 1 alone: light tracing (lesson 6)");
+PS_REGISTER_INTEGRATOR_CAPS(
+    PathS0, "path-s0", "paths of length maxdepth + 1 by technique s = 0 alone: camera subpath hits a light (lesson 6)",
+    IntegratorCaps().withCameraModels());
+PS_REGISTER_INTEGRATOR_CAPS(PathS1, "path-s1",
+                            "paths of length maxdepth + 1 by technique s = 1 alone: next-event estimation (lesson 6)",
+                            IntegratorCaps().withCameraModels());
+PS_REGISTER_INTEGRATOR_CAPS(PathS2, "path-s2", "paths of length maxdepth + 1 by technique s = 2 alone (lesson 6)",
+                            IntegratorCaps().withCameraModels());
+PS_REGISTER_INTEGRATOR_CAPS(PathS3, "path-s3", "paths of length maxdepth + 1 by technique s = 3 alone (lesson 6)",
+                            IntegratorCaps().withCameraModels());
+PS_REGISTER_INTEGRATOR_CAPS(PathS4, "path-s4", "paths of length maxdepth + 1 by technique s = 4 alone (lesson 6)",
+                            IntegratorCaps().withCameraModels());
+PS_REGISTER_INTEGRATOR_CAPS(PathT1, "path-t1",
+                            "paths of length maxdepth + 1 by technique t = 1 alone: light tracing (lesson 6)",
+                            IntegratorCaps().withCameraModels());
 
 RenderResult renderTechnique(const Scene& scene, int k, int s, int iterations, uint64_t seed, int threads) {
     TechniqueIntegrator integrator(k, s);

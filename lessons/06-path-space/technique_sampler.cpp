@@ -1,5 +1,5 @@
 // Lesson 6 — plumbing (nothing to write here): sampling a path of length k with technique
-// (s, t = k + 1 - s) (Eq. 6.8; t = 0 only with a thin lens, lesson 11), and the estimate f(x) / p_{s,t}(x) of one such path (Eq. 6.2),
+// (s, t = k + 1 - s) (Eq. 6.8; t = 0 only with a camera model, framework/camera.h), and the estimate f(x) / p_{s,t}(x) of one such path (Eq. 6.2),
 // which uses your contribution and pdfTechnique. Interface: lessons/06-path-space/paths.h.
 #include "06-path-space/paths.h"
 
@@ -10,7 +10,7 @@ TechniqueSample sampleTechnique(const Scene& scene, int k, int s, Rng& rng) {
     const int t = k + 1 - s;
     const Camera& camera = scene.camera;
     if (k < 1 || s < 0 || t < 0) return ts;
-    if (t == 0 && camera.isPinhole()) return ts;  // a ray cannot hit the pinhole (a thin lens it can)
+    if (t == 0 && camera.isPinhole()) return ts;  // a ray cannot hit the pinhole (a camera model it can)
     Path& x = ts.x;
     x.resize(size_t(k) + 1);
     // The light subpath x0 ... x_{s-1}: a light chosen by power, a point and a direction on it,
@@ -19,38 +19,46 @@ TechniqueSample sampleTechnique(const Scene& scene, int k, int s, Rng& rng) {
         float P = 0.0f;
         const int l = scene.selectLight(rng.uniform(), P);
         if (l < 0 || P <= 0.0f) return ts;
-        const EmissionSample e = sampleEmission(scene, l, rng.uniform2(), rng.uniform2());
+        // Named, in this order: C++ evaluates a call's arguments in no fixed order.
+        const Vec2 uPos = rng.uniform2();
+        const Vec2 uDir = rng.uniform2();
+        const EmissionSample e = sampleEmission(scene, l, uPos, uDir);
         if (!(e.pdfA > 0.0f && e.pdfW > 0.0f)) return ts;
         x[0] = lightVertex(scene, l, e);
         Ray ray = x[0].infinite ? Ray(e.p, e.dir) : scene.spawnRay(x[0].sp, e.dir);
-        // t = 0: the light subpath's last vertex x_k is where its last ray meets the lens.
+        // t = 0: the light subpath's last vertex x_k is where its last ray meets the camera.
         const int surfaces = t == 0 ? s - 2 : s - 1;
         for (int i = 1; i <= surfaces; ++i) {
             SurfacePoint sp;
             if (!scene.intersect(ray, sp)) return ts;
             x[size_t(i)] = surfaceVertex(scene, sp);
             if (i == s - 1) break;
+            // Named, in this order: C++ evaluates a call's arguments in no fixed order.
+            const Vec2 u = rng.uniform2();  // in this order, as uPos and uDir above
+            const float uLobe = rng.uniform();
             BSDFSample b;
-            if (!sampleBSDF(scene.materials[size_t(sp.material)], sp.n, -ray.d, rng.uniform2(), rng.uniform(),
-                            Transport::Importance, b))
+            if (!sampleBSDF(scene.materials[size_t(sp.material)], sp.n, -ray.d, u, uLobe, Transport::Importance, b))
                 return ts;
             ray = scene.spawnRay(sp, b.wi);
         }
-        if (t == 0) {  // visibility up to the lens is f's (visible())
+        if (t == 0) {  // visibility up to the camera is f's (visible())
             float tz = 0.0f;
             Vec3 z;
-            if (!camera.hitLens(ray, tz, z) || !camera.lensRasterOfDirection(z, -ray.d, ts.raster)) return ts;
+            if (!camera.hit(ray, tz, z) || !camera.rasterOfDirection(z, -ray.d, ts.raster)) return ts;
             x[size_t(k)] = cameraVertex(scene, z);
             ts.valid = true;
             return ts;
         }
     }
-    // The camera subpath x_k ... x_s: the camera point (the pinhole, or a point on a thin lens), a
+    // The camera subpath x_k ... x_s: the camera point (the pinhole, or a camera model's point), a
     // ray through a uniform raster position, then the BSDF in Radiance mode (the path tracer's
     // directions, lesson 3).
     x[size_t(k)] = cameraVertex(scene, camera.samplePoint(rng));
     if (t >= 2) {
-        ts.raster = Vec2(rng.uniform() * float(camera.width()), rng.uniform() * float(camera.height()));
+        // Named, in this order: C++ evaluates a call's arguments in no fixed order.
+        const float ux = rng.uniform();  // in this order, as uPos and uDir above
+        const float uy = rng.uniform();
+        ts.raster = Vec2(ux * float(camera.width()), uy * float(camera.height()));
         Ray ray = camera.generateRay(ts.raster, x[size_t(k)].p());
         for (int j = k - 1; j >= s; --j) {
             SurfacePoint sp;
@@ -61,9 +69,11 @@ TechniqueSample sampleTechnique(const Scene& scene, int k, int s, Rng& rng) {
             }
             x[size_t(j)] = surfaceVertex(scene, sp);
             if (j == s) break;
+            // Named, in this order: C++ evaluates a call's arguments in no fixed order.
+            const Vec2 u = rng.uniform2();  // in this order, as uPos and uDir above
+            const float uLobe = rng.uniform();
             BSDFSample b;
-            if (!sampleBSDF(scene.materials[size_t(sp.material)], sp.n, -ray.d, rng.uniform2(), rng.uniform(),
-                            Transport::Radiance, b))
+            if (!sampleBSDF(scene.materials[size_t(sp.material)], sp.n, -ray.d, u, uLobe, Transport::Radiance, b))
                 return ts;
             ray = scene.spawnRay(sp, b.wi);
         }

@@ -23,10 +23,11 @@
 // compares. The pinhole is chosen with probability 1 and a point light with P(l) (delta
 // positions: coefficients again); a density that is 0 means "cannot be sampled this way".
 //
-// A thin lens (lesson 11): z_0 is a point on the lens (PathVertex::lens), sampled with
-// camera.pdfPoint() per unit area, and no longer a delta position: a light subpath can hit it,
-// which is the technique t = 0 (lessons/11-classics/thinlens.h; bptSample adds it). For a pinhole
-// camera.pdfPoint() is 1 and every camera function of z is the pinhole's.
+// A camera model (framework/camera.h, e.g. a lens): z_0 is a point of the camera
+// (PathVertex::onCamera), sampled with camera.pdfPoint() per unit area, and no longer a delta
+// position: a light subpath can hit it, which is the technique t = 0 (a later lesson's extra
+// technique adds it to bptSample, below). For a pinhole camera.pdfPoint() is 1 and every camera
+// function of z is the pinhole's.
 #pragma once
 #include <functional>
 #include <vector>
@@ -36,14 +37,14 @@
 
 namespace ps {
 
-// A subpath: y_0 (on a light) .. y_{s-1}, or z_0 (the camera: the pinhole, or a lens point) ..
+// A subpath: y_0 (on a light) .. y_{s-1}, or z_0 (the camera: the pinhole, or a model's point) ..
 // z_{t-1} (Eq. 7.1).
 using Subpath = std::vector<PathVertex>;
 
 // ---- vertex pdfs (vertex_pdfs.cpp), one function for sampling and for MIS (Eq. 7.3) ----
 
 // Density of choosing the light vertex v itself (Eq. 7.3), from pdfEmission (framework/light.h):
-// P(l) / area for an area light, P(l) for a point light, P(l) * pdfBackgroundDirection() for the
+// P(l) / area for an area light, P(l) for a point light, P(l) * 1 / (4 pi) for the
 // background (solid angle).
 // v.sp.light is the light's index; v may be a camera-path vertex that hit an emitter.
 float pdfLightOrigin(const Scene& scene, const PathVertex& v);
@@ -66,6 +67,20 @@ float pdfLightToward(const Scene& scene, const PathVertex& light, const PathVert
 float pdfScatter(const Scene& scene, const PathVertex* prev, const PathVertex& cur, const PathVertex& next,
                  Transport mode);
 
+// One scattering event: vertex `cur` (on a surface) between its neighbour on the light side and
+// its neighbour on the camera side, f and both its densities in one call (plumbing,
+// techniques.cpp; Eq. 7.2, 7.3, 7.6): what a connection at cur needs for its value and its MIS.
+struct Scattering {
+    Color f = Color(0.0f);          // f_s(light side -> cur -> camera side): evalBSDF(m, n, towards the
+                                    // camera side, towards the light side) (0 at a delta BSDF)
+    float pdfTowardsCamera = 0.0f;  // area density of the camera-side vertex when a light subpath leaves
+                                    // cur: pdfScatter(light side, cur, camera side, Importance)
+    float pdfTowardsLight = 0.0f;   // area density of the light-side vertex when a camera subpath leaves
+                                    // cur: pdfScatter(camera side, cur, light side, Radiance)
+};
+Scattering scatteringAt(const Scene& scene, const PathVertex& lightSide, const PathVertex& cur,
+                        const PathVertex& cameraSide);
+
 // ---- subpaths (light_subpath.cpp, camera_subpath.cpp), Eq. 7.1 ----
 
 // The light subpath: at most maxDepth + 1 vertices (y_0 on a light, then one per bounce): lesson
@@ -73,12 +88,18 @@ float pdfScatter(const Scene& scene, const PathVertex* prev, const PathVertex& c
 // once y_i exists, the flags, and, after each vertex, updateMisSum(path, i, h). Clears path first.
 void lightSubpath(const Scene& scene, Rng& rng, int maxDepth, Heuristic h, Subpath& path);
 
+// What to do once a camera subpath vertex z_i (i >= 1) is stored, with its pdfFwd and misSum
+// (Eq. 7.9; z_{i-2}'s pdfRev known): a later algorithm's work at every camera vertex (merging it
+// with the light vertices nearby, say). path holds z_0 .. z_i. Return false to end the subpath.
+using CameraVertexVisitor = std::function<bool(const Subpath& path)>;
+
 // The camera subpath through raster position `raster`: z_0 the camera point (cameraVertex of
-// camera.samplePoint(rng): the pinhole, or a lens point drawn from rng), then lesson 3's
-// cameraWalk, whose visitor stores one vertex per intersection; at most maxDepth + 2 vertices; a
-// ray that leaves the scene ends it with a vertex at infinity if there is a background. Clears
-// path first.
-void cameraSubpath(const Scene& scene, Rng& rng, const Vec2& raster, int maxDepth, Heuristic h, Subpath& path);
+// camera.samplePoint(rng): the pinhole, or a model's point drawn from rng), then lesson 3's
+// cameraWalk, whose visitor stores one vertex per intersection and hands it to `visit` (if set); at
+// most maxDepth + 2 vertices; a ray that leaves the scene ends it with a vertex at infinity if
+// there is a background. Clears path first.
+void cameraSubpath(const Scene& scene, Rng& rng, const Vec2& raster, int maxDepth, Heuristic h, Subpath& path,
+                   const CameraVertexVisitor& visit = nullptr);
 
 // ---- the connection (connect.cpp), Eq. 7.2, 7.4, 7.6 ----
 
@@ -112,7 +133,7 @@ struct Connection {
 Connection connectEmitter(const Scene& scene, const PathVertex* z, int t);
 
 // t = 1, s >= 1: y_{s-1} joined to the camera point z0 (the camera subpath's z_0: the pinhole, or
-// its point on a thin lens) by lesson 5's connectToCamera (c = f W_e G; for s = 1 the light's own
+// a camera model's point) by lesson 5's connectToCamera (c = f W_e G; for s = 1 the light's own
 // emission towards the camera); raster: where it lands. Not valid for a background y_0 (a
 // direction cannot be joined to the camera).
 Connection connectCamera(const Scene& scene, const PathVertex* y, int s, const PathVertex& z0);
@@ -124,12 +145,13 @@ Connection connectCamera(const Scene& scene, const PathVertex* y, int s);
 // pdfLightOrigin and beta = 1 / pdfFwd; c = Le G f. Not valid at a background z_{t-1}.
 Connection connectLight(const Scene& scene, const PathVertex* z, int t, float uLight, const Vec2& uPos);
 
-// s, t >= 2: y_{s-1} and z_{t-1} joined by a shadow ray: c = f G f.
+// s, t >= 2: y_{s-1} and z_{t-1} joined by a shadow ray: c = f G f, both f and the connection's
+// reverse pdfs (rev, Eq. 7.6) from scatteringAt at the two endpoints.
 Connection connectVertices(const Scene& scene, const PathVertex* y, int s, const PathVertex* z, int t);
 
 // Technique (s, t) for the given subpaths (plumbing, techniques.cpp; s <= light.size() except
-// s = 1, t >= 2; t <= camera.size(), t >= 1): the connection of its kind, then, if valid, rev =
-// connectionPdfs. For t = 1 sampledLight is light[0] (the MIS reads y from it whenever s = 1).
+// s = 1, t >= 2; t <= camera.size(), t >= 1): the connection of its kind, then, if valid and the
+// kind did not fill them (s or t < 2), rev = connectionPdfs. For t = 1 sampledLight is light[0] (the MIS reads y from it whenever s = 1).
 Connection connect(const Scene& scene, const Subpath& light, const Subpath& camera, int s, int t, float uLight,
                    const Vec2& uPos);
 
@@ -137,7 +159,7 @@ Connection connect(const Scene& scene, const Subpath& light, const Subpath& came
 
 // Whether technique s' of a full path of n vertices x_0 .. x_{n-1} (x_0 on the light, x_{n-1}
 // the camera) can sample it (Eq. 7.7): t' = n - s' >= 1, or t' = 0 when x_{n-1} is a point on a
-// thin lens (lesson 11: no joining edge then); s' = 0 needs x_0 not a point light; otherwise
+// camera model (no joining edge then); s' = 0 needs x_0 not a point light; otherwise
 // x_{s'-1} and x_{s'} both non-specular, and not a background vertex joined straight to the
 // camera (s' = 1, t' = 1, x_0 infinite).
 bool techniqueSamples(const PathVertex* x, int n, int sPrime);
@@ -146,16 +168,16 @@ bool techniqueSamples(const PathVertex* x, int n, int sPrime);
 // x_0 .. x_{n-1} (y then z reversed), with pL[i] (density from the light side) and pE[i] (from
 // the camera side) from pdfFwd/pdfRev and the connection's rev; p_s' = prod_{i<s'} pL[i]
 // prod_{i>=s'} pE[i] (the stored numbers as they are: no 0 is replaced), and w = p_s^b / sum over sampling techniques of p_s'^b.
-// y: s vertices (s = 1: &c.sampledLight), z: t vertices. t = 0 (a thin lens, lesson 11): y holds
-// the whole path, its last vertex on the lens; rev.lightEnd and rev.lightPrev are then the camera
+// y: s vertices (s = 1: &c.sampledLight), z: t vertices. t = 0 (a camera model): y holds the whole
+// path, its last vertex on the camera; rev.lightEnd and rev.lightPrev are then the camera
 // side's densities of y_{s-1} (camera.pdfPoint()) and y_{s-2}.
 float misWeightFull(const PathVertex* y, int s, const PathVertex* z, int t, const ReversePdfs& rev, Heuristic h);
 
 // The recursive partial sum (Eq. 7.9) for vertex i of a subpath, once path[i-2].pdfRev is
 // known: B_0 = B_1 = 0, B_i = r_{i-2}^b (c_{i-2} + B_{i-1}), r_j = pdfRev/pdfFwd of path[j]
 // (0 if pdfFwd is 0), c_j whether the connection may sit just before path[j] (Eq. 7.10).
-// Light subpaths: c_0 = not a point light; camera subpaths: c_0 = 0 at a pinhole, 1 at a lens
-// point (t = 0, lesson 11). Stores it in path[i].misSum.
+// Light subpaths: c_0 = not a point light; camera subpaths: c_0 = 0 at a pinhole, 1 at a camera
+// model's point (t = 0). Stores it in path[i].misSum.
 void updateMisSum(Subpath& path, size_t i, Heuristic h);
 
 // The same weight as misWeightFull with O(1) work (Eq. 7.8-7.10), from the endpoints' misSum
@@ -168,12 +190,11 @@ struct BptOptions {
     Heuristic heuristic = Heuristic::Power;
     bool recursive = true;  // misWeightRecursive (else misWeightFull)
     bool prune = true;      // leave out what the scene cannot use (Eq. 7.12)
-    // Lesson 11's path expressions (`--paths`, 11-classics/path_filter.h): if set, technique (s, t)
-    // adds its path only if pathTest(light, camera, s, t) says it matches. The random numbers of
-    // s = 1 are drawn before the test, so every technique meets the same numbers either way. With
-    // a thin lens, t = 0 asks it too (s = m + 2, t = 0, camera empty: the lens point is the last
-    // vertex), after connectLens has drawn its step's numbers.
-    std::function<bool(const Subpath& light, const Subpath& camera, int s, int t)> pathTest;
+    // The technique filter: if set, technique (s, t) adds its path only if
+    // techniqueFilter(light, camera, s, t) says so (an algorithm that renders only some paths sets
+    // it). The random numbers of s = 1 are drawn before the test, so every technique meets the
+    // same numbers either way. An extra technique asks it too, with its own (s, t).
+    std::function<bool(const Subpath& light, const Subpath& camera, int s, int t)> techniqueFilter;
 };
 
 // What one pixel sample's techniques gave, for per-technique images (Veach's pyramid).
@@ -184,9 +205,18 @@ struct TechniqueRecorder {
     virtual void add(int s, int t, const Vec2& raster, const Color& unweighted, const Color& weighted) = 0;
 };
 
-// One pixel sample: a camera subpath through `raster`, a light subpath, every (s, t). Returns
-// the t >= 2 estimate for the pixel; t = 1 contributions go to splat, and so does t = 0 with a
-// thin lens (lesson 11's connectLens at every light vertex). recorder may be null.
+// Techniques a later lesson adds to bidirectional path tracing (Registry<ExtraTechnique>, keyed by
+// a name): bptSample calls each after its own (s, t >= 1), in the order registered, with the
+// pixel sample's light subpath and rng. An extra technique decides from the scene whether it
+// applies (t = 0 needs a camera whose points rays can hit: a camera model, camera.h), draws no
+// number where it does not, weights what it samples by this lesson's MIS against every other
+// technique, asks opt.techniqueFilter, and adds it through splat (and the recorder, if any).
+using ExtraTechnique = void (*)(const Scene& scene, const Subpath& light, Rng& rng, const BptOptions& opt,
+                                const SplatTarget& splat, TechniqueRecorder* recorder);
+
+// One pixel sample: a camera subpath through `raster`, a light subpath, every (s, t), then the
+// extra techniques. Returns the t >= 2 estimate for the pixel; t = 1 contributions go to splat,
+// and so do the extra techniques' (t = 0). recorder may be null.
 Color bptSample(const Scene& scene, const Vec2& raster, Rng& rng, const BptOptions& opt, const SplatTarget& splat,
                 TechniqueRecorder* recorder);
 
@@ -208,5 +238,11 @@ inline int techniqueCount(int maxLength) { return techniqueIndex(0, maxLength + 
 // do not depend on the number of threads (t = 1 values are added in a fixed order).
 TechniqueImages renderTechniques(const Scene& scene, int maxLength, int spp, uint64_t seed, int threads,
                                  const BptOptions& opt);
+
+// The per-technique images the pyramid command asks an integrator for (framework/integrator.h,
+// Integrator::techniques): renderTechniques as rows k = 1 .. maxLength of cells s = 0 .. k + 1,
+// named "s-t" and labelled "(s,t)". options(scene) gives the options (an algorithm that renders
+// only some paths sets its technique filter per scene).
+TechniqueRenderer bptTechniqueRenderer(std::function<BptOptions(const Scene&)> options);
 
 }  // namespace ps

@@ -8,13 +8,12 @@
 // it), then every technique (s, t) (Eq. 7.2). t >= 2 goes to the pixel, t = 1 is splatted with
 // the factor 1 / (width * height) of lesson 5 (Eq. 5.4) into a SplatBuffer whose lists are
 // added in a fixed order: the image does not depend on the number of threads (the framework's
-// task loop, framework/tasks.h). With a thin-lens camera (lesson 11) the technique t = 0 is
-// splatted the same way (lessons/11-classics/lens_technique.cpp).
+// task loop, framework/tasks.h). A later lesson's extra techniques (bpt.h: t = 0 with a camera
+// whose points rays can hit) are splatted the same way.
 //
 // Left out where the scene shows it cannot contribute (Eq. 7.12, exact): see bptLeftOut.
 #include <omp.h>
 #include "07-bidirectional/bpt.h"
-#include "11-classics/thinlens.h"
 #include "tasks.h"
 
 namespace ps {
@@ -72,7 +71,7 @@ Color bptSample(const Scene& scene, const Vec2& raster, Rng& rng, const BptOptio
                 uLight = rng.uniform();
                 uPos = rng.uniform2();
             }
-            if (opt.pathTest && !opt.pathTest(light, camera, s, t)) continue;  // lesson 11's --paths
+            if (opt.techniqueFilter && !opt.techniqueFilter(light, camera, s, t)) continue;
             const Connection c = connect(scene, light, camera, s, t, uLight, uPos);
             if (!c.valid) continue;
             const PathVertex* y = s == 1 ? &c.sampledLight : light.data();
@@ -88,16 +87,18 @@ Color bptSample(const Scene& scene, const Vec2& raster, Rng& rng, const BptOptio
             }
         }
     }
-    if (!scene.camera.isPinhole()) lensTechniques(scene, light, rng, opt, splat, recorder);
+    for (const auto& extra : Registry<ExtraTechnique>::inOrder()) extra.value(scene, light, rng, opt, splat, recorder);
     return L;
 }
 
 namespace {
 
 struct BptBase : Integrator {
+    BptBase() {
+        techniques = bptTechniqueRenderer([this](const Scene&) { return opt; });
+    }
     BptOptions opt;
     std::vector<std::string> leftOut(const Scene& scene) const override { return bptLeftOut(scene, opt); }
-    bool rendersThinLens() const override { return true; }  // t = 0 included (lesson 11)
 
     void renderIteration(const Scene& scene, uint32_t iteration, uint64_t seed, Image& out,
                          SampleStats& stats) override {
@@ -171,15 +172,16 @@ TechniqueImages renderTechniques(const Scene& scene, int maxLength, int spp, uin
     std::vector<std::vector<ImageRecorder::Splat>> lists(static_cast<size_t>(taskCount(pixels)));
     for (int it = 0; it < spp; ++it) {
         // No SplatBuffer: bptSample's own t = 1 splats (the weighted image) are not wanted here.
-        runTasks(pixels, seed, uint32_t(it), nullptr, 1.0f / static_cast<float>(pixels), out.stats,
-                 [&](int pixel, Rng& rng, Task& task) {
-                     ImageRecorder recorder;
-                     recorder.images = &out;
-                     recorder.splats = &lists[task.index];
-                     recorder.stats = &task.stats;
-                     const Vec2 raster = jitteredRaster(pixel, w, rng);
-                     bptSample(limited, raster, rng, opt, task.splat, &recorder);
-                 });
+        TaskLoop loop(pixels, seed, uint32_t(it));
+        loop.splatScale = 1.0f / static_cast<float>(pixels);
+        runTasks(loop, out.stats, [&](int pixel, Rng& rng, Task& task) {
+            ImageRecorder recorder;
+            recorder.images = &out;
+            recorder.splats = &lists[task.index];
+            recorder.stats = &task.stats;
+            const Vec2 raster = jitteredRaster(pixel, w, rng);
+            bptSample(limited, raster, rng, opt, task.splat, &recorder);
+        });
         for (auto& list : lists) {  // t = 1, in task order
             for (const ImageRecorder::Splat& sp : list)
                 ImageRecorder::accumulate(out, sp.technique, sp.x, sp.y, sp.unweighted, sp.weighted);
@@ -198,10 +200,46 @@ TechniqueImages renderTechniques(const Scene& scene, int maxLength, int spp, uin
     return out;
 }
 
-PS_REGISTER_INTEGRATOR(
+TechniqueRenderer bptTechniqueRenderer(std::function<BptOptions(const Scene&)> options) {
+    TechniqueRenderer r;
+    r.layout = [](int maxLength) {
+        std::vector<TechniqueRow> rows;
+        for (int k = 1; k <= maxLength; ++k) {
+            TechniqueRow row;
+            row.label = "k=" + std::to_string(k);
+            for (int s = 0; s <= k + 1; ++s) {
+                const std::string st = std::to_string(s) + "," + std::to_string(k + 1 - s);
+                row.cells.push_back({std::to_string(s) + "-" + std::to_string(k + 1 - s), "(" + st + ")", {}, {}});
+            }
+            rows.push_back(row);
+        }
+        return rows;
+    };
+    r.render = [layout = r.layout, options](const Scene& scene, const TechniqueImagesOptions& o) {
+        const TechniqueImages t = renderTechniques(scene, o.maxLength, o.spp, o.seed, o.threads, options(scene));
+        TechniquePyramid p;
+        p.rows = layout(o.maxLength);
+        p.stats = t.stats;
+        for (int k = 1; k <= o.maxLength; ++k)
+            for (int s = 0; s <= k + 1; ++s) {
+                TechniqueCell& cell = p.rows[size_t(k - 1)].cells[size_t(s)];
+                cell.unweighted = t.unweighted[size_t(techniqueIndex(s, k))];
+                cell.weighted = t.weighted[size_t(techniqueIndex(s, k))];
+            }
+        return p;
+    };
+    return r;
+}
+
+// Every technique renders a camera model's paths too (its points are the camera subpath's first
+// vertex; a later lesson's extra technique adds t = 0 where rays can hit them).
+PS_REGISTER_INTEGRATOR_CAPS(
     BptPower, "bpt",
-    "bidirectional path tracing: all (s, t) connections, power-heuristic MIS (recursive form) (lesson 7)");
-PS_REGISTER_INTEGRATOR(BptBalance, "bpt-balance", "bpt with the balance heuristic (lesson 7)");
-PS_REGISTER_INTEGRATOR(BptFull, "bpt-full", "bpt with MIS weights from the full pdf list (lesson 7)");
+    "bidirectional path tracing: all (s, t) connections, power-heuristic MIS (recursive form) (lesson 7)",
+    IntegratorCaps().withCameraModels().withTechniqueImages());
+PS_REGISTER_INTEGRATOR_CAPS(BptBalance, "bpt-balance", "bpt with the balance heuristic (lesson 7)",
+                            IntegratorCaps().withCameraModels().withTechniqueImages());
+PS_REGISTER_INTEGRATOR_CAPS(BptFull, "bpt-full", "bpt with MIS weights from the full pdf list (lesson 7)",
+                            IntegratorCaps().withCameraModels().withTechniqueImages());
 
 }  // namespace ps

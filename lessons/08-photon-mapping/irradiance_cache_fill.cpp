@@ -34,7 +34,7 @@ IrradianceCache buildIrradianceCache(const Scene& scene, const PhotonMap& global
                     pixels.push_back(y * width + x);
         std::vector<std::optional<IrradianceRecord>> made(pixels.size());
         const uint64_t levelSeed = seed ^ (kCacheSalt + uint64_t(stride) * 0x9E3779B97F4A7C15ull);
-        runTasks(int(pixels.size()), levelSeed, iteration, nullptr, 0.0f, stats, [&](int item, Rng& rng, Task&) {
+        runTasks(TaskLoop(int(pixels.size()), levelSeed, iteration), stats, [&](int item, Rng& rng, Task&) {
             const int pixel = pixels[size_t(item)];
             const Ray ray = scene.camera.generateRay(Vec2(float(pixel % width) + 0.5f, float(pixel / width) + 0.5f));
             cameraWalk(scene, ray, rng, {opt.maxDepth}, [&](const WalkVertex& v) {

@@ -1,5 +1,6 @@
 // Lesson 8 — the photon's storage and the photon pass (plumbing: read it, nothing to write
-// here): the octahedral direction encoding of Photon, the filters' names, and tracePhotonMap,
+// here): the octahedral direction encoding of Photon, the photon map on your kd-tree (the tree of
+// the photons' positions, the photons in its node order), the filters' names, and tracePhotonMap,
 // which traces a map's photon paths in the framework's parallel task loop (framework/tasks.h):
 // path i draws from taskRng(seed, iteration, i), each task keeps its photons in its own list, and
 // the lists are joined in task order, so the map does not depend on the number of threads.
@@ -44,6 +45,23 @@ Vec3 Photon::wLight() const {
 
 static_assert(sizeof(Photon) <= 32, "a photon must fit in 32 bytes");
 
+void buildPhotonMap(std::vector<Photon> photons, PhotonMap& map) {
+    std::vector<Vec3> points(photons.size());
+    for (size_t i = 0; i < photons.size(); ++i) points[i] = photons[i].p;
+    buildKdTree(points, map.tree);
+    map.nodes.assign(map.tree.size() + (map.tree.size() > 0 ? 1 : 0), Photon());
+    for (size_t i = 1; i <= map.tree.size(); ++i) map.nodes[i] = photons[map.tree.item[i]];
+}
+
+int nearestPhotons(const PhotonMap& map, const Vec3& x, int k, float maxD2, std::vector<NearPhoton>& found) {
+    return nearestPoints(map.tree, x, k, maxD2, found);
+}
+
+int photonsInRadius(const PhotonMap& map, const Vec3& x, float r2, std::vector<NearPhoton>& found) {
+    found.clear();
+    return pointsInRadius(map.tree, x, r2, [&](uint32_t node, float d2) { found.push_back({node, d2}); });
+}
+
 const char* filterName(Filter f) {
     switch (f) {
     case Filter::Box: return "box";
@@ -59,7 +77,7 @@ PhotonMap tracePhotonMap(const Scene& scene, MapKind kind, int emitted, int maxD
     map.emitted = emitted;
     if (emitted <= 0) return map;
     std::vector<std::vector<Photon>> perTask(size_t(taskCount(emitted)));
-    runTasks(emitted, seed, iteration, nullptr, 0.0f, stats, [&](int, Rng& rng, Task& task) {
+    runTasks(TaskLoop(emitted, seed, iteration), stats, [&](int, Rng& rng, Task& task) {
         tracePhoton(scene, rng, maxDepth, kind, emitted, perTask[task.index], rules ? rules() : ContinuationRule());
     });
     std::vector<Photon> photons;

@@ -13,6 +13,7 @@
 // lessons/08-photon-mapping/README.md derives every formula (Eq. 8.1-8.18).
 #pragma once
 #include <cstdint>
+#include <functional>
 #include <vector>
 #include "05-light-tracing/lighttracer.h"
 
@@ -20,64 +21,87 @@ namespace ps {
 
 // ---- the photon (framework of this lesson: photon_map.cpp) ----
 
-// One stored photon: 32 bytes. The direction it arrived from is kept in 2 x 16 bits
+// One stored photon: 28 bytes. The direction it arrived from is kept in 2 x 16 bits
 // (octahedral encoding, error below 1e-4 rad).
 struct Photon {
     Vec3 p;                    // where it landed
     Color power;               // Delta Phi, its power in watts (Eq. 8.2)
     uint16_t dir[2] = {0, 0};  // wLight, unit, back towards where it came from (encodeDirection)
-    uint8_t axis = 0;          // the kd-tree's splitting axis at this node (0 x, 1 y, 2 z; Eq. 8.4)
-    uint8_t unused = 0;
-    Vec3 wLight() const;  // decodes dir
+    Vec3 wLight() const;       // decodes dir
     void setWLight(const Vec3& w);
 };
 
-// A photon map: the kd-tree of Eq. 8.4 in one array in heap order. nodes[0] is unused; the
-// root is nodes[1]; the children of node i are nodes[2i] and nodes[2i + 1] when those indices
-// are <= size(); no pointers. A left-balanced tree of n photons fills nodes[1 .. n] exactly.
-struct PhotonMap {
-    std::vector<Photon> nodes;
-    int emitted = 0;  // N, the photons emitted to make this map (their power is Phi / N)
-    size_t size() const { return nodes.empty() ? 0 : nodes.size() - 1; }
-};
+// ---- the kd-tree (kdtree.cpp, Eq. 8.4): over any set of points ----
 
-// ---- the kd-tree (kdtree.cpp, Eq. 8.4) ----
+// A left-balanced kd-tree over a set of points, in arrays in heap order (Eq. 8.4): node i (1 ..
+// size()) holds the point p[i], its index item[i] in the set the tree was built from, and the
+// axis it splits on (0 x, 1 y, 2 z); the root is node 1; the children of node i are 2i and 2i + 1
+// when those are <= size(); index 0 is unused; no pointers. A left-balanced tree of n points fills
+// nodes 1 .. n exactly. The photon map is one (PhotonMap); any algorithm that looks points up by
+// position (light vertices near a camera vertex, say) builds its own.
+struct KdTree {
+    std::vector<Vec3> p;
+    std::vector<uint32_t> item;
+    std::vector<uint8_t> axis;
+    size_t size() const { return p.empty() ? 0 : p.size() - 1; }
+};
 
 // The number of nodes in the left subtree of a left-balanced binary tree of n >= 1 nodes
 // (every level full but the last, whose nodes are packed to the left).
 size_t leftSubtreeSize(size_t n);
 
-// Builds the left-balanced kd-tree of the photons (any order) in O(n log n): each node splits
-// its photons on the axis of largest extent of their bounding box, at the median that makes its
-// left subtree leftSubtreeSize(n) photons (std::nth_element), the median photon goes to the node
-// (axis set), those with a smaller or equal coordinate to its left subtree (node 2i), the rest to
-// its right (2i + 1). Fills map.nodes (size n + 1); map.emitted is left as it is.
-void buildPhotonMap(std::vector<Photon> photons, PhotonMap& map);
+// Builds the left-balanced kd-tree of the points (any order) in O(n log n): each node splits its
+// points on the axis of largest extent of their bounding box, at the median that makes its left
+// subtree leftSubtreeSize(n) points (std::nth_element), the median point goes to the node (axis
+// set), those with a smaller or equal coordinate to its left subtree (node 2i), the rest to its
+// right (2i + 1). Fills tree's arrays (size n + 1).
+void buildKdTree(const std::vector<Vec3>& points, KdTree& tree);
 
 // ---- queries (kdtree_query.cpp, Eq. 8.5) ----
 
-// A photon found by a query: its node index in map.nodes and its squared distance to the query
-// point, |p - x|^2 computed as photonDistance2 does.
+// A point found by a query: its node (an index into the tree's arrays) and its squared distance
+// to the query point, |p - x|^2 computed as photonDistance2 does.
 struct NearPhoton {
     uint32_t node = 0;
     float d2 = 0.0f;
 };
 inline float photonDistance2(const Vec3& p, const Vec3& x) { return glm::dot(p - x, p - x); }
 // Orders a max-heap of NearPhoton by d2 (std::push_heap / std::pop_heap with this comparison:
-// the farthest photon on top, at found[0]).
+// the farthest point on top, at found[0]).
 inline bool nearerPhoton(const NearPhoton& a, const NearPhoton& b) { return a.d2 < b.d2; }
 
-// The k nearest photons to x with d2 <= maxD2 (Eq. 8.5): found is cleared, then holds
-// min(k, number within maxD2) photons as a max-heap under nearerPhoton (found[0] the farthest).
+// The k nearest points to x with d2 <= maxD2 (Eq. 8.5): found is cleared, then holds
+// min(k, number within maxD2) points as a max-heap under nearerPhoton (found[0] the farthest).
 // Ties (equal distances) may be broken either way. The search descends first into the child on
 // x's side of the splitting plane and visits the other child only if the squared distance from x
-// to the plane is <= the current bound (maxD2 until k photons are found, then found[0].d2).
-// Returns the number of nodes visited (whose photon's distance was computed).
-int nearestPhotons(const PhotonMap& map, const Vec3& x, int k, float maxD2, std::vector<NearPhoton>& found);
+// to the plane is <= the current bound (maxD2 until k points are found, then found[0].d2).
+// Returns the number of nodes visited (whose point's distance was computed).
+int nearestPoints(const KdTree& tree, const Vec3& x, int k, float maxD2, std::vector<NearPhoton>& found);
 
-// Every photon with d2 <= r2 (any order): found is cleared first. Same pruning (a subtree is
-// visited only if the squared distance to its splitting plane is <= r2). Returns the number of
-// nodes visited.
+// The radius query's visitor: called once for every point found, with its node and d2.
+using PointVisitor = std::function<void(uint32_t node, float d2)>;
+// Every point with d2 <= r2, each handed to visit (in the order the search meets them). Same
+// pruning (a subtree is visited only if the squared distance to its splitting plane is <= r2).
+// Returns the number of nodes visited.
+int pointsInRadius(const KdTree& tree, const Vec3& x, float r2, const PointVisitor& visit);
+
+// ---- the photon map (plumbing, photon_map.cpp) ----
+
+// A photon map: the kd-tree of the photons' positions, and the photons in its node order:
+// nodes[i] is the photon at node i (nodes[0] unused).
+struct PhotonMap {
+    KdTree tree;
+    std::vector<Photon> nodes;
+    int emitted = 0;  // N, the photons emitted to make this map (their power is Phi / N)
+    size_t size() const { return tree.size(); }
+};
+
+// The photons' kd-tree (buildKdTree of their positions) and the photons in its node order; map.emitted
+// is left as it is.
+void buildPhotonMap(std::vector<Photon> photons, PhotonMap& map);
+// The k nearest photons (nearestPoints on the map's tree: NearPhoton::node indexes map.nodes).
+int nearestPhotons(const PhotonMap& map, const Vec3& x, int k, float maxD2, std::vector<NearPhoton>& found);
+// Every photon with d2 <= r2 (pointsInRadius on the map's tree), in found (cleared first).
 int photonsInRadius(const PhotonMap& map, const Vec3& x, float r2, std::vector<NearPhoton>& found);
 
 // ---- filters (filters.cpp, Eq. 8.7-8.10) ----

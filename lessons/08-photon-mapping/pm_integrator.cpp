@@ -64,10 +64,9 @@ struct PhotonMapper : Integrator {
         });
     }
 
-    // A thin lens (lesson 11): the camera rays go through it (tasks.h, cameraRay); the photon
-    // maps do not depend on the camera. (pm-ic's cache is filled from the pinhole's rays through
-    // the pixel centres; where a lens ray's point has no record it gathers as pm.)
-    bool rendersThinLens() const override { return true; }
+    // A camera model: the camera rays come from it (tasks.h, cameraRay); the photon maps do not
+    // depend on the camera. (pm-ic's cache is filled from the pinhole's rays through the pixel
+    // centres; where a camera ray's point has no record it gathers as pm.)
 
     void renderIteration(const Scene& scene, uint32_t iteration, uint64_t seed, Image& out,
                          SampleStats& stats) override {
@@ -97,9 +96,11 @@ struct PhotonMapperCached : PhotonMapper {
 
 }  // namespace
 
-PS_REGISTER_INTEGRATOR(PhotonMapper, "pm",
-                       "photon mapping: direct light, caustic map, final gathering into the global map (lesson 8)");
-PS_REGISTER_INTEGRATOR(PhotonMapperCached, "pm-ic",
-                       "pm with Ward's irradiance cache as the final gather at diffuse surfaces (lesson 8)");
+PS_REGISTER_INTEGRATOR_CAPS(PhotonMapper, "pm",
+                            "photon mapping: direct light, caustic map, final gathering into the global map (lesson 8)",
+                            IntegratorCaps().withCameraModels());
+PS_REGISTER_INTEGRATOR_CAPS(PhotonMapperCached, "pm-ic",
+                            "pm with Ward's irradiance cache as the final gather at diffuse surfaces (lesson 8)",
+                            IntegratorCaps().withCameraModels());
 
 }  // namespace ps

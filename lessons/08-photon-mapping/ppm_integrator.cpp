@@ -46,7 +46,6 @@ void renderPpmPass(const Scene& scene, uint32_t iteration, uint64_t seed, Image&
 namespace {
 
 struct ProgressivePhotonMapper : Integrator {
-    bool rendersThinLens() const override { return true; }  // lens rays (tasks.h, cameraRay), lesson 11
     void renderIteration(const Scene& scene, uint32_t iteration, uint64_t seed, Image& out,
                          SampleStats& stats) override {
         renderPpmPass(scene, iteration, seed, out, stats);
@@ -55,7 +54,9 @@ struct ProgressivePhotonMapper : Integrator {
 
 }  // namespace
 
-PS_REGISTER_INTEGRATOR(ProgressivePhotonMapper, "ppm",
-                       "progressive photon mapping: the radius shrinks from pass to pass (Knaus-Zwicker, lesson 8)");
+PS_REGISTER_INTEGRATOR_CAPS(
+    ProgressivePhotonMapper, "ppm",
+    "progressive photon mapping: the radius shrinks from pass to pass (Knaus-Zwicker, lesson 8)",
+    IntegratorCaps().withCameraModels());
 
 }  // namespace ps

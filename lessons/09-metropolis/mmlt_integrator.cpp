@@ -89,7 +89,7 @@ void MMLT::start(const Scene& scene, uint64_t seed, int pixels, SampleStats& sta
     std::vector<size_t> first(size_t(K) + 2, 0);
     for (int k = 1; k <= K; ++k) first[size_t(k + 1)] = first[size_t(k)] + size_t(perLength) * size_t(k + 1);
     std::vector<float> I(first[size_t(K) + 1], 0.0f);
-    runTasks(K * perLength, cameraSeed, 0, nullptr, 1.0f, stats, [&](int j, Rng& camera, Task& task) {
+    runTasks(TaskLoop(K * perLength, cameraSeed, 0), stats, [&](int j, Rng& camera, Task& task) {
         thread_local SubpathPair paths;
         const int k = j / perLength + 1;
         Rng light = taskRng(lightSeed, 0, uint32_t(j));
@@ -170,7 +170,7 @@ void MMLT::start(const Scene& scene, uint64_t seed, int pixels, SampleStats& sta
     scale_.resize(size_t(chains));
     // Chain c's first state: its seed sample, replayed (a large step reads every coordinate
     // afresh, in order, from the same generators).
-    runTasks(chains, cameraSeed, 1, nullptr, 1.0f, stats, [&](int c, Rng&, Task& task) {
+    runTasks(TaskLoop(chains, cameraSeed, 1), stats, [&](int c, Rng&, Task& task) {
         MultiplexedChain& chain = chains_[size_t(c)];
         const int j = startOf[size_t(c)], k = lengthOf[size_t(c)];
         const PathLength& l = lengths_[size_t(k - 1)];
@@ -198,7 +198,9 @@ void MMLT::renderIteration(const Scene& scene, uint32_t iteration, uint64_t seed
     const int chains = int(chains_.size());
     SplatBuffer splats(out.width, out.height, size_t(taskCount(chains)));
     const uint64_t cameraSeed = mix64(seed ^ kCameraTag), lightSeed = mix64(seed ^ kLightTag);
-    runTasks(chains, seed, iteration, &splats, 1.0f, stats, [&](int c, Rng& rng, Task& task) {
+    TaskLoop loop(chains, seed, iteration);
+    loop.splats = &splats;
+    runTasks(loop, stats, [&](int c, Rng& rng, Task& task) {
         MultiplexedChain& chain = chains_[size_t(c)];
         chain.camera.setRng(taskRng(cameraSeed, iteration, uint32_t(c)));
         chain.light.setRng(taskRng(lightSeed, iteration, uint32_t(c)));

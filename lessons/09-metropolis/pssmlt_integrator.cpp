@@ -41,7 +41,7 @@ void PSSMLT::start(const Scene& scene, uint64_t seed, int pixels, SampleStats& s
     const uint64_t bootSeed = mix64(seed ^ kBootstrapTag);
     const int n = std::max(1, settings_.bootstrapPerPixel) * pixels;
     std::vector<float> I(size_t(n), 0.0f);
-    runTasks(n, bootSeed, 0, nullptr, 1.0f, stats,
+    runTasks(TaskLoop(n, bootSeed, 0), stats,
              [&](int i, Rng& rng, Task& task) { I[size_t(i)] = evaluatePath(scene, rng, task.stats).I; });
     const int chains = settings_.chains > 0 ? settings_.chains : std::max(1, pixels / 64);
     Rng pick = taskRng(bootSeed, 1, 0);
@@ -54,7 +54,7 @@ void PSSMLT::start(const Scene& scene, uint64_t seed, int pixels, SampleStats& s
     stepsPerChain_ = (pixels + chains - 1) / chains;
     // Chain c's first state: its seed path, replayed from the same generator (a large step reads
     // every coordinate afresh, in order, from it).
-    runTasks(chains, bootSeed, 2, nullptr, 1.0f, stats, [&](int c, Rng&, Task& task) {
+    runTasks(TaskLoop(chains, bootSeed, 2), stats, [&](int c, Rng&, Task& task) {
         Chain& chain = chains_[size_t(c)];
         chain.samples = PrimarySamples(taskRng(bootSeed, 0, boot.starts[size_t(c)]));
         chain.samples.startProposal(true);
@@ -74,7 +74,10 @@ void PSSMLT::renderIteration(const Scene& scene, uint32_t iteration, uint64_t se
     // Eq. 9.11: pixel j = b pixels / M times the weighted sum of L / I of the splats in it.
     const float scale = float(b_ * double(pixels) / double(stepsPerIteration()));
     const uint64_t samplesSeed = mix64(seed ^ kSamplesTag);
-    runTasks(chains, seed, iteration, &splats, scale, stats, [&](int c, Rng& rng, Task& task) {
+    TaskLoop loop(chains, seed, iteration);
+    loop.splats = &splats;
+    loop.splatScale = scale;
+    runTasks(loop, stats, [&](int c, Rng& rng, Task& task) {
         Chain& chain = chains_[size_t(c)];
         chain.samples.setRng(taskRng(samplesSeed, iteration, uint32_t(c)));
         const PathEvaluator evaluate = [&](Rng& replay) { return evaluatePath(scene, replay, task.stats); };

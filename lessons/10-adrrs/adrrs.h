@@ -146,8 +146,9 @@ Continuations continuations(const Color& beta, float q, Rng& rng);
 // The rule ADRRS asks at each vertex the walk may go on from: the expected number of continuations q.
 using ExpectedContinuations = std::function<float(const WalkVertex& v)>;
 
-// A camera ray's walk may start at most this many paths (1 + the extra continuations of every
-// split); once it has, q is cut to min(q, 1) (roulette still plays: unbiased, and bounded work).
+// Once a camera ray's walk has started this many paths (1 + the extra continuations of every
+// split), q is cut to min(q, 1) (roulette still plays: unbiased, and bounded work). The split just
+// before can still start kMaxContinuations - 1 more: at most 31 + 7 = 38 paths (README 1.3).
 constexpr int kMaxPathsPerCameraRay = 32;
 
 // The walk with survival and splitting (Algorithm 10.1): lesson 3's camera walk (with lesson 3's
@@ -199,8 +200,6 @@ public:
     void renderIteration(const Scene& scene, uint32_t iteration, uint64_t seed, Image& out,
                          SampleStats& stats) override;
     std::vector<std::string> report() const override;
-    // A thin lens (lesson 11): the pre-pass and the pixels take lens rays (tasks.h, cameraRay).
-    bool rendersThinLens() const override { return true; }
 
     const AdjointCache& cache() const { return cache_; }
     const PathCounts& counts() const { return counts_; }

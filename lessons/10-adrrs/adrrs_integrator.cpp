@@ -49,7 +49,7 @@ AdjointCache ADRRSPathTracer::prePass(const Scene& scene, int paths, int resolut
     const int width = scene.camera.width(), pixels = width * scene.camera.height();
     const int maxDepth = scene.settings.maxDepth;
     std::vector<std::vector<CacheSample>> lists(size_t(taskCount(paths)));
-    runTasks(paths, seed, 0, nullptr, 1.0f, stats, [&](int i, Rng& rng, Task& task) {
+    runTasks(TaskLoop(paths, seed, 0), stats, [&](int i, Rng& rng, Task& task) {
         const Vec2 raster = jitteredRaster(i % pixels, width, rng);
         std::vector<PrePassVertex> path;
         cameraWalk(scene, cameraRay(scene.camera, raster, rng), rng, {maxDepth}, [&](const WalkVertex& v) {
@@ -157,7 +157,8 @@ std::vector<std::string> ADRRSPathTracer::report() const {
     return lines;
 }
 
-PS_REGISTER_INTEGRATOR(ADRRSPathTracer, "pt-adrrs",
-                       "path tracing with adjoint-driven Russian roulette and splitting (lesson 10)");
+PS_REGISTER_INTEGRATOR_CAPS(ADRRSPathTracer, "pt-adrrs",
+                            "path tracing with adjoint-driven Russian roulette and splitting (lesson 10)",
+                            IntegratorCaps().withCameraModels());
 
 }  // namespace ps

@@ -1,6 +1,6 @@
 // Lesson 11 — plumbing: `bpt --paths EXPR` (and bpt-balance, bpt-full), lesson 7's bidirectional
 // path tracer restricted to the paths an expression matches (path_filter.h): before technique
-// (s, t) connects, BptOptions::pathTest (bptPathMatches) joins the light prefix, read forward,
+// (s, t) connects, BptOptions::techniqueFilter (bptPathMatches) joins the light prefix, read forward,
 // with the camera prefix, read backward (Eq. 11.5). A path's string does not depend on the
 // technique that sampled it, so the MIS weights of the techniques that can sample a matching path
 // still add up to one: the filtered image is the integral over the matching paths (Eq. 11.5).
@@ -21,9 +21,20 @@ struct FilteredBpt : Integrator {
     FilteredBpt(const PathExpression& e, Heuristic h, bool recursive) : paths(e) {
         opt.heuristic = h;
         opt.recursive = recursive;
+        techniques = bptTechniqueRenderer([this](const Scene& scene) { return filtered(scene); });
     }
     PathExpression paths;
     BptOptions opt;
+
+    // The options with lesson 7's technique filter: the technique's path must match (valid while
+    // scene is).
+    BptOptions filtered(const Scene& scene) const {
+        BptOptions o = opt;
+        o.techniqueFilter = [this, &scene](const Subpath& light, const Subpath& camera, int s, int t) {
+            return bptPathMatches(paths, scene, light, camera, s, t);
+        };
+        return o;
+    }
 
     std::vector<std::string> leftOut(const Scene& scene) const override {
         std::vector<std::string> lines = bptLeftOut(scene, opt);
@@ -32,16 +43,11 @@ struct FilteredBpt : Integrator {
             lines.push_back(l);
         return lines;
     }
-    std::string carriedPaths(const Scene&) const override { return paths.text(); }
-    bool rendersThinLens() const override { return true; }  // t = 0 included, filtered as the rest
 
     void renderIteration(const Scene& scene, uint32_t iteration, uint64_t seed, Image& out,
                          SampleStats& stats) override {
         if (scene.settings.prune && !sceneCanMatch(paths, scene)) return;
-        BptOptions o = opt;
-        o.pathTest = [&](const Subpath& light, const Subpath& camera, int s, int t) {
-            return bptPathMatches(paths, scene, light, camera, s, t);
-        };
+        const BptOptions o = filtered(scene);
         renderPixelTasks(seed, iteration, out, stats, true, [&](int pixel, Rng& rng, Task& task) {
             const Vec2 raster = jitteredRaster(pixel, out.width, rng);
             return bptSample(scene, raster, rng, o, task.splat, nullptr);

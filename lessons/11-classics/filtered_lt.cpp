@@ -39,8 +39,6 @@ struct FilteredLightTracer : Integrator {
                             " bounces: no longer path matches '" + paths.text() + "' on this scene");
         return lines;
     }
-    std::string carriedPaths(const Scene&) const override { return paths.text(); }
-    bool rendersThinLens() const override { return true; }  // each path joins a lens point
 
     void renderIteration(const Scene& scene, uint32_t iteration, uint64_t seed, Image& out,
                          SampleStats& stats) override {

@@ -75,10 +75,6 @@ struct FilteredPhotonMapper : Integrator {
             lines.push_back("the caustic map: no specular surface, so no photon path L S+ D (lesson 8, Eq. 8.2)");
         return lines;
     }
-    std::string carriedPaths(const Scene&) const override { return paths.text(); }
-    // A thin lens: the camera rays go through it (tasks.h, cameraRay), as pm's; the photon maps do
-    // not depend on the camera.
-    bool rendersThinLens() const override { return true; }
 
     // One photon path (pm's tracePhoton, Eq. 8.1-8.3), its photons tagged with their states.
     void tracePhotonPath(const Scene& scene, Rng& rng, int maxDepth, MapKind kind, int emitted,
@@ -111,7 +107,7 @@ struct FilteredPhotonMapper : Integrator {
     StateMaps traceMaps(const Scene& scene, MapKind kind, int emitted, int maxDepth, uint64_t seed, uint32_t iteration,
                         SampleStats& stats) const {
         std::vector<std::vector<TypedPhoton>> perTask(size_t(taskCount(emitted)));
-        runTasks(emitted, seed, iteration, nullptr, 0.0f, stats, [&](int, Rng& rng, Task& task) {
+        runTasks(TaskLoop(emitted, seed, iteration), stats, [&](int, Rng& rng, Task& task) {
             tracePhotonPath(scene, rng, maxDepth, kind, emitted, perTask[task.index]);
         });
         std::vector<std::vector<Photon>> byState(size_t(paths.states()));

@@ -30,7 +30,6 @@ struct FilteredPathTracer : PixelIntegrator {
             paths, scene,
             "a camera walk ends at its first vertex from which no path can match any more (a dead state, Eq. 11.6)");
     }
-    std::string carriedPaths(const Scene&) const override { return paths.text(); }
     std::vector<std::string> report() const override {
         return {"camera walks ended early (no path through them matches '" + paths.text() +
                 "'): " + std::to_string(ended.load()) + " of " + std::to_string(walks.load())};

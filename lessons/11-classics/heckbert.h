@@ -7,7 +7,7 @@
 #pragma once
 #include <string>
 #include "06-path-space/paths.h"
-#include "path_expression.h"
+#include "11-classics/path_expression.h"
 
 namespace ps {
 

@@ -1,9 +1,10 @@
-// Lesson 11 — plumbing (nothing to write here): bidirectional path tracing's technique t = 0 inside
-// lesson 7's bptSample (Eq. 11.16-11.18). With a thin lens, every light vertex y_m takes one more
+// Lesson 11 — plumbing (nothing to write here): bidirectional path tracing's technique t = 0, one of
+// lesson 7's extra techniques (bpt.h), which bptSample calls after its own (Eq. 11.16-11.18). With a
+// thin lens, every light vertex y_m takes one more
 // step (connectLens, yours), and where that step's ray meets the lens the path y_0 .. y_m z, s =
 // m + 2, t = 0, is splatted where it lands, MIS-weighted against every other technique by lesson
 // 7's own weights: the path is a light subpath that ends on the lens. Under `--paths` (lesson 7's
-// BptOptions::pathTest, filtered_bpt.cpp) the path y_0 .. y_m z is added only if it matches, with
+// BptOptions::techniqueFilter, filtered_bpt.cpp) the path y_0 .. y_m z is added only if it matches, with
 // the lens point z as its E: tested after connectLens has drawn the step's numbers, so that every
 // later step meets the same numbers whatever the expression (the images of a partition of the
 // paths add up to bpt's, sample by sample). Interface: lessons/11-classics/thinlens.h.
@@ -44,16 +45,21 @@ float lensMisWeight(const Scene& scene, const Subpath& light, int m, const LensC
 
 void lensTechniques(const Scene& scene, const Subpath& light, Rng& rng, const BptOptions& opt, const SplatTarget& splat,
                     TechniqueRecorder* recorder) {
-    static const Subpath noCamera;  // t = 0: every vertex is the light subpath's
+    if (!thinLens(scene.camera)) return;  // t = 0 needs a camera whose points rays can hit
+    static const Subpath noCamera;        // t = 0: every vertex is the light subpath's
     const int maxDepth = scene.settings.maxDepth;
     for (int m = 0; m < static_cast<int>(light.size()) && m <= maxDepth; ++m) {
         const LensConnection c = connectLens(scene, light.data(), m, rng);
         if (!c.valid) continue;
-        if (opt.pathTest && !opt.pathTest(light, noCamera, m + 2, 0)) continue;  // lesson 11's --paths
+        if (opt.techniqueFilter && !opt.techniqueFilter(light, noCamera, m + 2, 0)) continue;
         const float w = lensMisWeight(scene, light, m, c, opt.heuristic, opt.recursive);
         splat.add(c.raster, c.value * w);
         if (recorder) recorder->add(m + 2, 0, c.raster, c.value * splat.scale, c.value * (w * splat.scale));
     }
 }
+
+namespace {
+[[maybe_unused]] const bool registered = Registry<ExtraTechnique>::add("t = 0 through a thin lens", lensTechniques);
+}  // namespace
 
 }  // namespace ps

@@ -1,7 +1,54 @@
-// Lesson 11 — plumbing: what the filtered forms of pt, lt, bpt and pm share (path_filter.h).
+// Lesson 11 — plumbing: what the filtered forms of pt, lt, bpt and pm share (path_filter.h), and
+// the algorithm option `--paths` that reaches them (framework/integrator.h).
 #include "11-classics/path_filter.h"
+#include "errors.h"
 
 namespace ps {
+
+namespace {
+
+const char* const kPathsHelp =
+    R"(  --paths EXPR       render only the paths Heckbert's expression EXPR matches (lesson 11): the
+                     types of a path's vertices from the light to the eye: L light, D diffuse,
+                     G glossy (Phong), S specular (mirror, glass), E eye; . any type, [DS] one
+                     of, [^S] any but, ( ), | or, postfix * + ? (zero or more, one or more, zero
+                     or one). Every path is L.*E = L(D|G|S)*E. The algorithms marked * below
+                     honour it, the others refuse it. Examples (quote them in the shell):
+                       LE        lights seen directly        LDE      direct light on diffuse
+                       LD+E      diffuse interreflection      LS+DE    caustics
+                       L.*S.*E   paths with a specular vertex L[DG]S*E what Whitted carries
+)";
+
+std::vector<std::string> filteredAlgorithms() {
+    std::vector<std::string> names;
+    for (const auto& e : Registry<PathFilteredForm>::sorted()) names.push_back(e.name);
+    return names;
+}
+
+void checkExpression(const std::string& text) {
+    try {
+        PathExpression e(text);
+    } catch (const PathExpressionError& e) { throw OptionError("option --paths: " + e.pointed("  ")); }
+}
+
+std::unique_ptr<Integrator> makeFiltered(const std::string& algo, const std::string& text) {
+    const PathFilteredForm* form = Registry<PathFilteredForm>::find(algo);
+    if (!form) return nullptr;
+    checkExpression(text);
+    return (*form)(PathExpression(text));
+}
+
+[[maybe_unused]] const bool registered = Registry<AlgorithmOption>::add(
+    "paths", AlgorithmOption{"EXPR", kPathsHelp, filteredAlgorithms, checkExpression, makeFiltered});
+
+}  // namespace
+
+std::string carriedPaths(const std::string& algo, const Scene& scene, const AlgorithmOptions& options) {
+    for (const auto& [name, value] : options)
+        if (name == "paths") return value;
+    const CarriedPaths* carried = Registry<CarriedPaths>::find(algo);
+    return carried ? (*carried)(scene) : kAllPaths;
+}
 
 VertexType surfaceType(const Scene& scene, const SurfacePoint& sp) {
     return scatteringType(scene.materials[size_t(sp.material)]);

@@ -1,8 +1,8 @@
 // Lesson 11 — plumbing (read it, nothing to write here): Heckbert's path expressions
-// (framework/path_expression.h) applied by the algorithms that build paths. `pathspace render
-// --algo A --paths EXPR` makes A's filtered form, registered here for A = pt, lt, bpt,
-// bpt-balance, bpt-full and pm; every other algorithm refuses an expression
-// (framework/integrator.h). A filtered form adds a path's contribution only if its string, typed
+// (path_expression.h) applied by the algorithms that build paths. `--paths` is an algorithm option
+// (framework/integrator.h) that this lesson registers: `pathspace render --algo A --paths EXPR`
+// makes A's filtered form, registered (Registry<PathFilteredForm>) for A = pt, lt, bpt,
+// bpt-balance, bpt-full and pm; every other algorithm refuses an expression. A filtered form adds a path's contribution only if its string, typed
 // by your vertex classification (heckbert.h), matches (Eq. 11.5), and stops a walk where no
 // path through it can match any more (a dead state, Eq. 11.6), which leaves the image unchanged:
 //
@@ -13,12 +13,14 @@
 //   lt   (filtered_lt.cpp)   lesson 7's light subpath read forward from L, each vertex joined to
 //                            the camera (lesson 7's connectCamera: lesson 5's estimate) if L ... E
 //                            matches;
-//   bpt  (filtered_bpt.cpp)  every technique (s, t) tests its path before it connects: the light
-//                            prefix read forward, the camera prefix backward, joined (Eq. 11.5);
-//                            the per-technique images (`pathspace pyramid --paths`) too;
-//   pm   (filtered_pm.cpp)   every photon keeps the forward state of its light path (the string
-//                            from L to its own vertex); the camera side joins each density
-//                            estimate's photons with its own backward state.
+//   bpt  (filtered_bpt.cpp)  lesson 7's technique filter: every technique (s, t) tests its path
+//                            before it connects, the light prefix read forward, the camera prefix
+//                            backward, joined (Eq. 11.5); the per-technique images (`pathspace
+//                            pyramid --paths`) too;
+//   pm   (filtered_pm.cpp)   lesson 8's photon visitor keeps each photon's forward state (the
+//                            string from L to its own vertex) as its population; lesson 8's
+//                            estimate visitor joins each density estimate's populations with the
+//                            camera side's backward state.
 //
 // Without --paths nothing here runs: every algorithm renders exactly what it did before.
 #pragma once
@@ -27,9 +29,29 @@
 #include <vector>
 #include "07-bidirectional/bpt.h"
 #include "11-classics/heckbert.h"
-#include "path_expression.h"
+#include "11-classics/path_expression.h"
+#include "integrator.h"
 
 namespace ps {
+
+// An algorithm's filtered form (Registry<PathFilteredForm>, keyed by the algorithm's name): its
+// integrator restricted to the paths `paths` matches.
+using PathFilteredForm = std::unique_ptr<Integrator> (*)(const PathExpression& paths);
+// In a .cpp at namespace scope: Type has a constructor Type(const PathExpression&).
+#define PS_REGISTER_PATH_FILTER(Type, name)                                                \
+    static const bool psPathFilter_##Type = ::ps::Registry<::ps::PathFilteredForm>::add(   \
+        name, [](const ::ps::PathExpression& paths) -> std::unique_ptr<::ps::Integrator> { \
+            return std::make_unique<Type>(paths);                                          \
+        })
+
+// The paths an algorithm carries on a scene, as a Heckbert expression: every path (kAllPaths),
+// unless the algorithm registered fewer (Registry<CarriedPaths>: a classic, whitted's
+// "L[DG]S*E|LS*E" where every light is a point light) or "" where no expression over the alphabet
+// says which. With the option `--paths EXPR` (options): EXPR. The extreme tests compare an
+// integrator with pt filtered to its expression.
+using CarriedPaths = std::string (*)(const Scene& scene);
+constexpr const char* kAllPaths = "L.*E";
+std::string carriedPaths(const std::string& algo, const Scene& scene, const AlgorithmOptions& options = {});
 
 // The type of a surface point a walk hits, as a vertex in the middle of a path (Eq. 11.1):
 // scatteringType of its material.

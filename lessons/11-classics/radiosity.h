@@ -184,14 +184,9 @@ std::vector<PatchEstimate> patchRadiancePT(const Scene& scene, int samples, int 
 class RadiosityIntegrator : public Integrator {
 public:
     explicit RadiosityIntegrator(bool ambient = false) : ambient_(ambient) {}
-    void checkScene(const Scene& scene) const override { checkRadiosityScene(scene); }
     void prepare(const Scene& scene) override;
     void renderIteration(const Scene& scene, uint32_t iteration, uint64_t seed, Image& out,
                          SampleStats& stats) override;
-    bool latestIterationIsImage() const override { return true; }
-    // Its camera rays come from the framework's cameraRay: through a thin lens too (each
-    // iteration's image then has its m x m lens samples per pixel).
-    bool rendersThinLens() const override { return true; }
     std::vector<std::string> report() const override;
 
     // Shooting steps until `shots` more are made or the residual is below kStopResidual.

@@ -43,7 +43,7 @@ FormFactorRow formFactorRow(const Scene& scene, const ElementMesh& mesh, int i, 
     row.F.assign(size_t(mesh.size()), 0.0f);
     const Element& ei = mesh[i];
     const int samples = formFactorSamples(mesh.size());
-    runTasks(mesh.size(), seed, uint32_t(i), nullptr, 1.0f, stats, [&](int j, Rng& rng, Task&) {
+    runTasks(TaskLoop(mesh.size(), seed, uint32_t(i)), stats, [&](int j, Rng& rng, Task&) {
         const Element& ej = mesh[j];
         if (ej.quad == ei.quad || behind(ej, ei) || behind(ei, ej)) return;
         row.F[size_t(j)] = formFactor(scene, mesh, i, j, samples, rng);
@@ -171,9 +171,16 @@ struct RadiosityAmbient : RadiosityIntegrator {
 };
 }  // namespace
 
-PS_REGISTER_INTEGRATOR(RadiosityFlat, "radiosity",
-                       "progressive radiosity: diffuse quads, form factors by ray casting, shooting (lesson 11)");
-PS_REGISTER_INTEGRATOR(RadiosityAmbient, "radiosity-ambient",
-                       "progressive radiosity shown with the ambient term of Cohen et al. 1988 (lesson 11)");
+// Every iteration's image is the whole current solution; diffuse quads and area lights only; its
+// camera rays come from the framework's cameraRay, through a camera model too (each iteration's
+// image then has its m x m camera samples per pixel).
+PS_REGISTER_INTEGRATOR_CAPS(
+    RadiosityFlat, "radiosity",
+    "progressive radiosity: diffuse quads, form factors by ray casting, shooting (lesson 11)",
+    IntegratorCaps().withCameraModels().withLatestIterationIsImage().withSceneCheck(checkRadiosityScene));
+PS_REGISTER_INTEGRATOR_CAPS(
+    RadiosityAmbient, "radiosity-ambient",
+    "progressive radiosity shown with the ambient term of Cohen et al. 1988 (lesson 11)",
+    IntegratorCaps().withCameraModels().withLatestIterationIsImage().withSceneCheck(checkRadiosityScene));
 
 }  // namespace ps

@@ -33,7 +33,7 @@ std::vector<PatchEstimate> patchRadiancePT(const Scene& scene, int samples, int 
         const float p0 = t[0].area() / (t[0].area() + t[1].area());
         const size_t tasks = size_t(taskCount(samples));
         std::vector<DColor> sum(tasks, DColor(0.0)), sumSq(tasks, DColor(0.0));
-        runTasks(samples, seed, uint32_t(qi), nullptr, 1.0f, stats, [&](int, Rng& rng, Task& task) {
+        runTasks(TaskLoop(samples, seed, uint32_t(qi)), stats, [&](int, Rng& rng, Task& task) {
             Vec2 u = rng.uniform2();
             const int k = u.x < p0 ? 0 : 1;
             u.x = k == 0 ? u.x / p0 : (u.x - p0) / (1.0f - p0);

@@ -6,6 +6,7 @@
 //
 // Glass splits every ray in two, so a path through glass costs up to 2^maxdepth rays: keep the
 // maximum depth small where there is glass (the lesson's scenes use 6).
+#include "11-classics/path_filter.h"
 #include "11-classics/whitted.h"
 #include "integrator.h"
 
@@ -24,15 +25,16 @@ struct Whitted : PixelIntegrator {
     Color Li(const Scene& scene, const Ray& ray, Rng&) const override {
         return LiWhitted(scene, ray, 0, options(scene));
     }
-
-    // L [DG] S* E from point lights, L S* E from every light (whitted.h); with area lights or a
-    // background, which it shows but lights no surface with, or with an ambient term, no
-    // expression says which paths it carries.
-    std::string carriedPaths(const Scene& scene) const override {
-        if (scene.caps.areaLights || scene.caps.backgroundLight || !isBlack(scene.settings.ambient)) return "";
-        return "L[DG]S*E|LS*E";
-    }
 };
+
+// L [DG] S* E from point lights, L S* E from every light (whitted.h); with area lights or a
+// background, which it shows but lights no surface with, or with an ambient term, no expression
+// says which paths it carries.
+std::string whittedPaths(const Scene& scene) {
+    if (scene.caps.areaLights || scene.caps.backgroundLight || !isBlack(scene.settings.ambient)) return "";
+    return "L[DG]S*E|LS*E";
+}
+[[maybe_unused]] const bool carried = Registry<CarriedPaths>::add("whitted", whittedPaths);
 
 }  // namespace
 

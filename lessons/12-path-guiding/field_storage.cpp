@@ -100,7 +100,7 @@ void GuideField::add(const std::vector<RadianceRecord>& records) {
     for (size_t i = 0; i < records.size(); ++i)
         if (valid(records[i])) order[next[size_t(records[i].cell)]++] = uint32_t(i);
     SampleStats stats;
-    runTasks(int(cells_.size()), 0, 0, nullptr, 1.0f, stats, [&](int c, Rng&, Task&) {
+    runTasks(TaskLoop(int(cells_.size()), 0, 0), stats, [&](int c, Rng&, Task&) {
         GuideCell& cell = cells_[size_t(c)];
         for (uint32_t k = first[size_t(c)]; k < first[size_t(c) + 1]; ++k) {
             const RadianceRecord& r = records[order[k]];

@@ -17,6 +17,9 @@
 #include <cmath>
 #include <sstream>
 #include "12-path-guiding/guiding.h"
+#include "errors.h"
+#include "numbers.h"
+#include "registry.h"
 #include "tasks.h"
 
 namespace ps {
@@ -163,7 +166,7 @@ void GuidedPathTracer::renderIteration(const Scene& scene, uint32_t iteration, u
                                        SampleStats& stats) {
     if (iteration == 0) {
         GuideSettings settings;
-        if (scene.settings.guideBudget > 0) settings.budget = scene.settings.guideBudget;
+        if (budget_ > 0) settings.budget = budget_;
         field_ = GuideField(scene.bounds, settings);
         decisions_ = roulette_ = splits_ = 0;
     }
@@ -207,12 +210,42 @@ struct GuidedADRRS : GuidedPathTracer {
     GuidedADRRS() : GuidedPathTracer(true) {}
 };
 
+// The algorithm option --guide-budget MB (framework/integrator.h): pt-guided and pt-guided-adrrs
+// with a field of at most that many MB.
+const char* const kBudgetHelp =
+    R"(  --guide-budget MB  the most memory the learned field of pt-guided and pt-guided-adrrs may
+                     take (lesson 12), in MB, from 0.01 to 65536 (default 64): the spatial tree
+                     stops being cut and the learning trees are refined more coarsely once the
+                     next pass would not fit
+)";
+
+std::vector<std::string> budgetAlgorithms() { return {"pt-guided", "pt-guided-adrrs"}; }
+
+double budgetMB(const std::string& value) {
+    double mb = 0.0;
+    if (parseWhole(value, mb) != std::errc() || !(mb >= 0.01 && mb <= 65536.0))
+        throw OptionError("option --guide-budget must be a number of MB from 0.01 to 65536, got '" + value + "'");
+    return mb;
+}
+void checkBudget(const std::string& value) { (void)budgetMB(value); }
+
+// makeIntegrator gives the result the algorithm's name and capabilities.
+std::unique_ptr<Integrator> makeBudgeted(const std::string& algo, const std::string& value) {
+    if (algo != "pt-guided" && algo != "pt-guided-adrrs") return nullptr;
+    return std::make_unique<GuidedPathTracer>(algo == "pt-guided-adrrs", size_t(budgetMB(value) * double(1 << 20)));
+}
+
+[[maybe_unused]] const bool budgetRegistered = Registry<AlgorithmOption>::add(
+    "guide-budget", AlgorithmOption{"MB", kBudgetHelp, budgetAlgorithms, checkBudget, makeBudgeted});
+
 }  // namespace
 
-PS_REGISTER_INTEGRATOR(
+PS_REGISTER_INTEGRATOR_CAPS(
     GuidedPathTracer, "pt-guided",
-    "path tracing guided by a learned radiance field (SD-tree), mixed with BSDF sampling (lesson 12)");
-PS_REGISTER_INTEGRATOR(GuidedADRRS, "pt-guided-adrrs",
-                       "pt-guided with adjoint-driven roulette and splitting on the learned field (lesson 12)");
+    "path tracing guided by a learned radiance field (SD-tree), mixed with BSDF sampling (lesson 12)",
+    IntegratorCaps().withCameraModels());
+PS_REGISTER_INTEGRATOR_CAPS(GuidedADRRS, "pt-guided-adrrs",
+                            "pt-guided with adjoint-driven roulette and splitting on the learned field (lesson 12)",
+                            IntegratorCaps().withCameraModels());
 
 }  // namespace ps

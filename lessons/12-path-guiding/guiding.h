@@ -290,16 +290,18 @@ Decision particleDecision(const AdjointCache& importance, const Scene& scene, co
 // field as the walk's continuation rule.
 class GuidedPathTracer : public Integrator {
 public:
-    explicit GuidedPathTracer(bool adrrs = false) : adrrs_(adrrs) {}
+    // adrrs: "pt-guided-adrrs"; budget: the field's memory cap in bytes (--guide-budget), 0: the
+    // default (GuideSettings).
+    explicit GuidedPathTracer(bool adrrs = false, size_t budget = 0) : adrrs_(adrrs), budget_(budget) {}
     void renderIteration(const Scene& scene, uint32_t iteration, uint64_t seed, Image& out,
                          SampleStats& stats) override;
     std::vector<std::string> report() const override;
-    bool rendersThinLens() const override { return true; }  // lens rays (tasks.h, cameraRay), lesson 11
     const GuideField& field() const { return field_; }
     uint64_t decisions() const { return decisions_; }
 
 private:
     bool adrrs_;
+    size_t budget_;
     GuideField field_;
     uint64_t decisions_ = 0, roulette_ = 0, splits_ = 0;
 };

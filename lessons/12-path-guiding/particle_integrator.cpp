@@ -39,7 +39,7 @@ ImportancePass importancePass(const Scene& scene, int paths, uint64_t seed, Samp
     std::vector<std::vector<Photon>> lists(size_t(taskCount(paths)));
     std::vector<std::vector<ImportanceVertex>> where(lists.size());
     std::vector<double> sums(lists.size(), 0.0);
-    runTasks(paths, seed, 0, nullptr, 1.0f, stats, [&](int i, Rng& rng, Task& task) {
+    runTasks(TaskLoop(paths, seed, 0), stats, [&](int i, Rng& rng, Task& task) {
         const Vec2 raster = jitteredRaster(i % pixels, width, rng);
         std::vector<ImportanceVertex> path;
         Color L(0.0f);
@@ -82,7 +82,7 @@ ImportancePass importancePass(const Scene& scene, int paths, uint64_t seed, Samp
     const size_t stride = std::max<size_t>(1, (at.size() + kMaxQueries - 1) / kMaxQueries);
     const int queries = int((at.size() + stride - 1) / stride);
     std::vector<Color> estimate(static_cast<size_t>(queries), Color(0.0f));
-    runTasks(queries, seed, 1, nullptr, 1.0f, stats, [&](int q, Rng&, Task&) {
+    runTasks(TaskLoop(queries, seed, 1), stats, [&](int q, Rng&, Task&) {
         const ImportanceVertex& x = at[size_t(q) * stride];
         SurfacePoint sp;
         sp.p = x.p;
@@ -150,7 +150,6 @@ struct ADRRSLightTracer : Integrator {
 struct ADRRSPhotonMapper : Integrator {
     ImportancePass pass;
     ParticleCounts counts;
-    bool rendersThinLens() const override { return true; }
     void renderIteration(const Scene& scene, uint32_t iteration, uint64_t seed, Image& out,
                          SampleStats& stats) override {
         if (iteration == 0) {
@@ -164,9 +163,12 @@ struct ADRRSPhotonMapper : Integrator {
 
 }  // namespace
 
-PS_REGISTER_INTEGRATOR(ADRRSLightTracer, "lt-adrrs",
-                       "light tracing with roulette and splitting by visual importance from a camera pass (lesson 12)");
-PS_REGISTER_INTEGRATOR(ADRRSPhotonMapper, "ppm-adrrs",
-                       "progressive photon mapping, photons rouletted and split by visual importance (lesson 12)");
+PS_REGISTER_INTEGRATOR_CAPS(
+    ADRRSLightTracer, "lt-adrrs",
+    "light tracing with roulette and splitting by visual importance from a camera pass (lesson 12)",
+    IntegratorCaps().withCameraModels());
+PS_REGISTER_INTEGRATOR_CAPS(ADRRSPhotonMapper, "ppm-adrrs",
+                            "progressive photon mapping, photons rouletted and split by visual importance (lesson 12)",
+                            IntegratorCaps().withCameraModels());
 
 }  // namespace ps

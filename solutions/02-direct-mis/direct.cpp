@@ -42,10 +42,10 @@ float pdfAToSolidAngle(float pdfA, float dist, float cosAtLight) {
 float pdfLightDirection(const Scene& scene, int light, const Vec3& ref, const Vec3& p, const Vec3& n) {
     //! TODO(02) The pdf of the direction from ref to p under light sampling (Eq. 2.4): the
     //!          selection probability scene.lightSelectionProb(light) times
-    //!            area light: pdfLightArea(scene, light) converted by pdfAToSolidAngle, with the
+    //!            area light: pdfLight's area density converted by pdfAToSolidAngle, with the
     //!                        distance from ref to p and the cosine between n and the unit
     //!                        direction from p to ref;
-    //!            background: pdfBackgroundDirection();
+    //!            background: pdfLight's solid-angle density;
     //!            point light: 0 (a delta light: no direction hits it by chance, Eq. 2.12).
     //! STUB (void)scene; (void)light; (void)ref; (void)p; (void)n;
     //! STUB return PS_TODO("lesson 02: pdfLightDirection", 0.0f);
@@ -56,9 +56,9 @@ float pdfLightDirection(const Scene& scene, int light, const Vec3& ref, const Ve
         const Vec3 d = ref - p;
         const float dist = glm::length(d);
         if (!(dist > 0.0f)) return 0.0f;
-        return select * pdfAToSolidAngle(pdfLightArea(scene, light), dist, glm::dot(n, d / dist));
+        return select * pdfAToSolidAngle(pdfLight(scene, light).pdfA, dist, glm::dot(n, d / dist));
     }
-    case LightKind::Background: return select * pdfBackgroundDirection();
+    case LightKind::Background: return select * pdfLight(scene, light).pdfW;
     case LightKind::Point: return 0.0f;
     }
     return 0.0f;
@@ -73,9 +73,9 @@ DirectSample sampleDirectLight(const Scene& scene, const SurfacePoint& sp, const
     //!             l, sp.p, uPoint); d.wi = ls.wi.
     //!          2. f = evalBSDF(material of sp, sp.n, wo, ls.wi), cos = |dot(sp.n, ls.wi)|.
     //!          3. The pdf of ls.wi per unit solid angle, times select (d.pdfLight):
-    //!               area light: ls.pdf is per unit area: convert it (Eq. 2.3) with ls.dist and
+    //!               area light: ls.pdfA is per unit area: convert it (Eq. 2.3) with ls.dist and
     //!                           the cosine at the light, dot(ls.n, -ls.wi);
-    //!               background: ls.pdf is already per solid angle;
+    //!               background: ls.pdfW is already per solid angle;
     //!               point light: no density; d.pdfLight = select, d.delta = true, and ls.Le is
     //!                            an intensity: the value is f I cos / (select dist^2) (Eq. 2.4).
     //!          4. d.pdfBSDF = pdfBSDF(material, sp.n, wo, ls.wi) (0 for a point light, Eq. 2.12).
@@ -95,8 +95,8 @@ DirectSample sampleDirectLight(const Scene& scene, const SurfacePoint& sp, const
     const float cosTheta = std::abs(glm::dot(sp.n, ls.wi));
     Color Le = ls.Le;
     switch (light.kind) {
-    case LightKind::Area: d.pdfLight = select * pdfAToSolidAngle(ls.pdf, ls.dist, glm::dot(ls.n, -ls.wi)); break;
-    case LightKind::Background: d.pdfLight = select * ls.pdf; break;
+    case LightKind::Area: d.pdfLight = select * pdfAToSolidAngle(ls.pdfA, ls.dist, glm::dot(ls.n, -ls.wi)); break;
+    case LightKind::Background: d.pdfLight = select * ls.pdfW; break;
     case LightKind::Point:
         d.pdfLight = select;
         d.delta = true;

@@ -29,15 +29,19 @@ Color misEmission(const Scene& scene, const WalkVertex& v) {
 
 Color misLightSample(const Scene& scene, const WalkVertex& v, Rng& rng, int maxDepth) {
     //! TODO(03) The second half of Eq. 3.7 at x_k, where LiNextEvent takes one: beta_k times the
-    //!          light sample, weighted by kPathHeuristic from DirectSample's light density against
-    //!          the density with which the walk itself leaves x_k in that direction (pdfWalk).
+    //!          light sample (its numbers drawn as in LiNextEvent), weighted by kPathHeuristic from
+    //!          DirectSample's light density against the density with which the walk itself leaves
+    //!          x_k in that direction (pdfWalk).
     //!          Pitfall: the light sample at the vertex with maxDepth bounces would make a path
     //!          of maxDepth + 1 bounces.
     //! STUB (void)scene; (void)v; (void)rng; (void)maxDepth;
     //! STUB return PS_TODO("lesson 03: misLightSample (LiMIS)", Color(0.0f));
     //! BEGIN
     if (!v.hit || v.bounces == maxDepth || scene.materials[v.sp.material].isDelta()) return Color(0.0f);
-    const DirectSample d = sampleDirectLight(scene, v.sp, v.wo, rng.uniform(), rng.uniform2());
+    // Named, in this order: C++ evaluates a call's arguments in no fixed order.
+    const float uLight = rng.uniform();
+    const Vec2 uPoint = rng.uniform2();
+    const DirectSample d = sampleDirectLight(scene, v.sp, v.wo, uLight, uPoint);
     return v.beta * d.value * misWeight(kPathHeuristic, 1.0f, d.pdfLight, 1.0f, pdfWalk(scene, v, d));
     //! END
 }

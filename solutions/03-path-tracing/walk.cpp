@@ -21,7 +21,8 @@ namespace {
     //!          reads the throughput since the walk's start and the bounces since then, this one
     //!          included; no roulette when `roulette` is false (the rule decided survival).
     //!          Pitfalls: a survivor divides beta AND the throughput by q. The tests replay the
-    //!          random numbers: the direction's drawn inside the call (or u before uLobe), the
+    //!          random numbers: the direction's u = rng.uniform2() before uLobe = rng.uniform(),
+    //!          into variables (C++ evaluates a call's arguments in no fixed order), the
     //!          roulette's only when q < 1.
     //! STUB (void)scene; (void)v; (void)beta; (void)roulette; (void)start; (void)scatter; (void)rng; (void)opt;
     //! STUB (void)next;
@@ -29,8 +30,15 @@ namespace {
     //! BEGIN
     const Material& m = scene.materials[v.sp.material];
     BSDFSample s;
-    const bool sampled = m.isDelta() || !opt.sampler ? scatter(m, v.sp.n, v.wo, rng.uniform2(), rng.uniform(), s)
-                                                     : opt.sampler->sample(scene, v, rng, s);
+    bool sampled = false;
+    if (m.isDelta() || !opt.sampler) {
+        // Named, in this order: C++ evaluates a call's arguments in no fixed order.
+        const Vec2 u = rng.uniform2();
+        const float uLobe = rng.uniform();
+        sampled = scatter(m, v.sp.n, v.wo, u, uLobe, s);
+    } else {
+        sampled = opt.sampler->sample(scene, v, rng, s);
+    }
     if (!sampled) return false;
     Color throughput = start.throughput;
     beta *= s.weight;

@@ -8,8 +8,9 @@ namespace ps {
 Color fluxParticle(const Scene& scene, const Region& S, Rng& rng) {
     //! TODO(04) One particle (Eq. 4.12, 4.13), drawing the random numbers in this order:
     //!          1. l = scene.selectLight(rng.uniform(), P); return 0 if l < 0.
-    //!          2. e = sampleEmission(scene, l, rng.uniform2(), rng.uniform2()); return 0 if
-    //!             e.pdfA or e.pdfW is 0.
+    //!          2. e = sampleEmission(scene, l, uPos, uDir), uPos = rng.uniform2() drawn before
+    //!             uDir = rng.uniform2() (into variables: a call's arguments have no order);
+    //!             return 0 if e.pdfA or e.pdfW is 0.
     //!          3. The particle's power: Le |cos theta| / (P pdfA pdfW), cos theta between e.n
     //!             and e.dir for an area light; a point light (Light::isDelta) and the
     //!             background have no cosine here (their Le is an intensity, or the disk they
@@ -22,7 +23,10 @@ Color fluxParticle(const Scene& scene, const Region& S, Rng& rng) {
     float P = 0.0f;
     const int l = scene.selectLight(rng.uniform(), P);
     if (l < 0 || P <= 0.0f) return Color(0.0f);
-    const EmissionSample e = sampleEmission(scene, l, rng.uniform2(), rng.uniform2());
+    // Named, in this order: C++ evaluates a call's arguments in no fixed order.
+    const Vec2 uPos = rng.uniform2();
+    const Vec2 uDir = rng.uniform2();
+    const EmissionSample e = sampleEmission(scene, l, uPos, uDir);
     if (!(e.pdfA > 0.0f && e.pdfW > 0.0f)) return Color(0.0f);
     const Light& light = scene.lights[l];
     const float cosTheta = light.kind == LightKind::Area ? std::abs(glm::dot(e.n, e.dir)) : 1.0f;

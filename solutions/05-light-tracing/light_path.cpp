@@ -7,7 +7,7 @@ namespace ps {
 
 void traceLightPath(const Scene& scene, Rng& rng, const WalkOptions& opt, const SplatTarget& out) {
     // The camera point every connection of this path goes to: the pinhole camera.position()
-    // (no number drawn), or a point on a thin lens (lesson 11).
+    // (no number drawn), or a point of the camera's model.
     const Vec3 z = scene.camera.samplePoint(rng);
     lightWalk(scene, rng, opt, [&](const WalkVertex& v, const LightPathStart& start) {
         //! TODO(05) What vertex v adds to the image (Eq. 5.3, 5.4): connect it to the camera

@@ -8,7 +8,9 @@ namespace ps {
 
 void lightWalk(const Scene& scene, Rng& rng, const WalkOptions& opt, const LightWalkVisitor& visit) {
     //! TODO(05) The particle's walk (Eq. 5.1, 5.2, 5.6-5.8): start it with startLightPath
-    //!          (rng.uniform(), rng.uniform2(), rng.uniform2()); nothing if not valid. Visit y0
+    //!          (scene, uLight, uPos, uDir), drawn into variables in that order (rng.uniform(),
+    //!          rng.uniform2(), rng.uniform2(): a call's arguments have no order); nothing if
+    //!          not valid. Visit y0
     //!          (a WalkVertex with bounces 0, hit, sp = start.y0, beta = start.beta), then lesson
     //!          3's randomWalk from a WalkStart along start.ray (its fields say what the particle's
     //!          first hit y1 shows), scattering with sampleAdjointBSDF and the options given, with
@@ -19,7 +21,11 @@ void lightWalk(const Scene& scene, Rng& rng, const WalkOptions& opt, const Light
     //! STUB (void)scene; (void)rng; (void)opt; (void)visit;
     //! STUB (void)PS_TODO("lesson 05: lightWalk", 0);
     //! BEGIN
-    const LightPathStart start = startLightPath(scene, rng.uniform(), rng.uniform2(), rng.uniform2());
+    // Named, in this order: C++ evaluates a call's arguments in no fixed order.
+    const float uLight = rng.uniform();
+    const Vec2 uPos = rng.uniform2();
+    const Vec2 uDir = rng.uniform2();
+    const LightPathStart start = startLightPath(scene, uLight, uPos, uDir);
     if (!start.valid) return;
     WalkVertex y0;
     y0.hit = true;

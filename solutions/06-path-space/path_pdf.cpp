@@ -17,13 +17,13 @@ double pdfTechnique(const Scene& scene, const Path& x, int s) {
     //!          Pitfalls: 0 for what cannot be sampled (Eq. 6.12: t < 1, s = 0 at a point light, a
     //!          specular end of the joining edge, t = 1 with x_{k-1} the background); in double;
     //!          pdfBSDF's first argument is the direction the walk arrived from; no Russian roulette.
-    //!          (Lesson 11: t = 0 when x_k is a lens point, x[k].lens: the light subpath samples
+    //!          (A camera model: t = 0 when x_k is its point, x[k].onCamera: the light subpath samples
     //!          every vertex, x_k included, and there is no joining edge.)
     //! STUB (void)scene; (void)x; (void)s;
     //! STUB return PS_TODO("lesson 06: pdfTechnique", 0.0);
     //! BEGIN
     const int k = int(x.size()) - 1, t = k + 1 - s;
-    if (k < 1 || s < 0 || t < 0 || (t == 0 && !x[size_t(k)].lens)) return 0.0;
+    if (k < 1 || s < 0 || t < 0 || (t == 0 && !x[size_t(k)].onCamera)) return 0.0;
     if (s == 0 && (!x[0].onLight || x[0].pointLight)) return 0.0;
     if (s >= 1 && t >= 1 && (x[size_t(s) - 1].specular || x[size_t(s)].specular)) return 0.0;
     if (t == 1 && x[size_t(k) - 1].infinite) return 0.0;  // the background joined straight to the pinhole

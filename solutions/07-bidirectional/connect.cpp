@@ -59,7 +59,7 @@ Connection connectEmitter(const Scene& scene, const PathVertex* z, int t) {
 
 Connection connectCamera(const Scene& scene, const PathVertex* y, int s, const PathVertex& z0) {
     //! TODO(07) Eq. 7.2, 7.4 (t = 1): y_{s-1} joined to the pinhole z0 (its position z0.p(); a
-    //!          lens point in lesson 11) with lesson 5's connectToCamera(..., z0.p()):
+    //!          camera model's point) with lesson 5's connectToCamera(..., z0.p()):
     //!          C* = beta_{s-1} f importance, f = the BSDF from the camera's
     //!          direction to y_{s-2}'s, or for s = 1 what the light sends towards the camera
     //!          (a point light: its intensity); c.raster where it lands.
@@ -90,11 +90,13 @@ Connection connectCamera(const Scene& scene, const PathVertex* y, int s, const P
 Connection connectLight(const Scene& scene, const PathVertex* z, int t, float uLight, const Vec2& uPos) {
     //! TODO(07) Eq. 7.2, 7.4 (s = 1): next-event estimation from z_{t-1} as in lesson 2: a light
     //!          chosen with scene.selectLight(uLight, ...), a point on it with sampleLight(..., uPos),
-    //!          stored as the new light vertex c.sampledLight (flags as a light subpath's y_0;
-    //!          pdfFwd = pdfLightOrigin, beta = 1 / pdfFwd); C* = beta_y Le G f_z beta_z with
-    //!          lesson 6's geometryTerm, after the shadow ray. Not valid at a background z_{t-1}.
-    //!          Pitfalls: the background's y_0.sp.n points towards the background (ls.wi); a
-    //!          shadow ray to a point light or the background is not spawnRayTo(a surface point).
+    //!          stored as the new light vertex c.sampledLight (lesson 6's lightVertex of the light
+    //!          sample; pdfFwd = pdfLightOrigin, beta = 1 / pdfFwd); C* = beta_y Le G f_z beta_z
+    //!          with lesson 6's geometryTerm, after the shadow ray. Not valid at a background
+    //!          z_{t-1}, nor where the light sample has no density (pdfA and pdfW both 0).
+    //!          Pitfalls: y_0's density is the light subpath's (with the light's selection
+    //!          probability), not the light sample's; a shadow ray to a point light or the
+    //!          background is not spawnRayTo(a surface point).
     //! STUB (void)scene; (void)z; (void)t; (void)uLight; (void)uPos;
     //! STUB return PS_TODO("lesson 07: connectLight", Connection());
     //! BEGIN
@@ -107,16 +109,9 @@ Connection connectLight(const Scene& scene, const PathVertex* z, int t, float uL
     const LightSample ls = sampleLight(scene, l, zEnd.sp.p, uPos);
     const Light& light = scene.lights[size_t(l)];
     PathVertex& y0 = c.sampledLight;
-    y0.sp.p = ls.p;
-    y0.sp.n = ls.n;
-    y0.sp.errScale = maxAbsComponent(ls.p);
-    y0.sp.light = l;
-    y0.onLight = true;
-    y0.pointLight = light.isDelta();
-    y0.infinite = light.isInfinite();
-    if (y0.infinite) y0.sp.n = ls.wi;  // towards the background (lesson 6's convention)
+    y0 = lightVertex(scene, l, ls);  // the background's points towards it (lesson 6's convention)
     y0.pdfFwd = pdfLightOrigin(scene, y0);
-    if (!(y0.pdfFwd > 0.0f && ls.pdf > 0.0f)) return c;
+    if (!(y0.pdfFwd > 0.0f && (ls.pdfA > 0.0f || ls.pdfW > 0.0f))) return c;
     y0.beta = Color(1.0f / y0.pdfFwd);
     const Color fz = evalBSDF(scene.materials[size_t(zEnd.sp.material)], zEnd.sp.n, direction(zEnd, z[t - 2]), ls.wi);
     c.value = zEnd.beta * fz * ls.Le * geometryTerm(y0, zEnd) * y0.beta;
@@ -134,12 +129,13 @@ Connection connectLight(const Scene& scene, const PathVertex* z, int t, float uL
 }
 
 Connection connectVertices(const Scene& scene, const PathVertex* y, int s, const PathVertex* z, int t) {
-    //! TODO(07) Eq. 7.2, 7.4 (s, t >= 2): the two endpoints joined by a shadow ray:
-    //!          C* = beta_y f_y G f_z beta_z with lesson 6's geometryTerm; valid = not black and
-    //!          unoccluded.
-    //!          Pitfalls: each f is evalBSDF(m, n, towards the camera side, towards the light side)
-    //!          at its own vertex; a background z_{t-1} cannot be joined; two coincident points
-    //!          (direction 0) give nothing, not NaN.
+    //! TODO(07) Eq. 7.2, 7.4, 7.6 (s, t >= 2): the two endpoints joined by a shadow ray:
+    //!          C* = beta_y f_y G f_z beta_z with lesson 6's geometryTerm, each f and the four
+    //!          reverse pdfs (c.rev, as connectionPdfs would give them) from one scatteringAt per
+    //!          endpoint; valid = not black and unoccluded.
+    //!          Pitfalls: each endpoint's light side and camera side (y_{s-1}'s camera side is
+    //!          z_{t-1}); a background end cannot be joined; two coincident points (direction 0)
+    //!          give nothing, not NaN.
     //! STUB (void)scene; (void)y; (void)s; (void)z; (void)t;
     //! STUB return PS_TODO("lesson 07: connectVertices", Connection());
     //! BEGIN
@@ -147,16 +143,16 @@ Connection connectVertices(const Scene& scene, const PathVertex* y, int s, const
     const PathVertex& yEnd = y[s - 1];
     const PathVertex& zEnd = z[t - 1];
     if (zEnd.infinite || yEnd.infinite) return c;
-    const Vec3 w = direction(zEnd, yEnd);
-    if (w == Vec3(0.0f)) return c;
-    const auto material = [&](const PathVertex& v) -> const Material& {
-        return scene.materials[size_t(v.sp.material)];
-    };
-    const Color fy = evalBSDF(material(yEnd), yEnd.sp.n, -w, direction(yEnd, y[s - 2]));
-    const Color fz = evalBSDF(material(zEnd), zEnd.sp.n, direction(zEnd, z[t - 2]), w);
-    c.value = yEnd.beta * fy * geometryTerm(yEnd, zEnd) * fz * zEnd.beta;
+    if (direction(zEnd, yEnd) == Vec3(0.0f)) return c;
+    const Scattering atY = scatteringAt(scene, y[s - 2], yEnd, zEnd);
+    const Scattering atZ = scatteringAt(scene, yEnd, zEnd, z[t - 2]);
+    c.value = yEnd.beta * atY.f * geometryTerm(yEnd, zEnd) * atZ.f * zEnd.beta;
     if (isBlack(c.value)) return c;
     c.valid = !scene.occluded(scene.spawnRayTo(zEnd.sp, yEnd.sp));
+    c.rev.lightEnd = atZ.pdfTowardsLight;
+    c.rev.lightPrev = atY.pdfTowardsLight;
+    c.rev.cameraEnd = atY.pdfTowardsCamera;
+    c.rev.cameraPrev = atZ.pdfTowardsCamera;
     return c;
     //! END
 }

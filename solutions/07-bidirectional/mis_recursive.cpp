@@ -14,13 +14,13 @@ double heuristicPower(double r, Heuristic h) { return h == Heuristic::Power ? r 
 [[maybe_unused]] double connectible(const PathVertex* path, int j) {
     //! TODO(07) Eq. 7.10: c_j = 1 if the connection may sit just before path[j], else 0.
     //!          Pitfalls: a camera subpath (path[0].isCamera()) has c_0 = 0 at the pinhole (1 at
-    //!          lesson 11's lens point: t = 0) and c_1 = 0 at the background; a light subpath's
+    //!          a camera model's point: t = 0) and c_1 = 0 at the background; a light subpath's
     //!          c_0 = 0 at a point light; no edge at a specular vertex.
     //! STUB (void)path; (void)j;
     //! STUB return PS_TODO("lesson 07: connectible", 0.0);
     //! BEGIN
     const bool camera = path[0].isCamera();
-    if (j == 0) return camera ? (path[0].lens ? 1.0 : 0.0) : (path[0].pointLight ? 0.0 : 1.0);
+    if (j == 0) return camera ? (path[0].onCamera ? 1.0 : 0.0) : (path[0].pointLight ? 0.0 : 1.0);
     if (camera && j == 1 && path[1].infinite) return 0.0;
     return path[j].specular || path[j - 1].specular ? 0.0 : 1.0;
     //! END
@@ -66,7 +66,7 @@ void updateMisSum(Subpath& path, size_t i, Heuristic h) {
 
 float misWeightRecursive(const PathVertex* y, int s, const PathVertex* z, int t, const ReversePdfs& rev, Heuristic h) {
     //! TODO(07) Eq. 7.8: w = 1 / (1 + light sum + camera sum), each sum from subpathSum at the
-    //!          subpath's endpoint. Pitfall: s = 0 has no light sum (and lesson 11's t = 0 no
+    //!          subpath's endpoint. Pitfall: s = 0 has no light sum (and t = 0 no
     //!          camera sum).
     //! STUB (void)y; (void)s; (void)z; (void)t; (void)rev; (void)h;
     //! STUB return PS_TODO("lesson 07: misWeightRecursive", 0.0f);

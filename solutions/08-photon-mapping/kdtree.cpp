@@ -1,6 +1,7 @@
-// Lesson 8 — the photon map's kd-tree: left-balanced, in one array in heap order. Interface:
+// Lesson 8 — the kd-tree over a set of points (the photon map's): left-balanced, in arrays in heap order. Interface:
 // lessons/08-photon-mapping/photonmap.h. Equation numbers refer to lessons/08-photon-mapping/README.md.
 #include <algorithm>
+#include <tuple>
 #include "08-photon-mapping/photonmap.h"
 #include "todo.h"
 
@@ -26,49 +27,66 @@ size_t leftSubtreeSize(size_t n) {
 //! BEGIN
 namespace {
 
-// Puts the left-balanced kd-tree of photons[begin, end) at node `node` of out (Eq. 8.4).
-void balance(std::vector<Photon>& photons, size_t begin, size_t end, size_t node, std::vector<Photon>& out) {
+// Puts the left-balanced kd-tree of the points order[begin, end) at node `node` of tree (Eq. 8.4).
+void balance(const std::vector<Vec3>& points, std::vector<uint32_t>& order, size_t begin, size_t end, size_t node,
+             KdTree& tree) {
     const size_t n = end - begin;
     if (n == 0) return;
     if (n == 1) {
-        out[node] = photons[begin];
-        out[node].axis = 0;
+        tree.p[node] = points[order[begin]];
+        tree.item[node] = order[begin];
+        tree.axis[node] = 0;
         return;
     }
-    Vec3 lo = photons[begin].p, hi = lo;
+    Vec3 lo = points[order[begin]], hi = lo;
     for (size_t i = begin + 1; i < end; ++i) {
-        lo = glm::min(lo, photons[i].p);
-        hi = glm::max(hi, photons[i].p);
+        lo = glm::min(lo, points[order[i]]);
+        hi = glm::max(hi, points[order[i]]);
     }
     const Vec3 extent = hi - lo;
     const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
     const size_t median = begin + leftSubtreeSize(n);
-    std::nth_element(photons.begin() + long(begin), photons.begin() + long(median), photons.begin() + long(end),
-                     [axis](const Photon& a, const Photon& b) { return a.p[axis] < b.p[axis]; });
-    out[node] = photons[median];
-    out[node].axis = static_cast<uint8_t>(axis);
-    balance(photons, begin, median, 2 * node, out);
-    balance(photons, median + 1, end, 2 * node + 1, out);
+    // By the axis's coordinate; ties (points on an axis-aligned wall) broken by the other two
+    // coordinates and then by the point's index: std::nth_element leaves equal elements in an
+    // order of the standard library's choosing, so without a total order the tree, and every
+    // image made with it, would differ between libstdc++ and libc++.
+    const auto key = [&points, axis](uint32_t i) {
+        const Vec3& p = points[i];
+        return std::make_tuple(p[axis], p[(axis + 1) % 3], p[(axis + 2) % 3], i);
+    };
+    std::nth_element(order.begin() + long(begin), order.begin() + long(median), order.begin() + long(end),
+                     [&key](uint32_t a, uint32_t b) { return key(a) < key(b); });
+    tree.p[node] = points[order[median]];
+    tree.item[node] = order[median];
+    tree.axis[node] = static_cast<uint8_t>(axis);
+    balance(points, order, begin, median, 2 * node, tree);
+    balance(points, order, median + 1, end, 2 * node + 1, tree);
 }
 
 }  // namespace
 //! END
 
-void buildPhotonMap(std::vector<Photon> photons, PhotonMap& map) {
-    //! TODO(08) Eq. 8.4: map.nodes gets n + 1 entries (node 0 unused), then the tree of all photons
-    //!          at node 1, recursively, for the photons of a node in one range [begin, end) of the
-    //!          array: the axis of largest extent of their bounding box; the median index
-    //!          m = begin + leftSubtreeSize(end - begin), found with std::nth_element on that
-    //!          coordinate (O(n) per level, O(n log n) in all; do not sort); the median photon goes
-    //!          to the node with its axis, [begin, m) to node 2i, (m, end) to node 2i + 1. A node
-    //!          without children keeps axis 0. No photons: map.nodes empty.
-    //! STUB (void)photons; (void)map;
-    //! STUB (void)PS_TODO("lesson 08: buildPhotonMap", 0);
+void buildKdTree(const std::vector<Vec3>& points, KdTree& tree) {
+    //! TODO(08) Eq. 8.4: the tree's arrays get n + 1 entries (index 0 unused), then the tree of all
+    //!          points at node 1, recursively, for the points of a node in one range [begin, end)
+    //!          of an array of their indices: the axis of largest extent of their bounding box; the
+    //!          median index m = begin + leftSubtreeSize(end - begin), found with std::nth_element
+    //!          on that coordinate (O(n) per level, O(n log n) in all; do not sort); the median
+    //!          point goes to the node with its index and axis, [begin, m) to node 2i, (m, end) to
+    //!          node 2i + 1. A node without children keeps axis 0. No points: empty arrays.
+    //! STUB (void)points;
+    //! STUB tree = KdTree();
+    //! STUB (void)PS_TODO("lesson 08: buildKdTree", 0);
     //! BEGIN
-    map.nodes.clear();
-    if (photons.empty()) return;
-    map.nodes.resize(photons.size() + 1);
-    balance(photons, 0, photons.size(), 1, map.nodes);
+    tree = KdTree();
+    if (points.empty()) return;
+    const size_t n = points.size();
+    tree.p.resize(n + 1);
+    tree.item.resize(n + 1);
+    tree.axis.resize(n + 1);
+    std::vector<uint32_t> order(n);
+    for (size_t i = 0; i < n; ++i) order[i] = uint32_t(i);
+    balance(points, order, 0, n, 1, tree);
     //! END
 }
 

@@ -14,9 +14,10 @@ Color gatherRadiance(const Scene& scene, const SurfacePoint& sp, const Vec3& wi,
     //!          black); the first hit's distance goes to *hitDistance (if given; infinity when
     //!          nothing is hit). At a non-specular surface y: return weight * radianceEstimate(
     //!          global, y, its material, -ray direction, opt.globalEstimate). At a specular one:
-    //!          sampleBSDF(material, y.n, -ray direction, rng.uniform2(), rng.uniform(),
-    //!          Transport::Radiance, s) (in this order; a failed sample: black), weight *= s.weight,
-    //!          and go on from y in direction s.wi. Emission met on the way is left out.
+    //!          sampleBSDF(material, y.n, -ray direction, u, uLobe, Transport::Radiance, s)
+    //!          (u = rng.uniform2() drawn before uLobe = rng.uniform(); a failed sample: black),
+    //!          weight *= s.weight, and go on from y in direction s.wi. Emission met on the way
+    //!          is left out.
     //! STUB (void)scene; (void)sp; (void)wi; (void)weight; (void)bounces; (void)rng; (void)global; (void)opt;
     //! STUB if (hitDistance) *hitDistance = std::numeric_limits<float>::infinity();
     //! STUB return PS_TODO("lesson 08: gatherRadiance", Color(0.0f));
@@ -46,16 +47,17 @@ Color LiPhotonMap(const Scene& scene, const Ray& ray, Rng& rng, const PhotonMaps
     //!          - an emitter (v.sp.light >= 0) seen with v.specular: add its emittedRadiance.
     //!          - a specular material: go on (the walk samples it).
     //!          - else x = v.sp: add, each times v.beta,
-    //!            (a) direct light: sampleDirectLight(scene, sp, wo, rng.uniform(), rng.uniform2())
-    //!                .value, if v.bounces < opt.maxDepth;
+    //!            (a) direct light: sampleDirectLight(scene, sp, wo, uLight, uPoint).value, if
+    //!                v.bounces < opt.maxDepth (uLight = rng.uniform() before uPoint = rng.uniform2());
     //!            (b) caustics: radianceEstimate(maps.caustic, sp, m, wo, opt.causticEstimate);
     //!            (c) the indirect light, if v.bounces < opt.maxDepth:
     //!                - irradiance cache (Eq. 8.17): if opt.cache and m is Lambertian
     //!                  (BSDFKind::Diffuse) and interpolateIrradiance(*opt.cache, x, n, E) finds
     //!                  records (n: the normal on wo's side), add albedo / pi * E (times v.beta);
-    //!                - otherwise final gathering: sampleBSDF(m, v.sp.n, wo, rng.uniform2(),
-    //!                  rng.uniform(), Transport::Radiance, s) and add gatherRadiance(scene, x,
-    //!                  s.wi, v.beta * s.weight, v.bounces, rng, maps.global, opt);
+    //!                - otherwise final gathering: sampleBSDF(m, v.sp.n, wo, u, uLobe,
+    //!                  Transport::Radiance, s) (u = rng.uniform2() before uLobe = rng.uniform())
+    //!                  and add gatherRadiance(scene, x, s.wi, v.beta * s.weight, v.bounces, rng,
+    //!                  maps.global, opt);
     //!            and end the walk.
     //! STUB (void)scene; (void)ray; (void)rng; (void)maps; (void)opt;
     //! STUB return PS_TODO("lesson 08: LiPhotonMap", Color(0.0f));

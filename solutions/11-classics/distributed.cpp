@@ -12,9 +12,9 @@ Color LiDistributed(const Scene& scene, const Ray& cameraRay, Rng& rng, int maxD
     //!          vertex, in this order: the emission the walk found, weighted as in lesson 3's
     //!          pt (misEmission); then at a glossy, mirror or glass vertex lesson 3's
     //!          MIS-weighted light sample (misLightSample) and the walk goes on; at a diffuse one
-    //!          a light sample (lesson 2's sampleDirectLight(scene, sp, wo, rng.uniform(),
-    //!          rng.uniform2())) with weight 1, if the path may still have a bounce, and the walk
-    //!          ends there.
+    //!          a light sample (lesson 2's sampleDirectLight(scene, sp, wo, uLight, uPoint),
+    //!          uLight = rng.uniform() drawn before uPoint = rng.uniform2()) with weight 1, if the
+    //!          path may still have a bounce, and the walk ends there.
     //!          Pitfalls: at a diffuse point no BSDF sample competes with the light sample (an MIS
     //!          weight there loses light); a miss ends the walk.
     //! STUB (void)scene; (void)cameraRay; (void)rng; (void)maxDepth;
@@ -28,8 +28,12 @@ Color LiDistributed(const Scene& scene, const Ray& cameraRay, Rng& rng, int maxD
             L += misLightSample(scene, v, rng, maxDepth);
             return true;
         }
-        if (v.bounces < maxDepth)
-            L += v.beta * sampleDirectLight(scene, v.sp, v.wo, rng.uniform(), rng.uniform2()).value;
+        if (v.bounces < maxDepth) {
+            // Named, in this order: C++ evaluates a call's arguments in no fixed order.
+            const float uLight = rng.uniform();
+            const Vec2 uPoint = rng.uniform2();
+            L += v.beta * sampleDirectLight(scene, v.sp, v.wo, uLight, uPoint).value;
+        }
         return false;  // a diffuse point: no interreflection
     });
     return L;

@@ -169,13 +169,15 @@ TEST_CASE("rays: rays start at the eye and are unit length with the exact direct
             return std::round((2.0f * rng.uniform() - 1.0f) * range * 16.0f) / 16.0f;
         };
         CameraSpec c;
-        c.eye = Vec3(grid16(100), grid16(100), grid16(100));
+        c.eye = Vec3{grid16(100), grid16(100), grid16(100)};
         Vec3 off;
-        do off = Vec3(grid16(8), grid16(8), grid16(8));
+        do off = Vec3{grid16(8), grid16(8), grid16(8)};
         while (glm::length(off) < 0.5f);
         c.target = c.eye + off;
-        do c.up = randomUnit(rng) * (0.5f + 2.0f * rng.uniform());
-        while (glm::length(glm::cross(glm::normalize(c.up), glm::normalize(off))) < 0.1f);
+        do {
+            const Vec3 dir = randomUnit(rng);  // before the length's number
+            c.up = dir * (0.5f + 2.0f * rng.uniform());
+        } while (glm::length(glm::cross(glm::normalize(c.up), glm::normalize(off))) < 0.1f);
         c.fovY = 5.0f + 145.0f * rng.uniform();
         do {
             c.width = 1 + int(rng.nextU32() % 2000);
@@ -208,7 +210,7 @@ TEST_CASE("rays: generateRay and Camera::rasterPosition are inverse [1 pt]") {
         const float far = 1.0f + ps::maxAbsComponent(c.eye);
         for (int j = 0; j < 500; ++j) {
             // raster -> ray -> a point on it -> rasterPosition: the same raster position (2e-3 px).
-            const Vec2 raster(rng.uniform() * c.width, rng.uniform() * c.height);
+            const Vec2 raster{rng.uniform() * c.width, rng.uniform() * c.height};
             const Ray ray = cam.generateRay(raster);
             const float t = far * (1.0f + 10.0f * rng.uniform());
             const Vec3 p = ray.o + t * ray.d;

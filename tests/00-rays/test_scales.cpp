@@ -16,7 +16,7 @@ Triangle randomTriangle(float scale, ps::Rng& rng) {
     Triangle t;
     do {
         for (Vec3* p : {&t.p0, &t.p1, &t.p2})
-            *p = scale * (2.0f * Vec3(rng.uniform(), rng.uniform(), rng.uniform()) - 1.0f);
+            *p = scale * (2.0f * Vec3{rng.uniform(), rng.uniform(), rng.uniform()} - 1.0f);
     } while (t.area() < 0.05f * scale * scale);
     return t;
 }

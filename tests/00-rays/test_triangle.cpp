@@ -178,7 +178,7 @@ TEST_CASE("rays: back-facing triangles are hit too and both windings give the sa
         Triangle tri;
         do {
             for (Vec3* p : {&tri.p0, &tri.p1, &tri.p2})
-                *p = 2.0f * Vec3(rng.uniform(), rng.uniform(), rng.uniform()) - 1.0f;
+                *p = 2.0f * Vec3{rng.uniform(), rng.uniform(), rng.uniform()} - 1.0f;
         } while (tri.area() < 0.1f);
         const Triangle flipped{tri.p0, tri.p2, tri.p1};
         const float e1 = 0.05f + 0.9f * rng.uniform(), e2 = (1.0f - e1) * (0.05f + 0.9f * rng.uniform());

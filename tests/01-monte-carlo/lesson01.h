@@ -28,10 +28,9 @@ using ps::Vec3;
 //               Phong lobe n = 0, 1, 10, uniform triangle                          -> 8
 //   t-tests:    plain (2 integrals), stratified (2), importance (2), 2D plain and
 //               stratified (2)                                                      -> 8
-// m = 16; each test runs at the Sidak level alpha' = 1 - (1 - a_L)^(1/16) ~ 5.2e-05, where
-// a_L = 1 - 0.99^(1/12) ~ 8.37e-4 is this lesson's share of the whole graded suite's 1 %
-// (tests/support/alpha.h): a correct implementation fails any of them by bad luck with
-// probability at most a_L, the whole course's suite at most 1 %.
+// m = 16 statistical tests, each at the level alpha() = testalpha::perTest(m) (tests/support/alpha.h
+// derives it from the course's 1 %: a correct implementation fails the whole graded suite by
+// bad luck in fewer than 1 run in 100).
 constexpr int kStatisticalTests = 16;
 inline double alpha() { return ps::testalpha::perTest(kStatisticalTests); }
 

@@ -119,7 +119,7 @@ std::vector<Vec2> jitteredGrid(uint64_t seed) {
     std::vector<Vec2> us;
     for (int i = 0; i < 64; ++i)
         for (int j = 0; j < 64; ++j) {
-            const Vec2 u((i + rng.uniform()) / 64.0f, (j + rng.uniform()) / 64.0f);
+            const Vec2 u{(i + rng.uniform()) / 64.0f, (j + rng.uniform()) / 64.0f};
             us.push_back(glm::clamp(u, Vec2(1e-3f), Vec2(1.0f - 1e-3f)));
         }
     return us;

@@ -31,10 +31,8 @@ using ps::Vec3;
 // Statistical tests in this suite (every other check is exact or deterministic):
 //   t-tests (Lambert's polygon light): 2 points x 6 estimators                    -> 12
 //   z-tests (images against the stored reference): 6 estimators                   ->  6
-// m = 18; each runs at the Sidak level alpha' = 1 - (1 - a_L)^(1/18) ~ 4.7e-05, where
-// a_L = 1 - 0.99^(1/12) ~ 8.37e-4 is this lesson's share of the whole graded suite's 1 %
-// (tests/support/alpha.h): a correct implementation fails any of them by bad luck with
-// probability at most a_L, the whole course's suite at most 1 %. (The relMSE comparison of the
+// m = 18 statistical tests, each at the level alpha() = testalpha::perTest(m) (tests/support/alpha.h
+// derives it from the course's 1 %). (The relMSE comparison of the
 // heuristics is not a hypothesis test: it compares fixed-seed renders whose margins are
 // documented in test_plates.cpp.)
 constexpr int kStatisticalTests = 18;

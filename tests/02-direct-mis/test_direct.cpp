@@ -144,9 +144,11 @@ TEST_CASE("direct: light and BSDF samples carry f Le cos / pdf and the pdfs of b
     int failures = 0, checked[2] = {0, 0};
     for (int technique = 0; technique < 2; ++technique)
         for (int i = 0; i < 2000; ++i) {
-            const ps::DirectSample d = technique == 0
-                                           ? ps::sampleDirectLight(scene, sp, wo, rng.uniform(), rng.uniform2())
-                                           : ps::sampleDirectBSDF(scene, sp, wo, rng.uniform2(), rng.uniform());
+            const float uLight = technique == 0 ? rng.uniform() : 0.0f;
+            const Vec2 u = rng.uniform2();
+            const float uLobe = technique == 0 ? 0.0f : rng.uniform();
+            const ps::DirectSample d = technique == 0 ? ps::sampleDirectLight(scene, sp, wo, uLight, u)
+                                                      : ps::sampleDirectBSDF(scene, sp, wo, u, uLobe);
             ps::Ray toLight = scene.spawnRay(sp, d.wi);
             ps::SurfacePoint y;
             const bool hitsLight = glm::length(d.wi) > 0.5f && scene.intersect(toLight, y) && y.light >= 0;

@@ -42,6 +42,8 @@ TEST_CASE("direct: on Veach's plates the power heuristic beats the better single
                 << ", " << kSpp << " spp (seed " << ps::testseed::seed(41)
                 << "), relMSE against the reference: expected "
                 << "the power heuristic's <= 1.1 min(light sampling, BSDF sampling) and < 1/4 of a black image's, got power "
-                << eP << ", light " << eL << ", BSDF " << eB << ", black " << eBlack);
+                << eP << ", light " << eL << ", BSDF " << eB << ", black " << eBlack
+                << "\n  (a = your power heuristic's image) "
+                << ps::stats::writeFailedImages(power.mean, power.variance, ref, ps::Image()));
     }
 }

@@ -34,10 +34,9 @@ using ps::Vec3;
 //            point light in a sphere, 3 radii x 2 estimators                        ->  6
 //            MIS on a walk with its own direction sampler (test_extensions.cpp)     ->  1
 //   z-tests: the Cornell box, 3 estimators against the stored reference             ->  3
-// m = 21; each runs at the Sidak level alpha' = 1 - (1 - a_L)^(1/21) ~ 4.0e-05, where
-// a_L = 1 - 0.99^(1/12) ~ 8.37e-4 is this lesson's share of the whole graded suite's 1 %
-// (tests/support/alpha.h): a correct implementation fails any of them by bad luck with
-// probability at most a_L, the whole course's suite at most 1 %.
+// m = 21 statistical tests, each at the level alpha() = testalpha::perTest(m) (tests/support/alpha.h
+// derives it from the course's 1 %: a correct implementation fails the whole graded suite by
+// bad luck in fewer than 1 run in 100).
 constexpr int kStatisticalTests = 21;
 inline double alpha() { return ps::testalpha::perTest(kStatisticalTests); }
 

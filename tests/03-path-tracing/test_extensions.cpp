@@ -200,7 +200,7 @@ quad -50 2 -50  50 2 -50  50 2 50  -50 2 50  material white
     std::string firstPdf;
     for (uint32_t i = 0; i < 64; ++i) {
         ps::Rng rng = ps::taskRng(ps::testseed::seed(3102), 0, i);
-        const Vec3 d = glm::normalize(Vec3(rng.uniform() - 0.5f, -1.0f, rng.uniform() - 0.5f));
+        const Vec3 d = glm::normalize(Vec3{rng.uniform() - 0.5f, -1.0f, rng.uniform() - 0.5f});
         bool prevDiffuse = false;
         ps::cameraWalk(room, ps::Ray(room.camera.position(), d), rng, opt, [&](const ps::WalkVertex& v) {
             if (v.sampler != &sampler) ++wrongSampler;

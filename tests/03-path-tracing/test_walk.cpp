@@ -179,7 +179,7 @@ TEST_CASE(
         int checked = 0, roulette = 0;
         for (int i = 0; i < 200; ++i) {
             ps::Rng rng = ps::taskRng(ps::testseed::seed(392), 0, uint32_t(i));
-            const Vec2 raster(rng.uniform() * float(camera.width()), rng.uniform() * float(camera.height()));
+            const Vec2 raster{rng.uniform() * float(camera.width()), rng.uniform() * float(camera.height())};
             const ps::Ray ray = camera.generateRay(raster);
             const ps::Rng before = rng;
             const std::vector<ps::WalkVertex> seen = recordWalk(c.scene, ray, rng, c.maxDepth);

@@ -32,10 +32,9 @@ using ps::fmt::str;
 // Statistical tests in this suite (every other check is exact or a deterministic quadrature):
 //   z-tests: a pixel measured as <W_e, L> against the path-traced reference, 3 pixels  -> 3
 //   t-tests: flux through a patch under a point light and under an area light         -> 2
-// m = 5; each runs at the Sidak level alpha' = 1 - (1 - a_L)^(1/5) ~ 1.7e-04, where
-// a_L = 1 - 0.99^(1/12) ~ 8.37e-4 is this lesson's share of the whole graded suite's 1 %
-// (tests/support/alpha.h): a correct implementation fails any of them by bad luck with
-// probability at most a_L, the whole course's suite at most 1 %.
+// m = 5 statistical tests, each at the level alpha() = testalpha::perTest(m) (tests/support/alpha.h
+// derives it from the course's 1 %: a correct implementation fails the whole graded suite by
+// bad luck in fewer than 1 run in 100).
 constexpr int kStatisticalTests = 5;
 inline double alpha() { return ps::testalpha::perTest(kStatisticalTests); }
 

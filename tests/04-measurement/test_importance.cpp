@@ -62,8 +62,10 @@ TEST_CASE(
         const ps::Camera cam = cc.make();
         const ImagePlane p = planeOf(cam);
         const Vec3 f = cam.forward();
-        for (auto [i, j] :
+        for (const std::pair<int, int>& pixel :
              {std::pair<int, int>{cc.w / 2, cc.h / 2}, {0, 0}, {cc.w - 1, cc.h - 1}, {cc.w - 1, 0}, {0, cc.h - 1}}) {
+            const int i = pixel.first,
+                      j = pixel.second;  // named, not bound: clang < 16 captures no binding in a lambda
             const auto W = [&](const Vec3& d) { return double(ps::pixelImportance(cam, i, j, d)) * glm::dot(d, f); };
             const glm::dvec2 a = p.ofRaster(i, j + 1.0), b = p.ofRaster(i + 1.0, j);
             const double I = integrateOverRect(p, a.x, a.y, b.x, b.y, 32, W);
@@ -85,6 +87,16 @@ TEST_CASE(
                                      "expected 1 (0 outside the pixel), got "
                                   << num(block));
         }
+        // Outside the image: half a pixel beyond the corner pixel (0, 0) (raster (-0.5, -0.5), which a
+        // cast to int puts in pixel 0) and straight behind the camera.
+        const glm::dvec2 out = p.ofRaster(-0.5, -0.5);
+        const Vec3 beyond = Vec3(p.dir(out.x, out.y));
+        CHECK_MESSAGE(ps::pixelImportance(cam, 0, 0, beyond) == 0.0f,
+                      cc.name << ", pixel (0, 0): a direction half a pixel outside the image (raster (-0.5, -0.5)): "
+                                 "expected W_e^(j) = 0, got "
+                              << ps::pixelImportance(cam, 0, 0, beyond));
+        CHECK_MESSAGE(ps::pixelImportance(cam, cc.w / 2, cc.h / 2, -f) == 0.0f,
+                      cc.name << ": a direction behind the camera: expected W_e^(j) = 0");
     }
 }
 

@@ -34,10 +34,9 @@ using ps::fmt::str;
 //            ring; each of its four edges (sum of the edge's pixels); the Cornell spheres away
 //            from the spheres; the glass lamp                                              -> 8
 //   t-tests: a point light in a sphere at 3 radii, and at maxdepth 1 and 2                -> 5
-// m = 13; each runs at the Sidak level alpha' = 1 - (1 - a_L)^(1/13) ~ 6.4e-05, where
-// a_L = 1 - 0.99^(1/12) ~ 8.37e-4 is this lesson's share of the whole graded suite's 1 %
-// (tests/support/alpha.h): a correct implementation fails any of them by bad luck with
-// probability at most a_L, the whole course's suite at most 1 %.
+// m = 13 statistical tests, each at the level alpha() = testalpha::perTest(m) (tests/support/alpha.h
+// derives it from the course's 1 %: a correct implementation fails the whole graded suite by
+// bad luck in fewer than 1 run in 100).
 constexpr int kStatisticalTests = 13;
 inline double alpha() { return ps::testalpha::perTest(kStatisticalTests); }
 

@@ -56,11 +56,13 @@ TEST_CASE(
                   "lt on the Cornell box, the 124 border pixels: expected the path-traced reference within its noise "
                   "(x is the index along the ring: a = yours, b = the reference), got\n  "
                       << z.report);
-    for (const auto& [name, inEdge] : std::vector<std::pair<std::string, std::function<bool(int, int)>>>{
+    for (const auto& edge : std::vector<std::pair<std::string, std::function<bool(int, int)>>>{
              {"left column", [](int x, int) { return x == 0; }},
              {"right column", [](int x, int) { return x == 31; }},
              {"top row", [](int, int y) { return y == 0; }},
              {"bottom row", [](int, int y) { return y == 31; }}}) {
+        const std::string& name = edge.first;  // named, not bound: clang < 16 captures no binding in a lambda
+        const std::function<bool(int, int)>& inEdge = edge.second;
         double a = 0.0, b = 0.0, va = 0.0, vb = 0.0;
         for (int y = 0; y < 32; ++y)
             for (int x = 0; x < 32; ++x)

@@ -36,9 +36,9 @@ using DVec3 = glm::dvec3;
 //            k = 2: (0,3), (2,1); k = 3: (0,4), (2,2), (3,1)                                -> 5
 //   z-test of the sum over k = 1, 2, 3 of technique (1, k) against lesson 3's path tracer
 //            at maxdepth 2                                                                  -> 1
-// m = 6; each runs at the Sidak level alpha' = 1 - (1 - a_L)^(1/6) ~ 1.4e-04, where a_L ~ 8.37e-4 is
-// the lesson's share of the whole course's 1 % (tests/support/alpha.h): a correct implementation
-// fails the course's graded suite by bad luck in fewer than 1 run in 100.
+// m = 6 statistical tests, each at the level alpha() = testalpha::perTest(m) (tests/support/alpha.h
+// derives it from the course's 1 %: a correct implementation fails the whole graded suite by
+// bad luck in fewer than 1 run in 100).
 constexpr int kStatisticalTests = 6;
 inline double alpha() { return ps::testalpha::perTest(kStatisticalTests); }
 

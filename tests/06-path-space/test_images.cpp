@@ -4,13 +4,15 @@
 // its walls do not touch, so G between surfaces is bounded and every technique has a finite
 // variance, which the z-tests need; in the real Cornell box's corners (2,2) has none), the image of paths of length exactly k estimated by one
 // technique alone (f / p_{s,t} with your f and p, renderTechnique) must equal the image of
-// technique (1, k) (next-event estimation), for k = 2 and 3, per-pixel z-tests at level alpha()
-// (lesson06.h). And the sum over k = 1, 2, 3 of the (1, k) images must equal lesson 3's path
+// technique (1, k) (next-event estimation), for k = 2 and 3, z-tests over 2 x 2 pixel blocks at
+// level alpha() (lesson06.h). And the sum over k = 1, 2, 3 of the (1, k) images must equal lesson 3's path
 // tracer with maxdepth 2 (an independent estimator of the same sum). No NaN or Inf anywhere.
 #include <map>
 #include "lesson06.h"
+#include "seed.h"
 
 using namespace lesson06;
+using ps::testrender::blocks;
 
 namespace {
 
@@ -26,7 +28,8 @@ const Render& technique(int k, int s) {
     static std::map<std::pair<int, int>, Render> cache;
     auto it = cache.find({k, s});
     if (it != cache.end()) return it->second;
-    const ps::RenderResult r = ps::renderTechnique(gapBox(), k, s, kIterations, kSeed + uint64_t(10 * k + s), 1);
+    const ps::RenderResult r =
+        ps::renderTechnique(gapBox(), k, s, kIterations, ps::testseed::seed(kSeed + uint64_t(10 * k + s)), 1);
     return cache[{k, s}] = Render{r.film.mean(), r.film.varianceOfMean(), r.stats};
 }
 
@@ -43,9 +46,15 @@ void checkAgainstNEE(int k, int s) {
     CHECK_MESSAGE(total(a.mean) > 0.0, "expected a lit image, got a black one (is f or p_{s,t} 0?)");
     CHECK_MESSAGE(total(b.mean) > 0.0,
                   "technique (1, " << k << "): expected a lit image, got a black one (is f or p_{s,t} 0?)");
-    const ps::stats::ZTestResult z = ps::stats::zTestImages(a.mean, a.variance, b.mean, b.variance, alpha());
-    CHECK_MESSAGE(z.passed, "expected the same image within the noise (a = (" << s << ", " << k + 1 - s << "), b = (1, "
-                                                                              << k << ")), got\n  " << z.report);
+    // Over 2 x 2 pixel blocks, every block channel at the Sidak share of alpha(): (0, k + 1) hits
+    // the light by chance, and in a pixel that sees little of it (gap box pixel (2, 4), k = 2: a
+    // mean of 0.0017) it may not hit it at all, a mean and a variance estimate of 0 that fail a
+    // per-pixel z-test however right the pdfs are.
+    const ps::stats::ZTestResult z = ps::stats::zTestImages(blocks(a.mean, 2), blocks(a.variance, 2), blocks(b.mean, 2),
+                                                            blocks(b.variance, 2), alpha(), 1.0);
+    CHECK_MESSAGE(z.passed, "expected the same image within the noise (a = ("
+                                << s << ", " << k + 1 - s << "), b = (1, " << k
+                                << "); x, y index 2 x 2 pixel blocks), got\n  " << z.report);
 }
 
 }  // namespace
@@ -79,7 +88,7 @@ TEST_CASE(
     std::unique_ptr<ps::Integrator> pt = ps::makeIntegrator("pt");
     ps::RenderOptions opt;
     opt.spp = 8000;
-    opt.seed = kSeed;
+    opt.seed = ps::testseed::seed(kSeed);
     opt.threads = 1;
     const ps::RenderResult ref = ps::render(scene, *pt, opt);
     CHECK_MESSAGE(total(sum) > 0.0, "expected a lit image, got a black one (is f or p_{s,t} 0?)");
@@ -89,5 +98,5 @@ TEST_CASE(
         z.passed,
         "gap box 16 x 16: expected the sum over k = 1, 2, 3 of technique (1, k) (a) to equal pt with maxdepth 2 (b, "
         "8000 spp, seed "
-            << kSeed << ") within the noise, got\n  " << z.report);
+            << opt.seed << ") within the noise, got\n  " << z.report);
 }

@@ -36,9 +36,9 @@ using ps::fmt::str;
 //   bpt against path-traced references: Cornell box (bpt and bpt-balance), Cornell spheres,
 //   point light, background                                                              -> 5
 //   pruned against unpruned renders: point light, spheres                               -> 2
-// m = 16; each runs at the Sidak level alpha' = 1 - (1 - a_L)^(1/16) ~ 5.2e-05, where a_L ~ 8.37e-4 is
-// the lesson's share of the whole course's 1 % (tests/support/alpha.h): a correct implementation
-// fails the course's graded suite by bad luck in fewer than 1 run in 100.
+// m = 16 statistical tests, each at the level alpha() = testalpha::perTest(m) (tests/support/alpha.h
+// derives it from the course's 1 %: a correct implementation fails the whole graded suite by
+// bad luck in fewer than 1 run in 100).
 constexpr int kStatisticalTests = 16;
 inline double alpha() { return ps::testalpha::perTest(kStatisticalTests); }
 
@@ -129,14 +129,16 @@ inline std::vector<JoinedPath> randomPaths(const ps::Scene& scene, int nSamples,
     const int w = scene.camera.width(), ht = scene.camera.height();
     for (int i = 0; i < nSamples; ++i) {
         ps::Rng rng(seed, uint64_t(i));
-        const Vec2 raster(rng.uniform() * float(w), rng.uniform() * float(ht));
+        const Vec2 raster{rng.uniform() * float(w), rng.uniform() * float(ht)};
         ps::cameraSubpath(scene, rng, raster, scene.settings.maxDepth, h, camera);
         ps::lightSubpath(scene, rng, scene.settings.maxDepth, h, light);
         for (int t = 1; t <= int(camera.size()); ++t)
             for (int s = 0; s <= std::max(int(light.size()), 1); ++s) {
                 if (s + t < 2 || (t == 1 && s == 0) || s + t - 2 > scene.settings.maxDepth) continue;
                 if (s > int(light.size()) && !(s == 1 && t >= 2)) continue;
-                const ps::Connection c = ps::connect(scene, light, camera, s, t, rng.uniform(), rng.uniform2());
+                const float uLight = rng.uniform();
+                const Vec2 uPoint = rng.uniform2();
+                const ps::Connection c = ps::connect(scene, light, camera, s, t, uLight, uPoint);
                 if (!c.valid) continue;
                 paths.push_back(join(s == 1 ? &c.sampledLight : light.data(), s, camera.data(), t, c.rev));
             }

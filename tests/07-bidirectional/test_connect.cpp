@@ -273,7 +273,7 @@ TEST_CASE(
                                         << y0.pointLight << ", infinite " << y0.infinite);
             const double pdf = l == area    ? double(P) / double(scene().lights[size_t(area)].area)
                                : l == point ? double(P)
-                                            : double(P) * double(ps::pdfBackgroundDirection());
+                                            : double(P) / (4.0 * 3.14159265358979323846);
             CHECK_MESSAGE(std::abs(double(y0.pdfFwd) - pdf) <= 1e-4 * pdf,
                           "the " << kind << ": expected c.sampledLight.pdfFwd = P(l) "
                                  << (l == area    ? "/ area"

@@ -5,6 +5,7 @@
 // README). Per-pixel z-tests at level alpha() (lesson07.h), at least 99.75 % of the pixel
 // channels must pass; every render has no NaN or Inf sample.
 #include "lesson07.h"
+#include "seed.h"
 
 using namespace lesson07;
 
@@ -15,7 +16,8 @@ struct Case {
     int iterations;
 };
 
-void checkAgainstReference(const Case& c, const std::string& algo, uint64_t seed) {
+void checkAgainstReference(const Case& c, const std::string& algo, uint64_t baseSeed) {
+    const uint64_t seed = ps::testseed::seed(baseSeed);
     const ps::Scene scene = loadSceneAt("scenes/" + c.scene + ".scene", 32, 32);
     const Render r = render(scene, algo, c.iterations, seed);
     CHECK_MESSAGE(r.stats.bad() == 0, algo << " on " << c.scene << ": expected 0 NaN and 0 Inf samples, got "
@@ -68,7 +70,7 @@ TEST_CASE("bpt equals the path-traced reference on the Cornell spheres: mirror, 
     // the sum over all sphere pixels must be within 10 % of the reference's.
     const ps::Scene scene = loadSceneAt("scenes/cornell-spheres.scene", 32, 32);
     constexpr int kIterations = 512;
-    constexpr uint64_t kSeedSpheres = 7103;
+    const uint64_t kSeedSpheres = ps::testseed::seed(7103);
     const Render r = render(scene, "bpt", kIterations, kSeedSpheres);
     CHECK_MESSAGE(r.stats.bad() == 0, "bpt on cornell-spheres: expected 0 NaN and 0 Inf samples, got "
                                           << r.stats.nan << " NaN and " << r.stats.inf << " Inf");

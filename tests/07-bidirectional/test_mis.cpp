@@ -5,6 +5,7 @@
 // and the weights added up: they must sum to 1 (the weights partition the path's estimate,
 // Eq. 7.5), with the full list and the recursive form, and the two forms must agree.
 #include "lesson07.h"
+#include "seed.h"
 
 using namespace lesson07;
 
@@ -24,7 +25,7 @@ struct Checked {
 template <class Weight>
 void checkScene(const std::string& scenePath, ps::Heuristic h, const char* form, Weight weight) {
     const ps::Scene scene = loadSceneAt(scenePath, 16, 16);
-    const std::vector<JoinedPath> paths = randomPaths(scene, kSamples, 7001, h);
+    const std::vector<JoinedPath> paths = randomPaths(scene, kSamples, ps::testseed::seed(7001), h);
     CHECK_MESSAGE(paths.size() >= 100, scenePath << ": expected at least 100 valid connections from " << kSamples
                                                  << " pixel samples (subpaths and connect), got " << paths.size());
     double worst = 0.0;
@@ -70,7 +71,7 @@ TEST_CASE("recursive MIS weights sum to 1 and equal the full-list weights to 1e-
             });
             // Both forms on every technique of every path.
             const ps::Scene scene = loadSceneAt(s, 16, 16);
-            const std::vector<JoinedPath> paths = randomPaths(scene, kSamples / 3, 7002, h);
+            const std::vector<JoinedPath> paths = randomPaths(scene, kSamples / 3, ps::testseed::seed(7002), h);
             double worst = 0.0;
             std::string where;
             for (const JoinedPath& j : paths)

@@ -128,14 +128,16 @@ void checkScene(const char* name, const char* text, uint64_t seed) {
         ps::Subpath camera, light;
         for (int i = 0; i < kSamples; ++i) {
             ps::Rng rng(seed, uint64_t(i));
-            const Vec2 raster(rng.uniform() * float(w), rng.uniform() * float(ht));
+            const Vec2 raster{rng.uniform() * float(w), rng.uniform() * float(ht)};
             ps::cameraSubpath(scene, rng, raster, maxDepth, h, camera);
             ps::lightSubpath(scene, rng, maxDepth, h, light);
             for (int t = 1; t <= int(camera.size()); ++t)
                 for (int s = 0; s <= std::max(int(light.size()), 1); ++s) {
                     if (s + t < 2 || (t == 1 && s == 0) || s + t - 2 > maxDepth) continue;
                     if (s > int(light.size()) && !(s == 1 && t >= 2)) continue;
-                    const ps::Connection c = ps::connect(scene, light, camera, s, t, rng.uniform(), rng.uniform2());
+                    const float uLight = rng.uniform();
+                    const Vec2 uPoint = rng.uniform2();
+                    const ps::Connection c = ps::connect(scene, light, camera, s, t, uLight, uPoint);
                     if (!c.valid) continue;
                     const PathVertex* y = s == 1 ? &c.sampledLight : light.data();
                     const int n = s + t;
@@ -190,9 +192,13 @@ void checkScene(const char* name, const char* text, uint64_t seed) {
                 }
         }
         const std::string hs = h == ps::Heuristic::Power ? "power" : "balance";
-        for (const auto& [err, c, form] :
+        for (const auto& worst :
              {std::tuple<double, const Case&, const char*>{errFull, worstFull, "misWeightFull"},
               std::tuple<double, const Case&, const char*>{errRec, worstRec, "misWeightRecursive"}}) {
+            // named, not bound: clang < 16 captures no binding in a lambda
+            const double err = std::get<0>(worst);
+            const Case& c = std::get<1>(worst);
+            const char* form = std::get<2>(worst);
             CHECK_MESSAGE(err <= 1.0, name << ", " << hs << " heuristic, " << form
                                            << ": expected the weight p_s^b / sum p_s'^b of lesson 6's pdfTechnique "
                                               "(relative 1e-3), worst on "

@@ -3,6 +3,7 @@
 // MIS weights computed with the same pdf functions, Eq. 7.3); no NaN or Inf anywhere; the image
 // does not depend on the number of threads.
 #include "lesson07.h"
+#include "seed.h"
 
 using namespace lesson07;
 
@@ -45,8 +46,10 @@ bool mentions(const std::vector<std::string>& lines, const std::string& what) {
 
 TEST_CASE(
     "pruning is exact: pruned and unpruned renders agree with a point light and with specular spheres (z-tests) [2 pts]") {
-    for (const auto& [name, iterations] :
+    for (const auto& sceneAndSpp :
          std::vector<std::pair<std::string, int>>{{"cornell-point-light", 256}, {"cornell-spheres", 384}}) {
+        const std::string& name = sceneAndSpp.first;  // named, not bound: clang < 16 captures no binding in a lambda
+        const int iterations = sceneAndSpp.second;
         ps::Scene pruned = loadSceneAt("scenes/" + name + ".scene", 24, 24);
         ps::Scene full = pruned;
         full.settings.prune = false;
@@ -59,8 +62,8 @@ TEST_CASE(
         else
             CHECK_MESSAGE(mentions(left, "specular"),
                           name << ": expected bpt to leave out connections at specular vertices");
-        const Render a = render(pruned, "bpt", iterations, 7301);
-        const Render b = render(full, "bpt", iterations, 7302);
+        const Render a = render(pruned, "bpt", iterations, ps::testseed::seed(7301));
+        const Render b = render(full, "bpt", iterations, ps::testseed::seed(7302));
         CHECK_MESSAGE(a.stats.bad() + b.stats.bad() == 0, name << ": expected no NaN or Inf samples, got "
                                                                << a.stats.bad() << " pruned and " << b.stats.bad()
                                                                << " unpruned");
@@ -85,8 +88,8 @@ TEST_CASE(
     text = ps::scenetext::replaceLines(text, "camera",
                                        "camera eye 60 60 480  target 0 0 559.2  up 0 1 0  fov 40  resolution 16 16");
     const ps::Scene scene = ps::parseScene(text, sourcePath("scenes/cornell-box.scene"));
-    const Render b = render(scene, "bpt", 64, 7401);
-    const Render p = render(scene, "pt", 1024, 7402);
+    const Render b = render(scene, "bpt", 64, ps::testseed::seed(7401));
+    const Render p = render(scene, "pt", 1024, ps::testseed::seed(7402));
     const auto stats = [](const ps::Image& img, int& at) {
         double mx = -1.0, mean = 0.0;
         for (size_t i = 0; i < img.pixels.size(); ++i) {
@@ -100,8 +103,8 @@ TEST_CASE(
         return std::make_pair(mx, mean / double(img.pixels.size()));
     };
     int atB = 0, atP = 0;
-    const auto [maxB, meanB] = stats(b.mean, atB);
-    const auto [maxP, meanP] = stats(p.mean, atP);
+    const std::pair<double, double> sB = stats(b.mean, atB), sP = stats(p.mean, atP);
+    const double maxB = sB.first, meanB = sB.second, maxP = sP.first, meanP = sP.second;
     CHECK_MESSAGE(b.stats.bad() == 0, "bpt in the corner: expected no NaN or Inf samples, got " << b.stats.bad());
     CHECK_MESSAGE(meanB > 0.0, "bpt in the corner: expected a lit image, got a black one");
     CHECK_MESSAGE(maxB <= 2.0 * maxP,
@@ -119,7 +122,7 @@ TEST_CASE("no NaN or Inf in any scene of the course, and every image is lit [1 p
           "cornell-background", "glass-lamp", "veach-plates", "point-in-sphere", "furnace"}) {
         const ps::Scene scene = loadSceneAt("scenes/" + name + ".scene", 12, 12);
         for (const std::string algo : {"bpt", "bpt-balance", "bpt-full"}) {
-            const Render r = render(scene, algo, 24, 7501);
+            const Render r = render(scene, algo, 24, ps::testseed::seed(7501));
             CHECK_MESSAGE(r.stats.bad() == 0, algo << " on " << name << ": expected 0 NaN and 0 Inf samples, got "
                                                    << r.stats.nan << " NaN and " << r.stats.inf << " Inf");
             CHECK_MESSAGE(total(r.mean) > 0.0, algo << " on " << name << ": expected a lit image, got a black one");
@@ -129,8 +132,8 @@ TEST_CASE("no NaN or Inf in any scene of the course, and every image is lit [1 p
 
 TEST_CASE("the image does not depend on the number of threads [1 pt]") {
     const ps::Scene scene = loadSceneAt("scenes/cornell-spheres.scene", 16, 16);
-    const Render one = render(scene, "bpt", 6, 7601, 1);
-    const Render two = render(scene, "bpt", 6, 7601, 2);
+    const Render one = render(scene, "bpt", 6, ps::testseed::seed(7601), 1);
+    const Render two = render(scene, "bpt", 6, ps::testseed::seed(7601), 2);
     CHECK_MESSAGE(total(one.mean) > 0.0, "bpt on cornell-spheres: expected a lit image, got a black one");
     int differ = 0;
     for (size_t i = 0; i < one.mean.pixels.size(); ++i) differ += one.mean.pixels[i] != two.mean.pixels[i];

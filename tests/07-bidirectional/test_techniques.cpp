@@ -5,6 +5,7 @@
 // difference of two stored pt renders with maxdepth k - 1 and k - 2 (16 x 16, 262144 spp each,
 // commands in the README), compared on sums over 4 x 4 pixel blocks, every block channel must pass. Veach's pyramid rows 1-3: 9 z-tests at level alpha() (lesson07.h).
 #include "lesson07.h"
+#include "seed.h"
 
 using namespace lesson07;
 
@@ -17,7 +18,7 @@ constexpr uint64_t kSeed = 7201;
 const ps::TechniqueImages& techniques() {
     static const ps::TechniqueImages t = [] {
         ps::Scene scene = loadSceneAt("scenes/cornell-box.scene", 16, 16);
-        return ps::renderTechniques(scene, kMaxLength, kSpp, kSeed, 1, ps::BptOptions{});
+        return ps::renderTechniques(scene, kMaxLength, kSpp, ps::testseed::seed(kSeed), 1, ps::BptOptions{});
     }();
     return t;
 }
@@ -39,15 +40,7 @@ std::pair<ps::Image, ps::Image> referenceOfLength(int k) {
     return {img, var};
 }
 
-// Sums over blocks of b x b pixels (a technique that hits the light by chance, like (0, 3), has
-// a few hits per pixel: per-pixel variance estimates of such heavy-tailed samples are
-// unreliable, sums of 16 pixels are not). Variances add (the pixels are independent).
-ps::Image blocks(const ps::Image& img, int b) {
-    ps::Image out(img.width / b, img.height / b);
-    for (int y = 0; y < img.height; ++y)
-        for (int x = 0; x < img.width; ++x) out.at(x / b, y / b) += img.at(x, y);
-    return out;
-}
+using ps::testrender::blocks;  // sums over b x b pixels: (0, 3) has a few hits per pixel
 
 }  // namespace
 
@@ -56,7 +49,9 @@ TEST_CASE(
     const ps::TechniqueImages& t = techniques();
     REQUIRE(t.unweighted.size() == size_t(ps::techniqueCount(kMaxLength)));
     for (int k = 1; k <= kMaxLength; ++k) {
-        const auto [ref, refVar] = referenceOfLength(k);
+        const auto reference = referenceOfLength(k);
+        const auto& ref = reference.first;  // named, not bound: clang < 16 captures no binding in a lambda
+        const auto& refVar = reference.second;
         for (int s = 0; s <= k; ++s) {  // s = k + 1 is t = 0: the pinhole cannot be hit
             const int i = ps::techniqueIndex(s, k);
             const ps::stats::ZTestResult z =
@@ -69,7 +64,8 @@ TEST_CASE(
                                                  << num(total(t.unweighted[size_t(i)])));
             CHECK_MESSAGE(z.passed, "technique (s, t) = ("
                                         << s << ", " << k + 1 - s << ") alone, unweighted, path length " << k
-                                        << " (Cornell box 16 x 16, " << kSpp << " spp, seed " << kSeed
+                                        << " (Cornell box 16 x 16, " << kSpp << " spp, seed "
+                                        << ps::testseed::seed(kSeed)
                                         << "): expected the reference of that length (a = yours, b = the "
                                            "reference; x, y index 4 x 4 blocks), got\n  "
                                         << z.report);

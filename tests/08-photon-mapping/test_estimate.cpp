@@ -24,8 +24,8 @@ double integrateKernel(ps::Filter f, float r, float coneK) {
     return sum * r / n;
 }
 
-// Why a kernel integrates to `got` instead of 1, if it is a classic mistake.
-std::string kernelHint(ps::Filter f, double got, float coneK) {
+// Why a kernel of radius r integrates to `got` instead of 1, if it is a classic mistake.
+std::string kernelHint(ps::Filter f, double got, float r, float coneK) {
     auto near = [&](double v) { return std::abs(got - v) < 0.02 * v; };
     if (near(ps::kPi)) return " (a factor pi too large: the 1 / pi of the normalisation 1 / (pi r^2) is missing)";
     if (near(1.0 / ps::kPi)) return " (a factor 1 / pi too small: divided by pi twice?)";
@@ -36,8 +36,28 @@ std::string kernelHint(ps::Filter f, double got, float coneK) {
     if (f == ps::Filter::Gaussian && near(1.6687))
         return " (the exponent is -beta d^2 / (2 r^2): with alpha = 0.918 the filter integrates to 1 only with "
                "-beta d^2 / r^2, Eq. 8.10)";
-    if (f == ps::Filter::Gaussian && near(ps::kPi * 0.34673)) return " (no 1 / r^2?)";
+    // Without alpha the form of Eq. 8.10 integrates to pi * 0.34673 = 1 / 0.918.
+    if (f == ps::Filter::Gaussian && near(1.0 / double(ps::kGaussAlpha)))
+        return " (a factor 1 / alpha too large: the constant alpha = 0.918 in front is missing)";
+    // Jensen's published form, exponent -beta d^2 / (2 r^2) and divided by pi r^2 (README 1.6).
+    if (f == ps::Filter::Gaussian && near(0.5311))
+        return " (the published form with -beta d^2 / (2 r^2) over pi r^2 integrates to 0.531: the course uses "
+               "Eq. 8.10 as written)";
+    if (near(double(r) * r)) return " (a factor r^2: the 1 / r^2 is missing)";
     return " (check the normalisation)";
+}
+
+// The kernels of Eq. 8.7-8.10, the test's own (double): the estimate's oracle below does not
+// call the lesson's filterKernel, so a wrong kernel cannot hide a wrong sum or radius.
+double ownKernel(ps::Filter f, double d2, double r2, double k) {
+    if (d2 > r2) return 0.0;
+    const double a = double(ps::kGaussAlpha), b = double(ps::kGaussBeta);
+    switch (f) {
+    case ps::Filter::Box: return 1.0 / (ps::kPi * r2);
+    case ps::Filter::Cone: return (1.0 - std::sqrt(d2 / r2) / k) / ((1.0 - 2.0 / (3.0 * k)) * ps::kPi * r2);
+    case ps::Filter::Gaussian: return a * (1.0 - (1.0 - std::exp(-b * d2 / r2)) / (1.0 - std::exp(-b))) / r2;
+    }
+    return 0.0;
 }
 
 }  // namespace
@@ -52,7 +72,7 @@ TEST_CASE("filters: box, cone and Gaussian kernels integrate to one over the dis
                               ps::filterName(f)
                                   << " filter, r = " << r << (f == ps::Filter::Cone ? ", k = " + num(k) : std::string())
                                   << ": expected the kernel to integrate to 1 over the disc, got " << num(I)
-                                  << kernelHint(f, I, k));
+                                  << kernelHint(f, I, r, k));
             }
         }
         CHECK_MESSAGE(ps::filterKernel(f, 1.0001f, 1.0f, 1.1f) == 0.0f,
@@ -84,8 +104,9 @@ TEST_CASE(
     "radiance estimate: the k nearest photons, r the k-th distance, f from each photon's direction (Eq. 8.6) [2 pts]") {
     // Photons around the origin of the plane z = 0 with powers and directions of their own (some
     // from below the plane: f = 0 there), a glossy Phong material; the estimate must be the sum
-    // over the brute-force k nearest, with r^2 the k-th squared distance. A fixed-radius estimate
-    // (k = 0) sums over the photons within maxRadius with r = maxRadius.
+    // over the brute-force k nearest, with r^2 the k-th squared distance (maxRadius^2 where fewer
+    // than k lie within maxRadius). A fixed-radius estimate (k = 0) sums over the photons within
+    // maxRadius with r = maxRadius.
     ps::Rng rng(ps::testseed::seed(821));
     std::vector<Photon> photons;
     for (int i = 0; i < 2000; ++i) {
@@ -94,7 +115,7 @@ TEST_CASE(
         ph.p = Vec3(x, y, 0.0f);
         const float a = rng.uniform(), b = rng.uniform(), c = rng.uniform();
         ph.power = Color(a, b, c);
-        const Vec3 w = glm::normalize(Vec3(rng.uniform() - 0.5f, rng.uniform() - 0.5f, rng.uniform() - 0.2f));
+        const Vec3 w = glm::normalize(Vec3{rng.uniform() - 0.5f, rng.uniform() - 0.5f, rng.uniform() - 0.2f});
         ph.setWLight(w);
         photons.push_back(ph);
     }
@@ -109,7 +130,8 @@ TEST_CASE(
     sp.n = Vec3(0, 0, 1);
     const Vec3 wo = glm::normalize(Vec3(0.3f, -0.2f, 1.0f));
     for (ps::Filter f : {ps::Filter::Box, ps::Filter::Cone, ps::Filter::Gaussian}) {
-        for (int k : {0, 1, 10, 60}) {
+        // k = 100 and 500: fewer than k photons lie within maxRadius (about 63 do), so r = maxRadius.
+        for (int k : {0, 1, 10, 60, 100, 500}) {
             sp.p = Vec3(0.1f * float(k % 7) - 0.3f, 0.05f * float(k % 5), 0.0f);
             ps::EstimateOptions opt;
             opt.filter = f;
@@ -127,7 +149,7 @@ TEST_CASE(
             for (size_t j = 0; j < n; ++j) {
                 const Photon& ph = map.nodes[d[j].second];
                 expected += ps::evalBSDF(glossy, sp.n, wo, ph.wLight()) * ph.power *
-                            ps::filterKernel(f, d[j].first, r2, opt.coneK);
+                            float(ownKernel(f, d[j].first, r2, opt.coneK));
             }
             const Color got = ps::radianceEstimate(map, sp, glossy, wo, opt);
             const bool ok = glm::length(got - expected) <= 1e-4f * (glm::length(expected) + 1e-6f);
@@ -230,7 +252,7 @@ TEST_CASE("radiance estimate: unbiased on a linear irradiance with every filter 
 }
 
 TEST_CASE(
-    "radiance estimate: the box filter's bias on a quadratic irradiance is (E_xx + E_yy) r^2 / 8 (Eq. 8.12, t-test) [2 pts]") {
+    "radiance estimate: the box filter's bias on a quadratic irradiance is the curvature term of Eq. 8.12 (t-test) [2 pts]") {
     // E = 1 + 0.5 x^2 + 0.3 y^2 + 0.2 x y: E_xx + E_yy = 1.6, so with r = 0.3 every estimate is
     // 1.6 * 0.09 / 8 = 0.018 too high on average (the mean of E over the disc, Eq. 8.12).
     const Field quadratic{"E = 1 + 0.5 x^2 + 0.3 y^2 + 0.2 x y",
@@ -241,7 +263,8 @@ TEST_CASE(
     const ps::stats::Welford w = sampleEstimates(quadratic, ps::Filter::Box, r, 60, 20000, ps::testseed::seed(826),
                                                  [](double est, double E) { return est - E; });
     const ps::stats::TTestResult t = ps::stats::tTest(w, bias, alpha(), 0.25);
-    CHECK_MESSAGE(t.passed, "box filter, fixed radius "
-                                << r << ", " << quadratic.name << ": expected estimate - E = (E_xx + E_yy) r^2 / 8 = "
-                                << num(bias) << " on average, got " << num(w.mean) << "\n  " << t.report);
+    CHECK_MESSAGE(t.passed, "box filter, fixed radius " << r << ", " << quadratic.name
+                                                        << ": expected estimate - E = Eq. 8.12's curvature term, "
+                                                        << num(bias) << " on average, got " << num(w.mean) << "\n  "
+                                                        << t.report);
 }

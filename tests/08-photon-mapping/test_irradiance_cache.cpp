@@ -8,6 +8,7 @@
 // holds more records as the error bound a tightens (Ward: about 1 / a^2 of them).
 #include <omp.h>
 #include <functional>
+#include <unordered_map>
 #include <limits>
 #include "lesson08.h"
 #include "scene_text.h"
@@ -73,6 +74,53 @@ bool close(const ps::Color& a, const ps::Color& b) {
     return true;
 }
 
+// The k-nearest box estimate of Eq. 8.6 over a photon map, the test's own (a uniform grid of
+// cells of the maximum radius, every candidate's distance, nth_element), so that the oracle of a
+// record's E does not run the lesson's radianceEstimate or its kd-tree.
+struct OwnEstimate {
+    const PhotonMap& map;
+    float cell;
+    std::unordered_map<uint64_t, std::vector<size_t>> grid;
+    OwnEstimate(const PhotonMap& m, float maxRadius) : map(m), cell(maxRadius) {
+        for (size_t i = 1; i <= map.size(); ++i) grid[key(cellOf(map.nodes[i].p))].push_back(i);
+    }
+    glm::ivec3 cellOf(const Vec3& p) const { return glm::ivec3(glm::floor(p / cell)); }
+    static uint64_t key(const glm::ivec3& c) {
+        return (uint64_t(uint32_t(c.x)) * 73856093u) ^ (uint64_t(uint32_t(c.y)) * 19349663u) ^
+               (uint64_t(uint32_t(c.z)) * 83492791u);
+    }
+    Color operator()(const ps::SurfacePoint& sp, const ps::Material& m, const Vec3& wo, int k) const {
+        std::vector<std::pair<float, size_t>> near;
+        const glm::ivec3 c = cellOf(sp.p);
+        for (int dx = -1; dx <= 1; ++dx)
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dz = -1; dz <= 1; ++dz) {
+                    const glm::ivec3 q = c + glm::ivec3(dx, dy, dz);
+                    const auto it = grid.find(key(q));
+                    if (it == grid.end()) continue;
+                    for (size_t i : it->second) {
+                        if (cellOf(map.nodes[i].p) != q) continue;  // a hash collision
+                        const Vec3 d = map.nodes[i].p - sp.p;
+                        const float d2 = glm::dot(d, d);
+                        if (d2 <= cell * cell) near.push_back({d2, i});
+                    }
+                }
+        float r2 = cell * cell;
+        if (int(near.size()) >= k) {
+            std::nth_element(near.begin(), near.begin() + (k - 1), near.end());
+            r2 = near[size_t(k - 1)].first;
+            near.resize(size_t(k));
+        }
+        Color L(0.0f);
+        if (!(r2 > 0.0f)) return L;
+        for (const auto& n : near) {
+            const Photon& ph = map.nodes[n.second];
+            L += ps::evalBSDF(m, sp.n, wo, ph.wLight()) * ph.power * float(1.0 / (ps::kPi * double(r2)));
+        }
+        return L;
+    }
+};
+
 // A point of a scene's surface, as the camera sees it through raster position (x, y).
 ps::SurfacePoint seenAt(const ps::Scene& scene, float x, float y, Vec3& wo) {
     ps::Ray ray = scene.camera.generateRay(Vec2(x, y));
@@ -121,7 +169,7 @@ TEST_CASE(
     cache.a = 0.3f;
     for (int i = 0; i < 60; ++i) {
         const float x = rng.uniform(), y = rng.uniform(), R = 0.1f + 0.4f * rng.uniform();
-        const Color E(0.5f + rng.uniform(), 0.5f + rng.uniform(), 0.5f + rng.uniform());
+        const Color E{0.5f + rng.uniform(), 0.5f + rng.uniform(), 0.5f + rng.uniform()};
         if (i % 6 == 5) cache.records.push_back(record(Vec3(0, y, x), Vec3(1, 0, 0), R, E));           // the wall
         else if (i % 6 == 4) cache.records.push_back(record(Vec3(x, y, 0.05f), Vec3(0, 0, 1), R, E));  // above
         else if (i % 6 == 3)
@@ -131,7 +179,7 @@ TEST_CASE(
     const Vec3 up(0, 0, 1);
     int covered = 0;
     for (int q = 0; q < 300; ++q) {
-        const Vec3 x = q < 200 ? Vec3(rng.uniform(), rng.uniform(), 0.0f) : Vec3(0.0f, rng.uniform(), rng.uniform());
+        const Vec3 x = q < 200 ? Vec3{rng.uniform(), rng.uniform(), 0.0f} : Vec3{0.0f, rng.uniform(), rng.uniform()};
         const Vec3 n = q < 200 ? up : Vec3(1, 0, 0);
         const Interpolated want = oracle(cache, x, n);
         Color got(-7.0f);
@@ -156,6 +204,27 @@ TEST_CASE(
                                                        << hint);
     }
     CHECK(covered > 100);  // the test's own layout: most floor points are covered
+    // A case worked by hand, independent of the test's own sum above: a = 0.5 (records used where
+    // w > 2), the point x = (0.25, 0, 0) with normal +y. A at the origin and B at (0.5, 0, 0), both
+    // R = 1 and normal +y: w = 1 / 0.25 = 4 each; C at (2, 0, 0): w = 1 / 1.75 < 2, unused; D at
+    // (0.25, 0.5, 0), R = 2, normal +y, 0.5 above the floor: x is behind it ((x - x_i) . n = -0.5 <
+    // -0.01 * 2), unused although w = 1 / 0.25 = 4; E with normal +z at x itself: w = 1 / sqrt(1 -
+    // 0) = 1 < 2, unused. So E(x) = (4 * 1 + 4 * 3) / 8 = 2 in every channel.
+    {
+        IrradianceCache hand;
+        hand.a = 0.5f;
+        hand.records = {record(Vec3(0, 0, 0), Vec3(0, 1, 0), 1.0f, Color(1.0f)),
+                        record(Vec3(0.5f, 0, 0), Vec3(0, 1, 0), 1.0f, Color(3.0f)),
+                        record(Vec3(2, 0, 0), Vec3(0, 1, 0), 1.0f, Color(100.0f)),
+                        record(Vec3(0.25f, 0.5f, 0), Vec3(0, 1, 0), 2.0f, Color(200.0f)),
+                        record(Vec3(0.25f, 0, 0), Vec3(0, 0, 1), 1.0f, Color(300.0f))};
+        Color got(-7.0f);
+        const bool found = ps::interpolateIrradiance(hand, Vec3(0.25f, 0, 0), Vec3(0, 1, 0), got);
+        CHECK_MESSAGE((found && close(got, Color(2.0f))),
+                      "five records worked by hand (a = 0.5; two of weight 4 with E = 1 and 3, one too far, one "
+                      "the point is behind, one with a perpendicular normal): expected E = 2, got "
+                          << (found ? str(got) : std::string("nothing found")));
+    }
     // At a record's own point and normal its weight is infinite: its own value, not a blend.
     for (size_t i = 0; i < cache.records.size(); i += 6) {
         const IrradianceRecord& r = cache.records[i];
@@ -195,11 +264,15 @@ TEST_CASE(
     // Five points the camera sees (the floor, the back wall, the two side walls, the tall block);
     // at each, kRecords records against kGathers gathers of the test's own (side x side
     // cosine-distributed directions, one per stratum, each pi L from the same global map), both
-    // means compared by Welch's t-test: E (r + g + b) and the mean of 1 / d (= 1 / R).
+    // means compared by Welch's t-test: E (r + g + b) and the mean of 1 / d (= 1 / R). The test's
+    // gathers estimate the radiance at each hit with its own k-nearest box sum (OwnEstimate), not
+    // with the lesson's radianceEstimate.
     const Vec2 pixels[] = {{16.5f, 30.5f}, {16.5f, 8.5f}, {1.5f, 16.5f}, {30.5f, 16.5f}, {11.5f, 14.5f}};
     constexpr int kPoints = 5, kRecords = 32, kGathers = 32, kSide = 16;
     const double level = alpha() / (2 * kPoints);  // E and R at each point (Bonferroni)
     ps::Rng rng(ps::testseed::seed(853));
+    const OwnEstimate ownEstimate(global, opt.globalEstimate.maxRadius);
+    REQUIRE(opt.globalEstimate.filter == ps::Filter::Box);
     int flipped = 0;
     for (int k = 0; k < kPoints; ++k) {
         Vec3 wo;
@@ -212,12 +285,12 @@ TEST_CASE(
             double sumL = 0.0, sumInv = 0.0;
             for (int j = 0; j < kSide; ++j)
                 for (int i = 0; i < kSide; ++i) {
-                    const Vec2 u((i + rng.uniform()) / kSide, (j + rng.uniform()) / kSide);
+                    const Vec2 u{(i + rng.uniform()) / kSide, (j + rng.uniform()) / kSide};
                     ps::Ray ray = scene.spawnRay(sp, frame.toWorld(ps::sampleCosineHemisphere(u)));
                     ps::SurfacePoint y;
                     if (!scene.intersect(ray, y)) continue;
                     const ps::Material& m = scene.materials[size_t(y.material)];
-                    sumL += ps::testrender::sum(ps::radianceEstimate(global, y, m, -ray.d, opt.globalEstimate));
+                    sumL += ps::testrender::sum(ownEstimate(y, m, -ray.d, opt.globalEstimate.k));
                     sumInv += 1.0 / ray.tMax;
                 }
             E.add(ps::kPi * sumL / (kSide * kSide));

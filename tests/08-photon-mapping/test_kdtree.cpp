@@ -72,7 +72,7 @@ TEST_CASE("kd-tree: every photon once, in heap order, split on the axis of large
         for (size_t i = 1; i <= map.size() && wrong.empty(); ++i) {
             if (2 * i > map.size()) continue;
             const Photon& node = map.nodes[i];
-            const int a = node.axis;
+            const int a = map.tree.axis[i];
             std::vector<size_t> all, left, right;
             subtree(map, i, all);
             subtree(map, 2 * i, left);

@@ -1,8 +1,9 @@
 // Lesson 8, graded: the `pm` integrator (Eq. 8.11) against the path-traced Cornell box (lesson
 // 3's stored reference, 32 x 32, maxdepth 8). Photon mapping is biased (README, "Bias"), so the
-// test states a bound: the image's mean, and the mean of each quadrant, must be within 3 % (6 %
-// for a quadrant) of the reference, plus the noise at level alpha() (lesson08.h). The bias
-// measured with the reference solution is +0.9 % on the image and -0.1 .. +2.3 % on the quadrants:
+// test states a bound: the image's mean, and the mean of each quadrant, must be within 1.5 % (3 %
+// for a quadrant; pm-ic 2 % and 4 %) of the reference, plus the noise at level alpha() (lesson08.h).
+// The bias measured with the reference solution is -0.1 .. +0.9 % on the image and -1 .. +2.3 % on
+// the quadrants:
 // the k-nearest box estimate's k / (k - 1) = +2 % on the indirect light (about a third of the
 // image), the disc assumption at the box's edges and corners, and photon paths that go on for up to
 // maxdepth bounces after the gather point (the reference stops at 8; in this box the light of
@@ -100,13 +101,18 @@ void checkCornell(const std::string& algo, int iterations, uint64_t seed, double
 
 TEST_CASE(
     "pm: the photon-mapped Cornell box agrees with the path-traced reference within the stated bias bound (Eq. 8.11) [3 pts]") {
-    checkCornell("pm", 16, ps::testseed::seed(831), 0.03, 0.06);
+    // Bounds (issue 28: at the measured bias, not above it): the image 1.5 %, a quadrant 3 %, plus
+    // the noise at alpha() (2.2-2.9 % on the image here). Measured with the reference solution,
+    // PATHSPACE_TEST_SEED 0-5: the image -0.1 ... +0.7 %, the quadrants -1.0 ... +2.2 %.
+    checkCornell("pm", 16, ps::testseed::seed(831), 0.015, 0.03);
 }
 
 TEST_CASE(
     "pm-ic: with the irradiance cache the Cornell box agrees with the path-traced reference within the stated bias "
     "bound (Eq. 8.11, 8.17) [2 pts]") {
-    checkCornell("pm-ic", 8, ps::testseed::seed(834), 0.03, 0.06);
+    // The cache's interpolation adds its own bias: bounds 2 % and 4 % (measured, seeds 0-5: the
+    // image +0.7 ... +1.1 %, the quadrants -1.6 ... +3.0 %), plus the noise at alpha().
+    checkCornell("pm-ic", 8, ps::testseed::seed(834), 0.02, 0.04);
 }
 
 TEST_CASE("pm: the image and the photon maps do not depend on the number of threads [1 pt]") {
@@ -143,8 +149,10 @@ TEST_CASE(
     // The glass sphere focuses the lamp's light on the floor (paths L S S D E): only the caustic
     // map carries it (final gathering sees the glass and stops). The caustic's pixels are taken
     // from the reference alone: pixels that see only the floor and are more than 1.5 times as
-    // bright as the floor's median. Their mean must be within 25 % of the reference's (the
-    // k-nearest estimate blurs a caustic a few pixels wide), plus the noise at level alpha().
+    // bright as the floor's median. Their mean must be within 10 % of the reference's (the
+    // k-nearest estimate blurs a caustic a few pixels wide: measured 0.97-0.99 of the reference
+    // over PATHSPACE_TEST_SEED 0-5; the bound was 25 % before issue 28), plus the noise at level
+    // alpha() (about 15 % here: 4 pixels, 256 iterations).
     const ps::Scene scene = loadSceneAt("scenes/cornell-spheres.scene", 32, 32);
     const ps::Image ref = ps::readPFM(sourcePath("tests/05-light-tracing/data/cornell-spheres-32.pfm"));
     const ps::Image refVar = ps::readPFM(sourcePath("tests/05-light-tracing/data/cornell-spheres-32-variance.pfm"));
@@ -188,10 +196,10 @@ TEST_CASE(
     MESSAGE("pm / reference in the caustic (" << caustic.size() << " pixels, floor median " << num(median)
                                               << "): " << num(ratio) << " (noise " << num(noise / r)
                                               << ", reference se " << num(refSe / r) << ")");
-    CHECK_MESSAGE(std::abs(mean.mean - r) <= 0.25 * r + noise,
+    CHECK_MESSAGE(std::abs(mean.mean - r) <= 0.10 * r + noise,
                   "the caustic under the glass sphere ("
                       << caustic.size() << " floor pixels): expected the mean " << num(r)
-                      << " of the path-traced reference within 25 % + noise " << num(noise) << ", got "
+                      << " of the path-traced reference within 10 % + noise " << num(noise) << ", got "
                       << num(mean.mean) << " (ratio " << num(ratio) << ")"
                       << (ratio < 0.75 ? " (too dark: is the caustic map looked up "
                                          "at the diffuse point after a specular "

@@ -122,7 +122,8 @@ TEST_CASE(
 TEST_CASE("MMLT: the image's mean luminance is the sum of the b_k (Eq. 9.16) [1 pt]") {
     // Each step of a length-k chain splats luminance b_k pixels / M_k in all (weights 1 - a and
     // a, each colour divided by its own luminance): the image's mean luminance is the sum of the
-    // b_k, up to float rounding (1e-4).
+    // b_k, up to float rounding (1e-4). This identity holds for any b_k; each b_k itself is judged
+    // against an oracle of its own (lesson 7's per-length references) by the b_k test above.
     const ps::Scene scene = loadSceneAt("scenes/cornell-box.scene", 16, 16);
     ps::MMLTSettings s;
     s.chains = 12;

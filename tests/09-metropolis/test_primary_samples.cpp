@@ -182,7 +182,6 @@ TEST_CASE(
     chain.samples.accept();
     ps::Rng rng = ps::taskRng(ps::testseed::seed(962), 0, 0);
     int accepted = 0, rejected = 0, bad = 0;
-    double weightSum = 0.0;
     for (int k = 0; k < 200 && bad == 0 && chain.current.I > 0.0f; ++k) {
         ps::Rng rngCopy = rng;
         ps::Chain copy = chain;  // the oracle's chain: same samples, same generator
@@ -203,7 +202,6 @@ TEST_CASE(
         });
         double lum = 0.0;
         for (const Splat& s : got) lum += ps::luminance(s.c);
-        weightSum += lum;
         const auto near = [](const ps::Color& p, const ps::Color& q) {
             return std::abs(p.r - q.r) + std::abs(p.g - q.g) + std::abs(p.b - q.b) <= 1e-5f * (1.0f + q.r + q.g + q.b);
         };

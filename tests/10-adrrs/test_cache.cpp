@@ -72,7 +72,8 @@ TEST_CASE(
     // x0 .. x4: a path of four hits (x2 a mirror: no entry) and the escape.
     std::vector<ps::PrePassVertex> path(5);
     const int entries[5] = {10, 20, -1, 30, -1};
-    const Color beta[5] = {Color(1.0f), Color(0.5f, 0.25f, 0.0f), Color(0.25f), Color(0.125f), Color(0.1f)};
+    // Black channels of beta: blue at x1, red and green at x3 (each channel's guard once).
+    const Color beta[5] = {Color(1.0f), Color(0.5f, 0.25f, 0.0f), Color(0.25f), Color(0.0f, 0.0f, 0.125f), Color(0.1f)};
     const Color added[5] = {Color(0.5f), Color(0.1f, 0.2f, 0.3f), Color(0.0f), Color(1.0f), Color(0.2f)};
     for (int k = 0; k < 5; ++k) path[size_t(k)] = {entries[k], beta[k], added[k]};
     std::vector<ps::CacheSample> out;
@@ -86,7 +87,7 @@ TEST_CASE(
     const Want want[] = {{7, Color(9.0f), "the sample that was in the list before"},
                          {10, Color(1.8f, 1.9f, 2.0f), "x0: (added_0 + ... + added_4) / beta_0"},
                          {20, Color(2.6f, 5.6f, 0.0f), "x1: (added_1 + ... + added_4) / beta_1, 0 where beta_1 is 0"},
-                         {30, Color(9.6f), "x3: (added_3 + added_4) / beta_3"}};
+                         {30, Color(0.0f, 0.0f, 9.6f), "x3: (added_3 + added_4) / beta_3, 0 where beta_3 is 0"}};
     REQUIRE_MESSAGE(out.size() == 4,
                     "continuationSamples of a path with 3 vertices that have an entry (x0, x1, x3): "
                     "expected 3 samples appended to a list of 1, got a list of "

@@ -14,7 +14,17 @@ struct Visit {
     int bounces;
     bool hit;
     Color beta;
+    // The bookkeeping of lesson 3's vertex: where the path is, where it came from and with which
+    // solid-angle pdf, whether that was a specular (delta) sample.
+    Vec3 p, n, wo, pPrev;
+    float pdfPrev;
+    bool specular;
+    int material;
 };
+
+Visit visitOf(const ps::WalkVertex& v) {
+    return {v.bounces, v.hit, v.beta, v.sp.p, v.sp.n, v.wo, v.pPrev, v.pdfPrev, v.specular, v.sp.material};
+}
 
 struct Walked {
     std::vector<Visit> visits;
@@ -31,7 +41,7 @@ Walked walk(const ps::Scene& scene, int maxDepth, float q, float u, const std::f
     ps::splittingWalk(
         scene, ray, rng, maxDepth, [&](const ps::WalkVertex&) { return q; },
         [&](const ps::WalkVertex& v) {
-            w.visits.push_back({v.bounces, v.hit, v.beta});
+            w.visits.push_back(visitOf(v));
             return goOn ? goOn(v.bounces) : true;
         });
     w.numbers = replay.read;
@@ -49,6 +59,49 @@ void fullTree(int bounces, int maxDepth, int n, std::string& s) {
     s += std::to_string(bounces) + " ";
     if (bounces < maxDepth)
         for (int i = 0; i < n; ++i) fullTree(bounces + 1, maxDepth, n, s);
+}
+
+// Every vertex's bookkeeping, step by step, against the vertex it came from (the last one visited
+// with one bounce less: the tree is walked depth first): the camera ray's vertex has pdfPrev 0 and
+// is specular (nothing to weigh against: lesson 3's convention), wo the reversed camera ray; every
+// later vertex has pPrev = its parent's point, wo pointing back there, and after a diffuse parent
+// pdfPrev = the framework's pdfBSDF of that direction there (cos / pi) and not specular; after a
+// mirror, the mirror's own sample's pdf (the lobe's probability) and specular.
+void checkBookkeeping(const ps::Scene& scene, const Walked& w, float q) {
+    std::vector<const Visit*> parents;
+    for (size_t i = 0; i < w.visits.size(); ++i) {
+        const Visit& v = w.visits[i];
+        std::string bad;
+        if (v.bounces == 0) {
+            const Vec3 camera = -glm::normalize(Vec3(0.1f, -0.2f, 1.0f));
+            if (v.pdfPrev != 0.0f) bad = "pdfPrev " + num(v.pdfPrev) + " at the camera ray's vertex (expected 0)";
+            else if (!v.specular) bad = "the camera ray's vertex not marked specular (lesson 3: specular at bounces 0)";
+            else if (glm::length(v.wo - camera) > 1e-5f) bad = "wo " + str(v.wo) + ", expected " + str(camera);
+        } else {
+            REQUIRE(size_t(v.bounces) <= parents.size());
+            const Visit& parent = *parents[size_t(v.bounces) - 1];
+            const Vec3 back = glm::normalize(parent.p - v.p);
+            const ps::Material& m = scene.materials[size_t(parent.material)];
+            ps::BSDFSample s;
+            const bool delta =
+                m.isDelta() && ps::sampleBSDF(m, parent.n, parent.wo, ps::Vec2(0.5f), 0.5f, ps::Transport::Radiance, s);
+            const float pdf = delta ? s.pdf : ps::pdfBSDF(m, parent.n, parent.wo, -back);
+            if (glm::length(v.pPrev - parent.p) > 1e-5f)
+                bad = "pPrev " + str(v.pPrev) + ", expected the previous vertex " + str(parent.p);
+            else if (std::abs(v.pdfPrev - pdf) > 1e-4f * pdf)
+                bad = "pdfPrev " + num(v.pdfPrev) + ", expected the BSDF sample's solid-angle pdf " + num(pdf) +
+                      " at the previous vertex";
+            else if (v.specular != delta)
+                bad = delta ? "not marked specular after a mirror" : "marked specular after a diffuse bounce";
+            else if (glm::length(v.wo - back) > 1e-4f)
+                bad = "wo " + str(v.wo) + ", expected the direction back to the previous vertex " + str(back);
+        }
+        CHECK_MESSAGE(bad.empty(), "splittingWalk, rule q = " << q << ", vertex " << i << " (bounces " << v.bounces
+                                                              << ", depth-first order): " << bad);
+        if (!bad.empty()) return;
+        parents.resize(size_t(v.bounces));
+        parents.push_back(&v);
+    }
 }
 
 void checkTree(float q, float u, int n, const char* what) {
@@ -77,6 +130,7 @@ void checkTree(float q, float u, int n, const char* what) {
                                                         "(0.5 / q)^k (each continuation carries beta / q); "
                                                      << firstBad);
     CHECK_MESSAGE(hitOk, "splittingWalk in a closed box: every vertex must be a hit");
+    checkBookkeeping(scene, w, q);
     // Numbers: one per decision where q is not whole (decisions at the vertices with bounces <
     // maxDepth), three per BSDF sample (one per continuation).
     size_t decisions = 0, samples = 0;
@@ -99,6 +153,58 @@ TEST_CASE("splitting walk: the tree of paths, depth first, each continuation wit
     checkTree(0.5f, 0.25f, 1, "q < 1, u below q: the path survives");
     checkTree(0.5f, 0.75f, 0, "q < 1, u above q: roulette ends the path at the camera ray's vertex");
     checkTree(3.0f, 0.9f, 3, "a whole q: exactly 3 continuations, no number drawn");
+
+    // A mirror where the camera looks (the wall z = 1): specular vertices in the tree, each
+    // vertex's bookkeeping replayed step by step.
+    checkBookkeeping(closedBox(0.5f, 3, false, 4, true), walk(closedBox(0.5f, 3, false, 4, true), 3, 1.5f, 0.25f),
+                     1.5f);
+
+    // A continuation whose BSDF sample fails (a Phong lobe below the surface) ends alone: the
+    // next continuation of the same vertex still samples and goes on. A Phong floor (exponent 1)
+    // seen at a grazing angle, q = 2 (whole: no number drawn for n), maxDepth 1; the numbers a, a, a
+    // (a failing sample, whatever order the three are read in) then b, b, b (one that succeeds and
+    // leaves the scene), both found here with the framework's sampleBSDF.
+    {
+        const ps::Scene floor = ps::parseScene(
+            "camera eye 0 1 0  target 1 0.9 0  fov 40  resolution 4 4\n"
+            "material glossy phong albedo 0.8 0.8 0.8 exponent 1\n"
+            "quad -9 0 -9  -9 0 9  9 0 9  9 0 -9  material glossy\n",
+            "phong-floor.scene");
+        const ps::Ray ray(Vec3(0, 0.1f, 0), glm::normalize(Vec3(1, -0.05f, 0)));
+        const Vec3 n(0, 1, 0), wo = -ray.d;
+        float a = -1.0f, b = -1.0f;
+        for (int i = 1; i < 1000 && (a < 0.0f || b < 0.0f); ++i) {
+            const float u = float(i) / 1000.0f;
+            ps::BSDFSample s;
+            const bool ok = ps::sampleBSDF(floor.materials[0], n, wo, ps::Vec2(u, u), u, ps::Transport::Radiance, s);
+            if (!ok && a < 0.0f) a = u;
+            if (ok && b < 0.0f && s.wi.y > 0.0f) b = u;
+        }
+        REQUIRE_MESSAGE((a > 0.0f && b > 0.0f), "the test's own layout: a failing and a succeeding Phong sample");
+        Replay replay;
+        replay.values = {a, a, a, b, b, b};
+        replay.fill = b;
+        ps::Rng rng;
+        rng.replayFrom(&replay);
+        std::vector<int> bounces;
+        ps::splittingWalk(
+            floor, ray, rng, 1, [](const ps::WalkVertex&) { return 2.0f; },
+            [&](const ps::WalkVertex& v) {
+                bounces.push_back(v.bounces);
+                return true;
+            });
+        std::string got;
+        for (int k : bounces) got += std::to_string(k) + " ";
+        CHECK_MESSAGE(got == "0 1 ",
+                      "splittingWalk, q = 2 at a Phong floor whose first continuation's BSDF sample "
+                      "fails: expected the vertices 0 1 (that continuation ends, the second goes "
+                      "on), got "
+                          << got);
+        CHECK_MESSAGE(replay.read == 6,
+                      "splittingWalk, q = 2, the first sample failing: expected 6 uniform numbers "
+                      "read (3 per BSDF sample, none for a whole q), got "
+                          << replay.read);
+    }
 
     // The visitor ends a branch.
     const ps::Scene scene = closedBox(0.5f, 8, false);
@@ -157,11 +263,11 @@ TEST_CASE(
         ps::splittingWalk(
             scene, ray, a, 12, [](const ps::WalkVertex&) { return ps::kNoDecision; },
             [&](const ps::WalkVertex& v) {
-                mine.push_back({v.bounces, v.hit, v.beta});
+                mine.push_back(visitOf(v));
                 return true;
             });
         ps::cameraWalk(scene, ray, b, {12}, [&](const ps::WalkVertex& v) {
-            pt.push_back({v.bounces, v.hit, v.beta});
+            pt.push_back(visitOf(v));
             return true;
         });
         bool same = mine.size() == pt.size() && a.nextU32() == b.nextU32();

@@ -37,9 +37,9 @@ using DVec3 = glm::dvec3;
 //   closed diffuse box                                                                     -> 2
 //   drt against the stored reference of pt filtered to L D? (G|S)* E (the Cornell box
 //   through the lens, where pt carries more paths)                                         -> 1
-// 7 of lesson 11's m = 15 (lesson11.h); each runs at the Sidak level alpha' = 1 - (1 - a_L)^(1/15)
-// ~ 5.6e-5, a_L ~ 8.37e-4 the lesson's share of the whole graded suite's 1 % (tests/support/alpha.h).
-using lesson11::alpha;                  // the lesson's level: all 15 of its statistical tests
+//   pt through the lens against the pinhole on a plane in focus (test_reach.cpp)          -> 1
+// 8 of lesson 11's m = 16 (lesson11.h), each at lesson11::alpha().
+using lesson11::alpha;                  // the lesson's level: all 16 of its statistical tests
 using lesson11::kStatisticalTestsLens;  // counted in lesson11.h
 
 // A thin-lens camera as the tests build it, and its geometry in double from the same numbers.
@@ -50,7 +50,7 @@ struct LensCase {
     int w, h;
     float radius, focus;
 
-    ps::Camera camera() const { return ps::Camera(eye, target, up, fov, w, h, radius, focus); }
+    ps::ThinLens camera() const { return ps::ThinLens(ps::Camera(eye, target, up, fov, w, h), radius, focus); }
     std::string describe() const {
         return std::string(name) + " (eye " + str(eye) + ", target " + str(target) + ", fov " + num(fov) + ", " +
                std::to_string(w) + " x " + std::to_string(h) + ", lens radius " + num(radius) + ", focus " +
@@ -99,6 +99,6 @@ struct Replay : ps::UniformSource {
 };
 
 // The lens point lensPoint(u) in double.
-inline DVec3 lensPointD(const ps::Camera& cam, const Vec2& u) { return DVec3(cam.lensPoint(u)); }
+inline DVec3 lensPointD(const ps::ThinLens& cam, const Vec2& u) { return DVec3(cam.lensPoint(u)); }
 
 }  // namespace lens11

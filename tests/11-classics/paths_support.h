@@ -28,8 +28,8 @@ using ps::testfiles::sourcePath;
 // point lights' sums, the glass's directions and weights, rays traced by hand):
 //   z-test: whitted on scenes/cornell-whitted.scene against the stored pt reference filtered to
 //           L[DG]S*E|LS*E (test_whitted_pt.cpp)                                              -> 1
-// 1 of lesson 11's m = 15 (lesson11.h), each at alpha' = 1 - (1 - a_L)^(1/15) ~ 5.6e-5.
-using lesson11::alpha;                   // the lesson's level: all 15 of its statistical tests
+// 1 of lesson 11's m = 16 (lesson11.h), at lesson11::alpha().
+using lesson11::alpha;                   // the lesson's level: all 16 of its statistical tests
 using lesson11::kStatisticalTestsPaths;  // counted in lesson11.h
 
 // One material of every kind, an area light whose surface is the loader's black "(emitter)", a

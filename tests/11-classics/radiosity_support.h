@@ -34,10 +34,8 @@ using ps::testfiles::sourcePath;
 //            common edge, and both directions of perpendicular rectangles of different
 //            areas (reciprocity)                                                          -> 4
 //   t-tests of sum_j F_ij = 1 in a closed box, for three elements                         -> 3
-// 7 of lesson 11's m = 15 (lesson11.h); each runs at the Sidak level alpha' = 1 - (1 - a_L)^(1/15)
-// ~ 5.6e-5, where a_L ~ 8.37e-4 is this lesson's share of the whole graded suite's 1 %
-// (tests/support/alpha.h).
-using lesson11::alpha;                       // the lesson's level: all 15 of its statistical tests
+// 7 of lesson 11's m = 16 (lesson11.h), each at lesson11::alpha().
+using lesson11::alpha;                       // the lesson's level: all 16 of its statistical tests
 using lesson11::kStatisticalTestsRadiosity;  // counted in lesson11.h
 
 // ---------------------------------------------------------------------------------------------

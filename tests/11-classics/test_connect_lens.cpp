@@ -85,7 +85,8 @@ void checkHit(const char* what, const ps::LensConnection& c, const DVec3& aim, c
     const DVec3 z(c.lens.sp.p), w = glm::normalize(from - aim);
     CHECK_MESSAGE(glm::length(z - aim) < 1e-4, what << ": expected the lens point " << str(Vec3(aim)) << ", got "
                                                     << str(c.lens.sp.p) << " (camera.hitLens: where the ray meets it)");
-    CHECK_MESSAGE(c.lens.lens, what << ": expected c.lens to be a lens vertex (cameraVertex(scene, z): flag lens)");
+    CHECK_MESSAGE(c.lens.onCamera,
+                  what << ": expected c.lens to be a lens vertex (cameraVertex(scene, z): flag onCamera)");
     const Vec2 r = rasterOf(aim, w);
     CHECK_MESSAGE(glm::length(c.raster - r) < 0.01f, what << ": expected raster " << str(r) << ", got " << str(c.raster)
                                                           << " (camera.lensRasterOfDirection(z, towards the light "

@@ -148,7 +148,7 @@ TEST_CASE(
     // variance at least the reference's per sample (judgedVariance).
     const ps::Scene scene = loadSceneAt("scenes/cornell-lens.scene", 24, 24);
     REQUIRE(scene.settings.maxDepth == 8);
-    REQUIRE_MESSAGE(scene.camera.lensRadius() == 40.0f,
+    REQUIRE_MESSAGE((ps::thinLens(scene.camera) && ps::thinLens(scene.camera)->radius() == 40.0f),
                     "scenes/cornell-lens.scene's lens is no longer 40 mm: "
                     "the stored reference is out of date");
     const ps::Image ref = ps::readPFM(sourcePath("tests/11-classics/data/cornell-lens-24-drt.pfm"));

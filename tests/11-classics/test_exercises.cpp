@@ -38,7 +38,8 @@ double diskFormFactorByQuadrature(double R, double h) {
 TEST_CASE("exercise: the form factor from a point to a parallel coaxial disk (Eq. 11.E1) [1 pt]") {
     const std::pair<double, double> cases[] = {{1.0, 1.0},  {0.5, 2.0},  {2.0, 0.5}, {1.0, 0.05},
                                                {0.01, 1.0}, {30.0, 1.0}, {3.0, 4.0}};
-    for (const auto& [R, h] : cases) {
+    for (const std::pair<double, double>& c : cases) {
+        const double R = c.first, h = c.second;  // named, not bound: clang < 16 captures no binding in a lambda
         const double expected = diskFormFactorByQuadrature(R, h), got = ps::diskFormFactor(R, h);
         CHECK_MESSAGE(std::abs(got - expected) <= 1e-6 * expected,
                       "diskFormFactor(R " << R << ", h " << h << "): expected " << expected

@@ -49,7 +49,7 @@ TEST_CASE("vertexType: x_0 is L whatever the light and its surface's material, t
     ps::PathVertex lensPoint;
     lensPoint.sp.p = eye.sp.p + Vec3(0.03f, -0.02f, 0);
     lensPoint.sp.n = eye.sp.n;
-    lensPoint.lens = true;
+    lensPoint.onCamera = true;
     const struct {
         const char* what;
         ps::PathVertex light;

@@ -177,7 +177,7 @@ TEST_CASE(
         ps::Subpath camera, light;
         for (int i = 0; i < kSamples; ++i) {
             ps::Rng rng(ps::testseed::seed(1106), uint64_t(i));
-            const Vec2 raster(rng.uniform() * float(w), rng.uniform() * float(h));
+            const Vec2 raster{rng.uniform() * float(w), rng.uniform() * float(h)};
             ps::cameraSubpath(scene, rng, raster, maxDepth, heur, camera);
             ps::lightSubpath(scene, rng, maxDepth, heur, light);
             // (s, t) with the weights of every form, then t = 0.
@@ -186,7 +186,9 @@ TEST_CASE(
                 for (int s = 0; s <= std::max(int(light.size()), 1); ++s) {
                     if (s + t < 2 || (t == 1 && s == 0) || s + t - 2 > maxDepth) continue;
                     if (s > int(light.size()) && !(s == 1 && t >= 2)) continue;
-                    const ps::Connection c = ps::connect(scene, light, camera, s, t, rng.uniform(), rng.uniform2());
+                    const float uLight = rng.uniform();
+                    const Vec2 uPoint = rng.uniform2();
+                    const ps::Connection c = ps::connect(scene, light, camera, s, t, uLight, uPoint);
                     if (!c.valid) continue;
                     const ps::PathVertex* y = s == 1 ? &c.sampledLight : light.data();
                     paths.emplace_back(joinedPath(y, s, camera, t), s,
@@ -210,7 +212,7 @@ TEST_CASE(
                 for (const double q : p) sum += std::pow(q, b);
                 const double want = std::pow(p[size_t(s)], b) / sum;
                 ++checked;
-                lensPaths += x.back().lens;
+                lensPaths += x.back().onCamera;
                 withT0 += s == n;
                 bool spec = false;
                 for (const ps::PathVertex& v : x) spec = spec || v.specular;

@@ -93,8 +93,9 @@ TEST_CASE(
     // 5.4 %, 2.5 %, 1.25 % with 16 x 16), plus the noise of the ray-cast form factors. The error is the mean over the 15
     // reflecting quads and 3 channels of |radiosity / pt - 1|. Measured over seeds 2000-2049:
     // with 4 x 4 elements 5.2 % (standard deviation 0.55 %, largest 6.5 %), with 1 x 1 21.7 %
-    // (smallest 17.9 %), their ratio at most 0.33. Bounds: 8.5 % (mean + 6 standard deviations)
-    // and a ratio of 1/2. The lamp's own patch is exactly its Le (it reflects nothing).
+    // (smallest 17.9 %), their ratio at most 0.33. Bounds: 7.3 % (mean + 3.8 standard deviations:
+    // the normal tail beyond it, 7e-5, is the lesson's alpha'; it was 8.5 %, 6 standard deviations,
+    // before issue 28) and a ratio of 1/2. The lamp's own patch is exactly its Le (it reflects nothing).
     const ps::Scene cornell = loadSceneAt("scenes/cornell-box.scene", 16, 16);
     const std::vector<ps::PatchEstimate> pt = readPatches(sourcePath("tests/11-classics/data/cornell-patches.txt"));
     REQUIRE(pt.size() == cornell.quads.size());
@@ -130,8 +131,8 @@ TEST_CASE(
         }
         error[k] = sum / count;
     }
-    CHECK_MESSAGE(error[1] <= 0.085,
-                  "the Cornell box, 4 x 4 elements a quad: expected the patch averages within 8.5 % "
+    CHECK_MESSAGE(error[1] <= 0.073,
+                  "the Cornell box, 4 x 4 elements a quad: expected the patch averages within 7.3 % "
                   "of the path tracer's on average (measured 5.2 % +- 0.55 %), got "
                       << num(100.0 * error[1]) << " %; the worst: " << worst[1]);
     CHECK_MESSAGE(error[1] <= 0.5 * error[0],

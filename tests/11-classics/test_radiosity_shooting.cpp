@@ -195,4 +195,11 @@ TEST_CASE("radiosity: the ambient term, by hand and exact in a furnace box befor
         "a furnace box (albedo 0.5, E = pi) before the first shot: expected B + rho ambient = E / (1 - rho) = "
         "2 pi exactly, got "
             << colour(shown) << " (ambient " << colour(amb) << ")");
+    // Albedo 1 everywhere: R = 1 / (1 - rho_avg) has no finite value; the ambient term must not
+    // become infinite or NaN (what it shows there is the implementation's choice).
+    const ps::Scene white = closedBox(1, 2, 3, 1.0f, 1.0f);
+    const ps::ElementMesh whiteMesh(white, 1, 1);
+    const Color ambWhite = ps::ambientRadiosity(whiteMesh, ps::startRadiosity(whiteMesh));
+    CHECK_MESSAGE((std::isfinite(ambWhite.r) && std::isfinite(ambWhite.g) && std::isfinite(ambWhite.b)),
+                  "a box of albedo 1 (rho_avg = 1): expected a finite ambient term, got " << colour(ambWhite));
 }

@@ -61,7 +61,7 @@ std::string hint(double I, double lensArea) {
 TEST_CASE("thin lens: lensPoint fills the lens disk evenly, and pdfLens is its density (Eq. 11.10, 11.11) [2 pts]") {
     for (const LensCase& c : lensCases()) {
         CAPTURE(c.describe());
-        const ps::Camera cam = c.camera();
+        const ps::ThinLens cam = c.camera();
         constexpr int n = 64;
         const double R = c.radius;
         const double scale = std::max(1.0, double(ps::maxAbsComponent(c.eye)));
@@ -123,7 +123,7 @@ TEST_CASE(
     "does (Eq. 11.12) [2 pts]") {
     for (const LensCase& c : lensCases()) {
         CAPTURE(c.describe());
-        const ps::Camera cam = c.camera();
+        const ps::ThinLens cam = c.camera();
         const double F = c.focus, scale = std::max(double(F), double(ps::maxAbsComponent(c.eye)));
         int failures = 0;
         for (const Vec2& raster : {Vec2(0.5f, 0.5f), Vec2(c.w - 0.5f, c.h - 0.5f), Vec2(0.5f * c.w, 0.5f * c.h),
@@ -167,7 +167,7 @@ TEST_CASE("thin lens: as the lens radius goes to 0, lensRay gives the pinhole's 
         LensCase c = base;
         c.radius = 1e-5f * c.focus;
         CAPTURE(c.describe());
-        const ps::Camera cam = c.camera();
+        const ps::ThinLens cam = c.camera();
         for (const Vec2& raster : {Vec2(0.5f, 0.5f), Vec2(c.w - 0.5f, 0.5f), Vec2(0.5f * c.w, 0.5f * c.h)})
             for (const Vec2& u : {Vec2(0.1f, 0.9f), Vec2(0.5f, 0.5f), Vec2(0.97f, 0.03f)}) {
                 const ps::Ray lens = cam.lensRay(raster, cam.lensPoint(u));
@@ -187,7 +187,7 @@ TEST_CASE("thin lens: as the lens radius goes to 0, lensRay gives the pinhole's 
 TEST_CASE("thin lens: lensRasterOfDirection is where a ray from a lens point lands on the image (Eq. 11.13) [1 pt]") {
     for (const LensCase& c : lensCases()) {
         CAPTURE(c.describe());
-        const ps::Camera cam = c.camera();
+        const ps::ThinLens cam = c.camera();
         int failures = 0;
         for (const Vec2& raster : {Vec2(0.5f, 0.5f), Vec2(c.w - 0.5f, c.h - 0.5f), Vec2(0.3f * c.w, 0.6f * c.h)})
             for (const DVec3& z : probeLensPoints(c))
@@ -229,7 +229,7 @@ TEST_CASE(
     "(Eq. 11.14) [2 pts]") {
     for (const LensCase& c : lensCases()) {
         CAPTURE(c.describe());
-        const ps::Camera cam = c.camera();
+        const ps::ThinLens cam = c.camera();
         const double lensArea = kPi * double(c.radius) * c.radius, wh = double(c.w) * c.h;
         int failures = 0;
         // Corner, border and middle pixels: from a rim lens point a border pixel's directions lie
@@ -281,7 +281,7 @@ TEST_CASE(
     "matches their spread (Eq. 11.15) [2 pts]") {
     for (const LensCase& c : lensCases()) {
         CAPTURE(c.describe());
-        const ps::Camera cam = c.camera();
+        const ps::ThinLens cam = c.camera();
         int failures = 0;
         for (const DVec3& z : probeLensPoints(c)) {
             const double all = integrateOverRaster(c, z, 0, 0, c.w, c.h, 32, [&](const Vec3& w, double) {

@@ -113,11 +113,9 @@ TEST_CASE(
     CHECK(r.stats.bad() == 0);
 
     // The memory budget (--guide-budget): the same render with 20 kB at most.
-    ps::Scene capped = scene;
-    capped.settings.guideBudget = 20000;
-    ps::GuidedPathTracer small;
-    ps::render(capped, small, opt);
-    CHECK_MESSAGE(small.field().bytes() <= capped.settings.guideBudget,
+    ps::GuidedPathTracer small(false, 20000);
+    ps::render(scene, small, opt);
+    CHECK_MESSAGE(small.field().bytes() <= 20000,
                   "pt-guided with a memory budget of 20000 bytes (--guide-budget): expected the field within it, got "
                       << small.field().bytes() << " bytes (" << small.field().cells() << " cells)");
 }

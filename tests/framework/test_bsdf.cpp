@@ -151,8 +151,10 @@ TEST_CASE("bsdf: sampleBSDF's pdf equals pdfBSDF and its weight equals f |cos| /
         for (const Material& m : mats) {
             int bad = 0, valid = 0;
             for (int i = 0; i < S; ++i) {
+                const Vec2 u = rng.uniform2();
+                const float uLobe = rng.uniform();
                 BSDFSample s;
-                if (!sampleBSDF(m, kNormal, wo, rng.uniform2(), rng.uniform(), Transport::Radiance, s)) continue;
+                if (!sampleBSDF(m, kNormal, wo, u, uLobe, Transport::Radiance, s)) continue;
                 ++valid;
                 const float pdf = pdfBSDF(m, kNormal, wo, s.wi);
                 const Color f = evalBSDF(m, kNormal, wo, s.wi);
@@ -192,7 +194,10 @@ TEST_CASE("bsdf: evalBSDF is reciprocal and pdf is 0 exactly where f is 0") {
                 Vec3 wi;
                 BSDFSample s;
                 if (i % 2 && sampleBSDF(m, kNormal, wo, rng.uniform2(), 0.5f, Transport::Radiance, s)) wi = s.wi;
-                else wi = dirAround(ns, 2.0 * rng.uniform() - 1.0, 2.0 * M_PI * rng.uniform());
+                else {
+                    const double u1 = rng.uniform(), u2 = rng.uniform();
+                    wi = dirAround(ns, 2.0 * u1 - 1.0, 2.0 * M_PI * u2);
+                }
                 const float a = evalBSDF(m, kNormal, wo, wi).g, b = evalBSDF(m, kNormal, wi, wo).g;
                 const double cosAlpha = glm::dot(glm::dvec3(reflect(wo, ns)), glm::dvec3(wi));
                 // (+1e-38: values below FLT_MIN are denormal and keep fewer significant bits.)
@@ -266,7 +271,8 @@ TEST_CASE("bsdf: Phong with exponent 0 is Lambertian") {
         const Vec3 wo = outgoing(cosO), ns = sideNormal(kNormal, wo);
         int bad = 0;
         for (int i = 0; i < 2000; ++i) {
-            const Vec3 wi = dirAround(ns, 0.001 + 0.999 * rng.uniform(), 2.0 * M_PI * rng.uniform());
+            const double u1 = rng.uniform(), u2 = rng.uniform();
+            const Vec3 wi = dirAround(ns, 0.001 + 0.999 * u1, 2.0 * M_PI * u2);
             const float fp = evalBSDF(p, kNormal, wo, wi).g, fd = evalBSDF(d, kNormal, wo, wi).g;
             if (std::abs(fp - fd) > 1e-6f * fd && ++bad <= 3)
                 FAIL_CHECK("cos(theta_o) = " << cosO << ", cos(theta_i) = " << glm::dot(ns, wi)
@@ -325,8 +331,10 @@ TEST_CASE("bsdf: mirror is a delta lobe that reflects exactly") {
     Rng rng(80);
     for (float cosO : kCosO) {
         const Vec3 wo = outgoing(cosO);
+        const Vec2 u = rng.uniform2();
+        const float uLobe = rng.uniform();
         BSDFSample s;
-        REQUIRE(sampleBSDF(m, kNormal, wo, rng.uniform2(), rng.uniform(), Transport::Radiance, s));
+        REQUIRE(sampleBSDF(m, kNormal, wo, u, uLobe, Transport::Radiance, s));
         // wi = 2 (wo . n) n - wo: equal angles, same plane, other side of n.
         const Vec3 expect = 2.0f * glm::dot(wo, kNormal) * kNormal - wo;
         INFO("cos(theta_o) = " << cosO);
@@ -367,7 +375,8 @@ TEST_CASE("bsdf: dielectric Fresnel at normal incidence and against the textbook
             "ior " << ior << " from inside: expected " << r0 << ", got " << fresnelDielectric(1.0f, ior, 1.0f));
         for (int i = 0; i <= 100; ++i) {
             const float c = i / 100.0f;
-            for (auto [ni, nt] : {std::pair<float, float>{1.0f, ior}, {ior, 1.0f}}) {
+            for (const std::pair<float, float>& eta : {std::pair<float, float>{1.0f, ior}, {ior, 1.0f}}) {
+                const float ni = eta.first, nt = eta.second;  // named, not bound: clang < 16 captures no binding
                 const double ref = fresnelRef(c, ni, nt);
                 CHECK_MESSAGE(std::abs(fresnelDielectric(c, ni, nt) - ref) < 1e-5,
                               "cos " << c << ", eta " << ni << " -> " << nt << ": expected " << ref << ", got "

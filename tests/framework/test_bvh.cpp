@@ -21,7 +21,7 @@ Vec3 randomUnit(Rng& rng) {
     return Vec3(r * std::cos(phi), r * std::sin(phi), z);
 }
 Vec3 randomIn(Rng& rng, const Vec3& lo, const Vec3& hi) {
-    return lo + (hi - lo) * Vec3(rng.uniform(), rng.uniform(), rng.uniform());
+    return lo + (hi - lo) * Vec3{rng.uniform(), rng.uniform(), rng.uniform()};
 }
 
 // A scene of the given triangles and spheres, one diffuse material, no lights.
@@ -210,7 +210,7 @@ TEST_CASE("bvh: identical, overlapping and centroid-sharing triangles") {
     SUBCASE("500 copies of one triangle plus 500 overlapping ones") {
         std::vector<Triangle> tris(500, Triangle{Vec3(-1, -1, 0), Vec3(1, -1, 0), Vec3(0, 1, 0)});
         for (int i = 0; i < 500; ++i) {  // the same plane, shifted in it
-            const Vec3 o(0.1f * rng.uniform(), 0.1f * rng.uniform(), 0.0f);
+            const Vec3 o{0.1f * rng.uniform(), 0.1f * rng.uniform(), 0.0f};
             tris.push_back({Vec3(-1, -1, 0) + o, Vec3(1, -1, 0) + o, Vec3(0, 1, 0) + o});
         }
         const Scene s = makeScene(tris, {});
@@ -222,8 +222,10 @@ TEST_CASE("bvh: identical, overlapping and centroid-sharing triangles") {
         std::vector<Triangle> tris;
         const Vec3 c(1.5f, -2.0f, 0.25f);
         for (int i = 0; i < 3000; ++i) {
-            const Vec3 a = randomUnit(rng) * (0.1f + 3.0f * rng.uniform()),
-                       b = randomUnit(rng) * (0.1f + 3.0f * rng.uniform());
+            const Vec3 da = randomUnit(rng);
+            const Vec3 a = da * (0.1f + 3.0f * rng.uniform());
+            const Vec3 db = randomUnit(rng);
+            const Vec3 b = db * (0.1f + 3.0f * rng.uniform());
             tris.push_back({c + a, c + b, c - a - b});  // centroid exactly c (up to rounding)
         }
         const Scene s = makeScene(tris, {});
@@ -243,7 +245,7 @@ TEST_CASE("bvh: identical, overlapping and centroid-sharing triangles") {
         for (int k = 0; k < 2000; ++k) {  // rays along the row, from random starts, both ways
             const float x0 = std::pow(1.12f, 600.0f * rng.uniform()) - 1.0f;
             const Vec3 d = glm::normalize(
-                Vec3(k % 2 ? 1.0f : -1.0f, 0.001f * (rng.uniform() - 0.5f), 0.001f * (rng.uniform() - 0.5f)));
+                Vec3{k % 2 ? 1.0f : -1.0f, 0.001f * (rng.uniform() - 0.5f), 0.001f * (rng.uniform() - 0.5f)});
             rays.emplace_back(Vec3(x0, 0.01f * (rng.uniform() - 0.5f), 0.0f), d);
         }
         const int bad = compareAll(s, rays);
@@ -402,8 +404,10 @@ TEST_CASE("bvh: one triangle is a root with one leaf") {
 TEST_CASE("bvh: huge and tiny scales, and far from the origin") {
     Rng rng(606);
     const std::vector<Triangle> soup = randomSoup(1000, 0.6f, rng);
-    for (const auto& [scale, shift] : {std::pair{1e-12f, 0.0f}, std::pair{1e-4f, 0.0f}, std::pair{1e4f, 0.0f},
-                                       std::pair{1e12f, 0.0f}, std::pair{1.0f, 1e5f}}) {
+    for (const std::pair<float, float>& scaleShift :
+         {std::pair{1e-12f, 0.0f}, std::pair{1e-4f, 0.0f}, std::pair{1e4f, 0.0f}, std::pair{1e12f, 0.0f},
+          std::pair{1.0f, 1e5f}}) {
+        const float scale = scaleShift.first, shift = scaleShift.second;  // named, not bound (clang < 16, lambdas)
         std::vector<Triangle> tris = soup;
         for (Triangle& t : tris)
             for (Vec3* p : {&t.p0, &t.p1, &t.p2}) *p = *p * scale + Vec3(shift);

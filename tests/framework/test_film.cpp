@@ -68,7 +68,8 @@ TEST_CASE("film: PFM write/read round trip is bit-exact") {
                               std::numeric_limits<float>::quiet_NaN(),
                               0.1f,
                               12345.678f};
-    for (auto [w, h] : {std::pair<int, int>{7, 3}, {1, 1}, {3, 7}, {13, 1}}) {
+    for (const std::pair<int, int>& size : {std::pair<int, int>{7, 3}, {1, 1}, {3, 7}, {13, 1}}) {
+        const int w = size.first, h = size.second;  // named, not bound: clang < 16 captures no binding in a lambda
         Image img(w, h);
         Rng rng(uint64_t(w * 100 + h));
         int k = 0;
@@ -98,7 +99,8 @@ TEST_CASE("film: PFM write/read round trip is bit-exact") {
 TEST_CASE("film: EXR output holds the pixels exactly (32-bit float RGB, read back with tinyexr)") {
     // The renderer only writes EXR; tinyexr's own reader is the oracle here. Finite values only:
     // LoadEXR returns RGBA, top row first, like Image.
-    for (auto [w, h] : {std::pair<int, int>{7, 3}, {1, 1}, {3, 7}}) {
+    for (const std::pair<int, int>& size : {std::pair<int, int>{7, 3}, {1, 1}, {3, 7}}) {
+        const int w = size.first, h = size.second;  // named, not bound: clang < 16 captures no binding in a lambda
         Image img(w, h);
         Rng rng(uint64_t(w * 10 + h));
         for (Color& c : img.pixels)
@@ -203,7 +205,7 @@ TEST_CASE("film: .hdr round trip is within RGBE's error") {
         Rng rng{uint64_t(w)};
         for (Color& c : img.pixels) {
             const float scale = std::pow(10.0f, -3.0f + 6.0f * rng.uniform());
-            c = scale * Color(rng.uniform(), rng.uniform(), rng.uniform());
+            c = scale * Color{rng.uniform(), rng.uniform(), rng.uniform()};
         }
         for (int x = 0; x < std::min(w, 12); ++x) img.at(x, 1) = Color(2.0f, 2.0f, 0.5f);  // a run for RLE
         const std::string path = tempPath("roundtrip-" + std::to_string(w) + ".hdr");
@@ -297,8 +299,8 @@ Image splatImage(int threads, size_t tasks, SampleStats& total) {
         SampleStats st;
         Rng rng = taskRng(3, 0, uint32_t(k));
         for (int i = 0; i < 50; ++i) {
-            const Vec2 raster(rng.uniform() * (w + 2) - 1.0f, rng.uniform() * (h + 2) - 1.0f);
-            Color c(rng.uniform(), rng.uniform() * 1e-3f, rng.uniform() * 1e3f);
+            const Vec2 raster{rng.uniform() * (w + 2) - 1.0f, rng.uniform() * (h + 2) - 1.0f};
+            Color c{rng.uniform(), rng.uniform() * 1e-3f, rng.uniform() * 1e3f};
             const uint32_t r = rng.nextU32() % 1000;
             if (r == 0) c.r = std::numeric_limits<float>::quiet_NaN();
             if (r == 1) c.g = std::numeric_limits<float>::infinity();

@@ -127,7 +127,7 @@ TEST_CASE("geometry: rays through shared edges and vertices of a closed mesh nev
     // triangle at entry and >= 1 at exit; a ray through an interior face point hits exactly 2.
     Rng rng(7);
     for (int mesh = 0; mesh < 20; ++mesh) {
-        const Vec3 a(0.5f + rng.uniform(), 0.5f + rng.uniform(), 0.5f + rng.uniform());
+        const Vec3 a{0.5f + rng.uniform(), 0.5f + rng.uniform(), 0.5f + rng.uniform()};
         const float scale = std::pow(10.0f, -3.0f + 6.0f * rng.uniform());
         const Vec3 c = (2.0f * rng.uniform() - 1.0f) * scale * Vec3(3, -2, 1);
         const Mesh m = octahedron(scale * a, randomRotation(rng), c);
@@ -142,10 +142,13 @@ TEST_CASE("geometry: rays through shared edges and vertices of a closed mesh nev
                 const float s = rng.uniform();
                 target = (1.0f - s) * e0 + s * e1;
             } else if (kind == 1) target = e2;
-            else target = pointAt(tri, 0.1f + 0.3f * rng.uniform(), 0.1f + 0.3f * rng.uniform());
+            else {
+                const float u1 = rng.uniform(), u2 = rng.uniform();
+                target = pointAt(tri, 0.1f + 0.3f * u1, 0.1f + 0.3f * u2);
+            }
             // Origin outside, on the side the face looks to, direction through the target and
             // on into the interior (towards a random point near the centroid).
-            const Vec3 inside = centroid + 0.2f * scale * (Vec3(rng.uniform(), rng.uniform(), rng.uniform()) - 0.5f);
+            const Vec3 inside = centroid + 0.2f * scale * (Vec3{rng.uniform(), rng.uniform(), rng.uniform()} - 0.5f);
             const Vec3 d = glm::normalize(inside - target);
             const Ray ray(target - 3.0f * scale * d, d);
             const std::vector<float> ts = allHits(m, ray);
@@ -248,7 +251,7 @@ TEST_CASE("geometry: a ray offset off a triangle never re-hits it, at scales 1e-
         for (int tri = 0; tri < 50; ++tri) {
             Triangle t;
             for (Vec3* p : {&t.p0, &t.p1, &t.p2})
-                *p = cfg.shift + cfg.scale * (2.0f * Vec3(rng.uniform(), rng.uniform(), rng.uniform()) - 1.0f);
+                *p = cfg.shift + cfg.scale * (2.0f * Vec3{rng.uniform(), rng.uniform(), rng.uniform()} - 1.0f);
             if (t.area() < 0.05f * cfg.scale * cfg.scale) continue;  // skip slivers
             const Vec3 n = t.normal();
             for (int k = 0; k < 400; ++k) {
@@ -291,7 +294,7 @@ TEST_CASE("geometry: a ray offset off a sphere never re-hits it outward and stay
     for (const Config& cfg : configs) {
         int failures = 0, trials = 0;
         for (int s = 0; s < 50; ++s) {
-            const Sphere sph{cfg.shift + cfg.scale * (2.0f * Vec3(rng.uniform(), rng.uniform(), rng.uniform()) - 1.0f),
+            const Sphere sph{cfg.shift + cfg.scale * (2.0f * Vec3{rng.uniform(), rng.uniform(), rng.uniform()} - 1.0f),
                              cfg.scale * (0.5f + rng.uniform())};
             for (int k = 0; k < 200; ++k) {
                 const Vec3 n = glm::normalize(sph.center + sph.radius * randomUnit(rng) - sph.center);
@@ -329,7 +332,8 @@ TEST_CASE("geometry: two parallel surfaces 4e-5 apart do not leak") {
         const Mesh& from = up ? lower : upper;
         const Mesh& to = up ? upper : lower;
         const Triangle& tri = from[rng.nextU32() % from.size()];
-        const Vec3 p = pointAt(tri, 0.01f + 0.49f * rng.uniform(), 0.01f + 0.49f * rng.uniform());
+        const float u1 = rng.uniform(), u2 = rng.uniform();
+        const Vec3 p = pointAt(tri, 0.01f + 0.49f * u1, 0.01f + 0.49f * u2);
         if (std::abs(p.x) > 0.9f || std::abs(p.y) > 0.9f) continue;  // keep grazing rays over the grids
         const Vec3 n = tri.normal();
         const float c = k % 4 < 2 ? 1e-3f : 0.01f + 0.99f * rng.uniform();
@@ -388,7 +392,8 @@ TEST_CASE("geometry: sphere intersection from outside, inside, tangent and far a
         for (float dist : {1e3f, 1e5f}) {
             const float r = dist == 1e3f ? 1e-3f : 0.5f;  // at 1e5, ulp = 0.0078: r = 0.5 keeps 0.06 r margins
             for (int k = 0; k < 500; ++k) {
-                const Sphere s{randomUnit(rng) * (dist * rng.uniform()), r};
+                const Vec3 dir = randomUnit(rng);
+                const Sphere s{dir * (dist * rng.uniform()), r};
                 const Vec3 d = randomUnit(rng);
                 const Frame f(d);
                 const float miss = k % 3 == 0 ? 0.0f : (k % 3 == 1 ? 0.5f : 1.5f);

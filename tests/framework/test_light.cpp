@@ -149,7 +149,8 @@ TEST_CASE("light: area light sampling: uniform by area, pdf = 1/area, points on 
     b.triangle(t1, l);
     const Scene s = b.done();
     REQUIRE(s.lights[l].area == doctest::Approx(4.0f));
-    CHECK(pdfLightArea(s, l) == doctest::Approx(0.25f));
+    CHECK(pdfLight(s, l).pdfA == doctest::Approx(0.25f));
+    CHECK(pdfLight(s, l).pdfW == 0.0f);
     CHECK(s.caps.areaLights);
     CHECK_FALSE(s.lights[l].isDelta());
 
@@ -172,7 +173,8 @@ TEST_CASE("light: area light sampling: uniform by area, pdf = 1/area, points on 
         }
         onT0 += in0;
         corner[in0 ? 0 : 1] += (in0 ? c0 : c1).x > 0.5;
-        CHECK(ls.pdf == doctest::Approx(0.25f));
+        CHECK(ls.pdfA == doctest::Approx(0.25f));
+        CHECK(ls.pdfW == 0.0f);
         CHECK(ls.n == (in0 ? t0 : t1).normal());
     }
     CHECK(off == 0);
@@ -215,7 +217,7 @@ TEST_CASE("light: sphere light samples lie on the sphere, uniformly, and emit ou
     const Sphere sph{Vec3(3, -2, 7), 0.75f};
     b.sphere(sph, l);
     const Scene s = b.done();
-    CHECK(pdfLightArea(s, l) == doctest::Approx(1.0f / (4.0f * kPi * 0.75f * 0.75f)));
+    CHECK(pdfLight(s, l).pdfA == doctest::Approx(1.0f / (4.0f * kPi * 0.75f * 0.75f)));
     const Vec3 ref(0, 0, 0);
     Rng rng(7);
     const int N = 100000;
@@ -272,7 +274,7 @@ void neeIrradiance(const NeeCase& c, int N, double& mean, double& var) {
             q.p = ls.p;
             q.n = ls.n;
             q.errScale = std::max(a, h);
-            if (!s.occluded(s.spawnRayTo(sp, q))) v = ls.Le.g * cosX * cosY / (ls.dist * ls.dist * ls.pdf * prob);
+            if (!s.occluded(s.spawnRayTo(sp, q))) v = ls.Le.g * cosX * cosY / (ls.dist * ls.dist * ls.pdfA * prob);
         }
         const double delta = v - mean;
         mean += delta / (i + 1);
@@ -350,7 +352,8 @@ TEST_CASE("light: point lights are delta lights with pdf 1") {
     CHECK(s.caps.pointLights);
     const LightSample ls = sampleLight(s, l, Vec3(1, 2, 0), Vec2(0.3f, 0.9f));
     CHECK(ls.p == Vec3(1, 2, 3));
-    CHECK(ls.pdf == 1.0f);
+    CHECK(ls.pdfA == 1.0f);
+    CHECK(ls.pdfW == 0.0f);
     CHECK(ls.Le == Color(7.0f));
     CHECK(ls.dist == doctest::Approx(3.0f));
     CHECK(glm::length(ls.wi - Vec3(0, 0, 1)) < 1e-6f);
@@ -375,14 +378,16 @@ TEST_CASE("light: background sampling is uniform over the sphere with pdf 1/(4 p
     CHECK(s.caps.backgroundLight);
     CHECK(s.background == l);
     CHECK(s.backgroundRadiance() == Color(0.5f));
-    CHECK(pdfBackgroundDirection() == doctest::Approx(1.0f / (4.0f * kPi)));
+    CHECK(pdfLight(s, l).pdfW == doctest::Approx(1.0f / (4.0f * kPi)));
+    CHECK(pdfLight(s, l).pdfA == 0.0f);
     // Mean direction 0 (each component: variance 1/3), 5 standard errors.
     Rng rng(8);
     const int N = 100000;
     glm::dvec3 mean(0.0);
     for (int i = 0; i < N; ++i) {
         const LightSample ls = sampleLight(s, l, Vec3(0.2f, 0.1f, 0.5f), rng.uniform2());
-        CHECK(ls.pdf == doctest::Approx(1.0f / (4.0f * kPi)));
+        CHECK(ls.pdfW == doctest::Approx(1.0f / (4.0f * kPi)));
+        CHECK(ls.pdfA == 0.0f);
         CHECK(std::abs(glm::length(ls.wi) - 1.0f) < 1e-5f);
         CHECK(ls.dist == kInf);
         CHECK(ls.Le == Color(0.5f));
@@ -414,7 +419,9 @@ TEST_CASE("light: area light emission: cosine directions on the normal side, pdf
     double sumCos = 0.0;
     int bad = 0;
     for (int i = 0; i < N; ++i) {
-        const EmissionSample e = sampleEmission(s, l, rng.uniform2(), rng.uniform2());
+        const Vec2 uPos = rng.uniform2();
+        const Vec2 uDir = rng.uniform2();
+        const EmissionSample e = sampleEmission(s, l, uPos, uDir);
         const float c = glm::dot(e.dir, n);
         double d;
         const bool onLight = glm::all(glm::greaterThanEqual(barycentrics(s.triangles[0], e.p, d), glm::dvec3(-1e-6))) ||

@@ -1,4 +1,4 @@
-// Tests of the comparison report (app/report/converge.h): which pixels see a point light
+// Tests of the comparison report (report/converge.h): which pixels see a point light
 // directly, and that those pixels are left out of every error (lead decision: a path tracer
 // cannot sample a path whose both ends are delta positions, so comparing lt/bpt against pt
 // there would measure that, not noise).
@@ -94,16 +94,36 @@ TEST_CASE("report: labels are drawn with the 5 x 7 font, scaled, clipped and abo
     for (int y = 0; y < 10; ++y)
         for (int x = 6; x < 20; ++x) CHECK(clipped.at(x, y).r == 0.0f);
     CHECK(textWidth("pt 16 spp", 2) == 9 * 6 * 2);
-    // The strip: a band of (7 + 4) x scale rows above the images, the images unchanged below it.
+    // The strip, at slide resolution: 60 pixels in all are enlarged 8 times (the most; each pixel an
+    // 8 x 8 square) to 480; cells of 240 pixels take the largest font up to a glyph height of 34,
+    // scale 4 (28 pixels); a band of (7 + 4) x 4 rows above the images.
     Image a(30, 20, Color(0.25f)), b(30, 20, Color(0.5f));
+    a.at(29, 19) = Color(1.0f, 0.0f, 0.0f);
+    CHECK(stripFactor(60) == 8);
+    CHECK(stripFactor(600) == 2);
+    CHECK(stripFactor(768) == 2);
+    CHECK(stripFactor(5000) == 1);
+    CHECK(stripFactor(10) == 8);
     const Image strip = labelledStrip({a, b}, {"pt", "lt"}, Color(1.0f));
-    const int band = 11 * labelScale(30);
-    REQUIRE(strip.width == 60);
-    REQUIRE(strip.height == 20 + band);
+    const int band = 11 * 4;
+    REQUIRE(strip.width == 480);
+    REQUIRE(strip.height == 160 + band);
     CHECK(strip.at(0, band).r == 0.25f);
-    CHECK(strip.at(59, band + 19).r == 0.5f);
+    CHECK(strip.at(479, band + 159).r == 0.5f);
+    for (int y = band + 152; y < band + 160; ++y)
+        for (int x = 232; x < 240; ++x) CHECK(strip.at(x, y).g == 0.0f);  // pixel (29, 19): one square
+    CHECK(strip.at(231, band + 159).g == 0.25f);
     int ink = 0;
     for (int y = 0; y < band; ++y)
-        for (int x = 0; x < 60; ++x) ink += strip.at(x, y).r == 1.0f;
+        for (int x = 0; x < 480; ++x) ink += strip.at(x, y).r == 1.0f;
+    CHECK(ink > 0);
+    // Long labels wrap at spaces onto a second line, at a smaller font if need be: in 256-pixel
+    // cells (128-pixel images, twice) scale 5 at most; "L[DG]S*E|LS*E", 13 characters, fits
+    // 256 - 2 x 2 x scale only at scale 3 (234 pixels), so the whole strip is at scale 3.
+    std::vector<Image> six(6, Image(128, 128));
+    const Image family =
+        labelledStrip(six, {"radiosity", "pt LD*E", "drt", "pt LD?[GS]*E", "whitted", "pt L[DG]S*E|LS*E"}, Color(1.0f));
+    CHECK(family.width == 1536);
+    CHECK(family.height == 256 + 2 * 9 * 3 - 2 * 3 + 4 * 3);  // two lines at scale 3
     CHECK(ink > 0);
 }

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <initializer_list>
 #include <string>
+#include "camera.h"
 #include "errors.h"
 #include "scene_loader.h"
 
@@ -229,7 +230,34 @@ TEST_CASE("scene errors: bad resolution or field of view") {
     camera("fov 40 resolution 8 8 target 0 0 -5", {"option 'target' given twice"});
 }
 
-TEST_CASE("scene errors: a bad thin lens (lens RADIUS focus DISTANCE)") {
+namespace {
+// A camera model of this test's own (the framework knows none; lessons register theirs): a
+// keyword `testmodel R` with one value, and `testextra` with two, which only makes sense with it.
+struct TestModel : CameraModel {
+    float r = 0.0f;
+    Vec3 samplePoint(const Vec2&) const override { return Vec3(0.0f); }
+    float pdfPoint() const override { return 1.0f; }
+    Ray ray(const Vec2&, const Vec3& z) const override { return Ray(z, Vec3(0, 0, 1)); }
+    bool rasterOfDirection(const Vec3&, const Vec3&, Vec2&) const override { return false; }
+    float We(const Vec3&, const Vec3&) const override { return 0.0f; }
+    float pdfDirection(const Vec3&, const Vec3&) const override { return 0.0f; }
+    bool hit(const Ray&, float&, Vec3&) const override { return false; }
+    std::string describe() const override { return "testmodel " + std::to_string(r); }
+};
+std::shared_ptr<const CameraModel> makeTestModel(const Camera&, const CameraModelArgs& args) {
+    if (args.has("testextra") && !args.has("testmodel")) args.fail("'testextra' without 'testmodel'");
+    const float r = args.number("testmodel", 0.0f);
+    if (r < 0.0f) args.fail("'testmodel' must not be negative, got " + args.text("testmodel"));
+    if (r == 0.0f) return nullptr;
+    auto m = std::make_shared<TestModel>();
+    m->r = r;
+    return m;
+}
+[[maybe_unused]] const bool registered =
+    Registry<CameraModelType>::add("testmodel", CameraModelType{{{"testmodel", 1}, {"testextra", 2}}, makeTestModel});
+}  // namespace
+
+TEST_CASE("scene errors: a camera model's keywords reach its maker, its errors name the line") {
     auto camera = [](const std::string& options, std::initializer_list<const char*> words) {
         const std::string text =
             "# a comment line\n\ncamera eye 0 0 -5  target 0 0 0  fov 40  resolution 8 8  " + options + "\n";
@@ -238,24 +266,20 @@ TEST_CASE("scene errors: a bad thin lens (lens RADIUS focus DISTANCE)") {
         CHECK_MESSAGE(msg.rfind("test.scene:3: ", 0) == 0, msg);
         checkMessage(msg, words);
     };
-    camera("lens -0.1", {"'lens' (the lens radius) must not be negative", "got -0.1"});
-    camera("lens nan", {"'nan'", "'lens'", "not a finite number"});
-    camera("lens inf", {"'lens'"});
-    camera("lens 1e-30", {"'lens' radius 1e-30", "float's normal range"});
-    camera("lens 1e25", {"'lens' radius 1e25", "float's normal range"});
-    camera("lens 0.1 focus 0", {"'focus'", "must be positive"});
-    camera("lens 0.1 focus -2", {"'focus'", "must be positive"});
-    camera("lens 0.1 focus nan", {"'nan'", "'focus'", "not a finite number"});
-    camera("focus 2", {"'focus' without 'lens RADIUS'"});
-    camera("lens 0.1 0.2", {"'0.2'"});
-    // Accepted: radius 0 (the pinhole), focus defaulting to the target's distance.
-    const Scene pin = parseScene("camera eye 0 0 -5  target 0 0 0  fov 40  resolution 8 8  lens 0\n", "t.scene");
+    camera("testmodel -0.1", {"'testmodel' must not be negative", "got -0.1"});
+    camera("testmodel nan", {"'nan'", "'testmodel'", "not a finite number"});
+    camera("testextra 1 2", {"'testextra' without 'testmodel'"});
+    camera("testmodel 0.1 0.2", {"'0.2'"});
+    camera("testextra 1", {"option 'testextra' needs 2 value(s)"});
+    camera("nomodel 1", {"unknown option 'nomodel'", "testmodel"});
+    // Accepted: 0 (the maker's pinhole), a model otherwise.
+    const Scene pin = parseScene("camera eye 0 0 -5  target 0 0 0  fov 40  resolution 8 8  testmodel 0\n", "t.scene");
     CHECK(pin.camera.isPinhole());
-    const Scene lens = parseScene("camera eye 0 0 -5  target 0 0 0  fov 40  resolution 8 8  lens 0.5\n", "t.scene");
-    CHECK(!lens.camera.isPinhole());
-    CHECK(lens.camera.lensRadius() == 0.5f);
-    CHECK(lens.camera.focusDistance() == 5.0f);
-    CHECK(lens.caps.describe().find("camera=lens") != std::string::npos);
+    const Scene model =
+        parseScene("camera eye 0 0 -5  target 0 0 0  fov 40  resolution 8 8  testmodel 0.5\n", "t.scene");
+    REQUIRE(!model.camera.isPinhole());
+    CHECK(dynamic_cast<const TestModel*>(model.camera.model())->r == 0.5f);
+    CHECK(model.caps.describe().find("camera=testmodel") != std::string::npos);
 }
 
 TEST_CASE("scene errors: missing required option") {

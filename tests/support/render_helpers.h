@@ -45,6 +45,17 @@ inline double total(const Image& img) {
     return t;
 }
 
+// Sums over blocks of b x b pixels, for z-tests of a technique that hits the light by chance
+// (lesson 6's and 7's (0, k + 1)): it has a few hits per pixel, or none, and a per-pixel variance
+// estimate of such heavy-tailed samples is unreliable (0 where no sample hit); sums over blocks
+// are not. Variances add (the pixels are independent).
+inline Image blocks(const Image& img, int b) {
+    Image out(img.width / b, img.height / b);
+    for (int y = 0; y < img.height; ++y)
+        for (int x = 0; x < img.width; ++x) out.at(x / b, y / b) += img.at(x, y);
+    return out;
+}
+
 // The pixels of img where mask is true, in a row (for z-tests on a part of an image).
 inline Image select(const Image& img, const std::vector<bool>& mask) {
     int n = 0;

@@ -4,8 +4,12 @@
 //   2. Pearson's chi-square with pooled low cells (pbrt-v3 / Mitsuba / Nori recipe)
 //   3. adaptive Gauss-Legendre cubature for the expected counts
 //   4. chi-square of a sampler over the sphere and over a rectangle
-//   5. Welford, t-test on a scalar mean, per-pixel z-test of two images
+//   5. Welford, t-test on a scalar mean, per-pixel z-test of two images (a failed one writes them)
 #include "statistics.h"
+#include <cctype>
+#include <filesystem>
+#include <map>
+#include "lesson_files.h"
 
 #include <algorithm>
 #include <cmath>
@@ -742,7 +746,58 @@ ZTestResult zTestImages(const Image& a, const Image& varA, const Image& b, const
     for (size_t i = 0; i < k; ++i)
         r.report += format(" (x %d, y %d, %c) a %.5g b %.5g z %.2f;", channels[i].x, channels[i].y,
                            "RGB"[channels[i].c], channels[i].a, channels[i].b, channels[i].z);
+    if (!r.passed) r.report += "\n  " + writeFailedImages(a, varA, b, varB);
     return r;
+}
+
+namespace {
+std::string& currentTestName() {
+    static std::string name;
+    return name;
+}
+std::map<std::string, int>& imagesWritten() {
+    static std::map<std::string, int> count;
+    return count;
+}
+}  // namespace
+
+void setCurrentTestName(const std::string& name) { currentTestName() = name; }
+
+std::string writeFailedImages(const Image& a, const Image& varA, const Image& b, const Image& varB) {
+    // A folder name from the test's name: letters and digits, the rest one '-', at most 40 characters.
+    std::string slug;
+    for (char ch : currentTestName().empty() ? std::string("image-test") : currentTestName()) {
+        const unsigned char u = static_cast<unsigned char>(ch);
+        if (std::isalnum(u)) slug += char(std::tolower(u));
+        else if (!slug.empty() && slug.back() != '-') slug += '-';
+        if (slug.size() >= 40) break;
+    }
+    while (!slug.empty() && slug.back() == '-') slug.pop_back();
+    if (const int n = ++imagesWritten()[slug]; n > 1) slug += "-" + std::to_string(n);
+    // Into the build tree (build/failed-images/), else the test's working folder (the grader's
+    // scratch folder).
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    fs::path folder = fs::path(testfiles::binaryDir()) / "failed-images" / slug;
+    if (!fs::create_directories(folder, ec) && !fs::is_directory(folder, ec)) {
+        folder = fs::path("failed-images") / slug;
+        fs::create_directories(folder, ec);
+    }
+    const std::string base = folder.string() + "/";
+    try {
+        writePFM(base + "a.pfm", a);
+        if (!varA.pixels.empty()) writePFM(base + "a-variance.pfm", varA);
+        writePFM(base + "b.pfm", b);
+        if (!varB.pixels.empty()) writePFM(base + "b-variance.pfm", varB);
+    } catch (const std::exception& e) { return std::string("(the two images could not be written: ") + e.what() + ")"; }
+    // Named from the source tree's root when the build tree is inside it (build/...), so that the
+    // command runs as printed from there.
+    std::string shown = base;
+    const std::string root = std::string(testfiles::sourceDir()) + "/";
+    if (shown.compare(0, root.size(), root) == 0) shown = shown.substr(root.size());
+    return "to see where a and b differ: ./build/pathspace compare " + shown + "a.pfm " + shown + "b.pfm" +
+           (varA.pixels.empty() ? "" : " --variance-a " + shown + "a-variance.pfm") +
+           (varB.pixels.empty() ? "" : " --variance-b " + shown + "b-variance.pfm") + " --out " + shown + "compare.png";
 }
 
 }  // namespace ps::stats

@@ -81,8 +81,19 @@ struct ZTestResult {
 // variance of the mean (Film::varianceOfMean): z = |a - b| / sqrt(varA + varB + floor).
 // Each pixel channel is tested at level sidak(alpha, pixels * 3); the images agree when at
 // least requiredFraction of the channels pass.
+// A failed test also writes the four images (writeFailedImages) and its report ends with the
+// `pathspace compare` command that shows where a and b differ.
 ZTestResult zTestImages(const Image& a, const Image& varA, const Image& b, const Image& varB, double alpha,
                         double requiredFraction = 0.9975, double varianceFloor = 1e-8);
+
+// Writes a, b and their variances as PFM files a.pfm, a-variance.pfm, b.pfm, b-variance.pfm in
+// build/failed-images/NAME/ (NAME from the running test's name; the working folder's
+// failed-images/NAME/ when the build tree cannot be written; an empty variance image is left out)
+// and returns the line that names the `pathspace compare` command to run on them (or why they
+// could not be written). In a CHECK_MESSAGE it runs only when the check fails.
+std::string writeFailedImages(const Image& a, const Image& varA, const Image& b, const Image& varB);
+// The running test's name, for those file names: set by the test programs' main (doctest_main.cpp).
+void setCurrentTestName(const std::string& name);
 
 // Integral of f over the unit sphere (per unit solid angle) or over the rectangle [lo, hi] (per unit
 // area), by the adaptive Gauss-Legendre cubature the chi-square tests use for their expected

@@ -191,12 +191,42 @@ std::map<std::string, TestResult> readJUnit(const fs::path& file) {
     return out;
 }
 
+namespace {
+
+constexpr int kTableWidth = 100, kTableIndent = 16;  // the score table's columns; the test name's column
+
+// The text in lines of at most `width` characters, broken at spaces (a longer word on a line of its
+// own, whole).
+std::vector<std::string> wrapWords(const std::string& text, int width) {
+    // A test's points ("[1 pt]", "[2 pts]") stay on one line: their space is glued for the split.
+    std::string glued = text;
+    for (size_t p = glued.find(" pt"); p != std::string::npos; p = glued.find(" pt", p + 1))
+        if (p > 0 && std::isdigit(static_cast<unsigned char>(glued[p - 1]))) glued[p] = '\x01';
+    std::vector<std::string> lines;
+    std::string line, word;
+    std::istringstream in(glued);
+    while (in >> word) {
+        if (!line.empty() && int(line.size() + 1 + word.size()) > width) {
+            lines.push_back(line);
+            line.clear();
+        }
+        line += (line.empty() ? "" : " ") + word;
+    }
+    if (!line.empty() || lines.empty()) lines.push_back(line);
+    for (std::string& l : lines) std::replace(l.begin(), l.end(), '\x01', ' ');
+    return lines;
+}
+
+}  // namespace
+
 void writeReport(const std::vector<TestResult>& results, const std::map<std::string, std::string>& notes,
                  const fs::path& out, bool junit, double seconds) {
     int score = 0, maxScore = 0;
     std::map<std::string, std::pair<int, int>> perLesson;
     std::ostringstream tests;
-    std::printf("\n%-16s %-70s %6s  %s\n", "lesson", "test", "points", "result");
+    // The table fits 100 columns: a lesson's name on a line of its own, then per test its points,
+    // the result and its whole name, wrapped at spaces; a failed test's reason below, wrapped too.
+    std::printf("\n%-6s  %-7s %s\n", "points", "result", "test (the lesson above its tests)");
     for (size_t i = 0; i < results.size(); ++i) {
         const TestResult& r = results[i];
         const int got = r.passed ? r.points : 0;
@@ -204,11 +234,20 @@ void writeReport(const std::vector<TestResult>& results, const std::map<std::str
         maxScore += r.points;
         perLesson[r.lesson].first += got;
         perLesson[r.lesson].second += r.points;
-        std::printf("%-16s %-70.70s %3d/%-2d  %s\n", r.lesson.c_str(), r.name.c_str(), got, r.points,
-                    r.passed     ? "pass"
-                    : r.timedOut ? "TIMEOUT"
-                                 : "FAIL");
-        if (!r.passed) std::printf("%16s     %s\n", "", r.message.c_str());
+        if (i == 0 || results[i - 1].lesson != r.lesson) std::printf("%s\n", r.lesson.c_str());
+        const std::vector<std::string> name = wrapWords(r.name, kTableWidth - kTableIndent);
+        for (size_t k = 0; k < name.size(); ++k) {
+            if (k == 0)
+                std::printf("%3d/%-2d  %-7s %s\n", got, r.points,
+                            r.passed     ? "pass"
+                            : r.timedOut ? "TIMEOUT"
+                                         : "FAIL",
+                            name[k].c_str());
+            else std::printf("%*s%s\n", kTableIndent, "", name[k].c_str());
+        }
+        if (!r.passed)
+            for (const std::string& line : wrapWords("why: " + r.message, kTableWidth - kTableIndent - 2))
+                std::printf("%*s%s\n", kTableIndent + 2, "", line.c_str());
         tests << (i ? ",\n" : "") << "    {\"name\": \"" << jsonEscape(r.lesson + ": " + r.name)
               << "\", \"score\": " << got << ", \"max_score\": " << r.points << ", \"status\": \""
               << (r.passed ? "passed" : "failed") << "\", \"visibility\": \"visible\", \"output\": \""

@@ -49,8 +49,7 @@ Result renderWith(const Scene& scene, const std::string& algo, const std::string
     if (paths.empty()) {
         integrator = makeIntegrator(algo);
     } else {
-        const PathExpression e(paths);
-        integrator = makeIntegrator(algo, &e);
+        integrator = makeIntegrator(algo, {{"paths", paths}});
     }
     RenderOptions opt;
     opt.spp = spp;
@@ -331,7 +330,7 @@ TEST_CASE("paths filter: Veach's pyramid under LDE holds the paths of length 2 o
         CAPTURE(lens);
         const PathExpression e("LDE");
         BptOptions opt;
-        opt.pathTest = [&](const Subpath& light, const Subpath& camera, int s, int t) {
+        opt.techniqueFilter = [&](const Subpath& light, const Subpath& camera, int s, int t) {
             return bptPathMatches(e, scene, light, camera, s, t);
         };
         const TechniqueImages t = renderTechniques(scene, 3, 16, 5, 1, opt);
@@ -348,26 +347,26 @@ TEST_CASE("paths filter: Veach's pyramid under LDE holds the paths of length 2 o
 }
 
 TEST_CASE("paths filter: every algorithm honours an expression or refuses it, never ignores it") {
-    const PathExpression e("LDE");
+    const AlgorithmOptions lde = {{"paths", "LDE"}};
     const Scene scene = spheres(8);
     std::vector<std::string> honoured;
     for (const IntegratorInfo& info : integratorList()) {
         CAPTURE(info.name);
-        if (honoursPaths(info.name)) {
+        if (takesAlgorithmOption(info.name)) {
             honoured.push_back(info.name);
-            const std::unique_ptr<Integrator> i = makeIntegrator(info.name, &e);
-            CHECK(i->carriedPaths(scene) == "LDE");
-            // A thin lens (lesson 11): the filtered form renders one where the algorithm does, so
-            // that a lens scene is never refused for --paths with an algorithm --paths offers.
-            CHECK_MESSAGE(i->rendersThinLens() == makeIntegrator(info.name)->rendersThinLens(),
-                          info.name << " --paths: renders a thin lens " << i->rendersThinLens() << ", " << info.name
-                                    << " alone " << makeIntegrator(info.name)->rendersThinLens());
+            const std::unique_ptr<Integrator> i = makeIntegrator(info.name, lde);
+            CHECK(carriedPaths(info.name, scene, lde) == "LDE");
+            // A camera model (a thin lens): the filtered form renders one where the algorithm does,
+            // so that a lens scene is never refused for --paths with an algorithm --paths offers.
+            CHECK_MESSAGE(i->caps.cameraModels == makeIntegrator(info.name)->caps.cameraModels,
+                          info.name << " --paths: renders a camera model " << i->caps.cameraModels << ", " << info.name
+                                    << " alone " << makeIntegrator(info.name)->caps.cameraModels);
             CHECK_MESSAGE(i->name == info.name, "the filtered form's name is '" << i->name << "'");
         } else {
             bool refused = false;
             try {
-                makeIntegrator(info.name, &e);
-            } catch (const InputError& err) { refused = std::string(err.what()).find("--paths") != std::string::npos; }
+                makeIntegrator(info.name, lde);
+            } catch (const OptionError& err) { refused = std::string(err.what()).find("--paths") != std::string::npos; }
             CHECK_MESSAGE(refused, info.name << " neither honours --paths nor refuses it");
         }
     }

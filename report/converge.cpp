@@ -92,7 +92,7 @@ ConvergenceReport runConvergence(const Scene& scene, const Image& reference, con
     const std::vector<bool> leftOut = leftOutMask(scene, report.leftOut);
     for (const std::string& algo : opt.algos) {
         for (int seed = 0; seed < opt.seeds; ++seed) {
-            auto integrator = makeIntegrator(algo, opt.paths);
+            auto integrator = makeIntegrator(algo, opt.options);
             RenderOptions ro;
             ro.seconds = opt.seconds;
             ro.spp = opt.spp;

@@ -23,6 +23,13 @@ int labelScale(int imageWidth);
 
 // The images side by side, left to right, each under its label (a band of text above it, on the
 // background colour). ink: the text's colour (for a PNG written with exposure E, 2^-E is white).
+// The strip is made at slide resolution, so that its labels read on a lecture slide: images
+// narrower together than kStripWidth are enlarged by a whole factor (each pixel a square of
+// pixels, no filtering), and the labels take the largest font that fits their cell (a label may
+// wrap at spaces onto a second line), up to a glyph height of a seventh of the cell's width.
+constexpr int kStripWidth = 1200;
 Image labelledStrip(const std::vector<Image>& images, const std::vector<std::string>& labels, const Color& ink);
+// The whole factor labelledStrip enlarges images of total width `width` by.
+int stripFactor(int width);
 
 }  // namespace ps

@@ -4,7 +4,7 @@
 // plot of relMSE against seconds with a slope -1 guide, a Markdown efficiency table, and the
 // equal-time images side by side. Optionally (--regions) the error of each region of the
 // image: the pixels that see a given material. The `converge` command's module
-// (app/commands/converge.cpp), not part of the renderer.
+// (app/commands/converge.cpp), also used by the figure tools and benchmarks; not part of the renderer.
 //
 // A point light seen directly through the pinhole is a finite measurement (W_e I / d^2 lands in
 // one pixel): light tracing and BPT draw that pixel, a path tracer cannot (both ends of the path
@@ -53,9 +53,9 @@ struct ConvergeOptions {
     int seeds = 1;         // independent runs per algorithm (seeds 0 .. seeds-1), averaged
     int threads = 0;
     bool progress = false;
-    // Heckbert's expression (--paths, lesson 11): every algorithm renders only the paths it
-    // matches (its filtered form: makeIntegrator(algo, paths)); nullptr: every path.
-    const PathExpression* paths = nullptr;
+    // Algorithm options (integrator.h, e.g. --paths EXPR) every algorithm is made with
+    // (makeIntegrator(algo, options)); empty: none.
+    AlgorithmOptions options;
 };
 
 struct ConvergencePoint {
@@ -74,8 +74,6 @@ struct ConvergenceReport {
     double referenceVariance = 0.0;        // mean variance of the reference's pixels (0 if unknown)
     std::vector<PointLightPixel> leftOut;  // pixels left out of every error (pointLightsInView)
 };
-
-ConvergenceReport runConvergence(const Scene& scene, const Image& reference, const ConvergeOptions& opt);
 
 ConvergenceReport runConvergence(const Scene& scene, const Image& reference, const ConvergeOptions& opt);
 

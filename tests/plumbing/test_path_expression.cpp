@@ -1,4 +1,4 @@
-// Tests of framework/path_expression.h, Heckbert's path expressions (lesson 11, Eq. 11.1-11.6):
+// Tests of lessons/11-classics/path_expression.h, Heckbert's path expressions (lesson 11, Eq. 11.1-11.6):
 // the compiled automata against an independent matcher written here (a parse tree matched by
 // sets of positions, no automaton), on every string up to a length; the backward automaton and
 // its joins on every split of those strings; live states and the longest path against brute
@@ -9,7 +9,7 @@
 #include <set>
 #include <string>
 #include <vector>
-#include "path_expression.h"
+#include "11-classics/path_expression.h"
 
 using namespace ps;
 

@@ -114,22 +114,80 @@ void drawText(Image& img, int x, int y, const std::string& text, int scale, cons
     }
 }
 
-Image labelledStrip(const std::vector<Image>& images, const std::vector<std::string>& labels, const Color& ink) {
-    int w = 0, h = 0;
-    for (const Image& im : images) {
-        w += im.width;
-        h = std::max(h, im.height);
+int stripFactor(int width) { return width <= 0 ? 1 : std::min(8, (kStripWidth + width - 1) / width); }
+
+namespace {
+
+// The label in lines of at most `width` pixels at font scale `scale`, broken at spaces; empty if a
+// word alone is wider.
+std::vector<std::string> wrapLabel(const std::string& label, int width, int scale) {
+    std::vector<std::string> lines;
+    std::string line;
+    size_t i = 0;
+    while (i <= label.size()) {
+        const size_t j = std::min(label.find(' ', i), label.size());
+        const std::string word = label.substr(i, j - i);
+        i = j + 1;
+        if (word.empty()) continue;
+        if (textWidth(word, scale) > width) return {};
+        const std::string joined = line.empty() ? word : line + " " + word;
+        if (textWidth(joined, scale) <= width) {
+            line = joined;
+        } else {
+            lines.push_back(line);
+            line = word;
+        }
     }
-    const int scale = labelScale(images.empty() ? 0 : images[0].width);
-    const int pad = 2 * scale, band = kGlyphHeight * scale + 2 * pad;
-    Image out(w, h + band);
+    if (!line.empty()) lines.push_back(line);
+    return lines;
+}
+
+}  // namespace
+
+Image labelledStrip(const std::vector<Image>& images, const std::vector<std::string>& labels, const Color& ink) {
+    int w0 = 0, narrowest = 1 << 30;
+    for (const Image& im : images) {
+        w0 += im.width;
+        narrowest = std::min(narrowest, im.width);
+    }
+    const int k = stripFactor(w0);
+    const int cell = images.empty() ? 0 : narrowest * k;
+    // The largest font scale at which every label fits its cell in at most two lines (its glyphs at
+    // most a seventh of the cell's width high), or in one line if that is not much smaller.
+    const auto largestScale = [&](size_t maxLines) {
+        for (int scale = std::max(1, cell / (7 * kGlyphHeight)); scale > 1; --scale) {
+            bool fits = true;
+            for (size_t i = 0; i < labels.size() && fits; ++i) {
+                const std::vector<std::string> l = wrapLabel(labels[i], cell - 4 * scale, scale);
+                fits = !(l.empty() && !labels[i].empty()) && l.size() <= maxLines;
+            }
+            if (fits) return scale;
+        }
+        return 1;
+    };
+    const int twoLines = largestScale(2), oneLine = largestScale(1);
+    const int scale = 5 * oneLine >= 4 * twoLines ? oneLine : twoLines;
+    std::vector<std::vector<std::string>> lines(labels.size());
+    for (size_t i = 0; i < labels.size(); ++i) lines[i] = wrapLabel(labels[i], cell - 4 * scale, scale);
+    size_t rows = 1;
+    for (size_t i = 0; i < labels.size(); ++i) {
+        if (lines[i].empty() && !labels[i].empty()) lines[i] = {labels[i]};  // too long at any scale: cut
+        rows = std::max(rows, lines[i].size());
+    }
+    const int pad = 2 * scale, lineHeight = (kGlyphHeight + 2) * scale;
+    const int band = int(rows) * lineHeight - 2 * scale + 2 * pad;
+    int h = 0;
+    for (const Image& im : images) h = std::max(h, im.height * k);
+    Image out(w0 * k, h + band);
     int x0 = 0;
-    for (size_t k = 0; k < images.size(); ++k) {
-        const Image& im = images[k];
-        if (k < labels.size()) drawText(out, x0 + pad, pad, labels[k], scale, ink, x0 + im.width - pad);
-        for (int y = 0; y < im.height; ++y)
-            for (int x = 0; x < im.width; ++x) out.at(x0 + x, band + y) = im.at(x, y);
-        x0 += im.width;
+    for (size_t n = 0; n < images.size(); ++n) {
+        const Image& im = images[n];
+        if (n < lines.size())
+            for (size_t l = 0; l < lines[n].size(); ++l)
+                drawText(out, x0 + pad, pad + int(l) * lineHeight, lines[n][l], scale, ink, x0 + im.width * k - pad);
+        for (int y = 0; y < im.height * k; ++y)
+            for (int x = 0; x < im.width * k; ++x) out.at(x0 + x, band + y) = im.at(x / k, y / k);
+        x0 += im.width * k;
     }
     return out;
 }

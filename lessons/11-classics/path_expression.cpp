@@ -1,7 +1,7 @@
 // Heckbert's path expressions: the parser, Thompson's NFA, the subset construction, Moore's
 // minimisation, and the backward automaton of sets (lesson 11, Eq. 11.3-11.6). See
 // path_expression.h.
-#include "path_expression.h"
+#include "11-classics/path_expression.h"
 #include <algorithm>
 #include <map>
 
