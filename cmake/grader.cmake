@@ -4,7 +4,8 @@
 #
 #   include/framework/*.h, include/lessons/NN-name/*.h   the headers a submission compiles against
 #   lib/framework.a                     the framework without lessons 0 and 1
-#   lib/test_support.a, lib/test_main.o the tests' statistics helpers and their main()
+#   lib/test_support.a                  the tests' statistics helpers
+#   lib/main/*.o                        the tests' main() and the grader's result channel's harness side
 #   lib/NN/reference/*.o                lesson NN's reference pieces (hidden while lesson NN is graded)
 #   lib/NN/plumbing/*.o                 lesson NN's plumbing (lessons/NN-name/*.cpp), compiled
 #   lib/NN/tests/*.o                    lesson NN's graded tests, compiled

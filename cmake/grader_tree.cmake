@@ -22,7 +22,6 @@ endforeach()
 # Compiled code.
 file(COPY_FILE ${FRAMEWORK} ${TREE}/lib/framework.a)
 file(COPY_FILE ${TEST_SUPPORT} ${TREE}/lib/test_support.a)
-file(COPY_FILE ${TEST_MAIN} ${TREE}/lib/test_main.o)
 # objects(LIST DEST): copy each object as DEST/<its source's file name>.o
 function(copy_objects LIST DEST)
   foreach(_o ${LIST})
@@ -34,6 +33,10 @@ function(copy_objects LIST DEST)
     file(COPY_FILE ${_o} ${DEST}/${_n})
   endforeach()
 endfunction()
+
+# main() of the tests, with the harness's side of the grader's result channel.
+file(MAKE_DIRECTORY ${TREE}/lib/main)
+copy_objects("${TEST_MAIN}" ${TREE}/lib/main)
 
 # Data the tests read at run time (tests/support/lesson_files.h: PATHSPACE_TEST_SOURCE_DIR).
 file(COPY ${SOURCE}/scenes DESTINATION ${TREE}/data)

@@ -4,7 +4,8 @@
 #  2. in it, every graded test FAILS (a graded test that passes on the skeleton cannot tell a
 #     finished assignment from an empty one: it is named and the check fails);
 #  3. the student repositories' workflow (.github/workflows/classroom.yml) runs there as GitHub
-#     runs it (scripts/classroom.sh) and its score command agrees with the grader: 0 of the maximum.
+#     runs it (scripts/classroom.sh) and its score command agrees with the grader: 0 of the maximum;
+#  4. the grader's object check refuses none of the skeleton's files.
 #   bash scripts/check-skeleton.sh BUILD_DIR
 set -euo pipefail
 build="$(cd "${1:-build}" && pwd)"
@@ -49,3 +50,18 @@ if [ -z "$want" ] || [ "$got" != "$want" ]; then
   exit 1
 fi
 echo "check-skeleton: the handout's workflow and score command agree: $got"
+# The grader's object check (tools/grade/objcheck.h) refuses none of the skeleton's files, as the
+# handout's build compiled them: an unfinished piece calls PS_TODO (which prints and calls
+# std::call_once), and a student who leaves some pieces unfinished must still get the others' points.
+: >"$build/objcheck-skeleton.txt"
+for d in "$handout"/assignments/[0-9][0-9]-*/; do
+  l="$(basename "$d")"
+  mapfile -t objects < <(find "$hbuild" -path "*/assignments/$l/*.cpp.o" | sort)
+  [ ${#objects[@]} -gt 0 ] || { echo "check-skeleton: no objects of $l in the handout's build" >&2; exit 1; }
+  "$build/grade" --check-objects "$l" "${objects[@]}" --tree "$build/grader" >>"$build/objcheck-skeleton.txt" || {
+    echo "check-skeleton: the grader's object check refuses the skeleton of $l:" >&2
+    cat "$build/objcheck-skeleton.txt" >&2
+    exit 1
+  }
+done
+echo "check-skeleton: the grader's object check refuses none of the skeleton's files"

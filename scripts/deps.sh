@@ -7,7 +7,7 @@
 set -euo pipefail
 # clang (14) with libc++ and LLVM's OpenMP (libomp) builds everything a second time as a macOS
 # student's compiler would (scripts/portability.sh); clang++ also builds the fuzzers.
-PACKAGES=(cmake make g++ libglm-dev libstb-dev libtinyobjloader-dev doctest-dev libtinyexr-dev ccache bubblewrap
+PACKAGES=(cmake make g++ libglm-dev libstb-dev libtinyobjloader-dev doctest-dev libtinyexr-dev ccache bubblewrap binutils
           clang libomp-dev libc++-dev libc++abi-dev)
 # clang 19 only, not its libc++ or libomp: Debian's libc++-19-dev and libomp-19-dev conflict with
 # (and replace) the version-14 packages above, which clang 14 and the fuzzers need.

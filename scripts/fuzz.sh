@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Fuzzes every reader of outside input (scene files, OBJ/MTL, PFM, .hdr) with libFuzzer under
-# AddressSanitizer and UndefinedBehaviorSanitizer. Needs Clang (Debian: apt-get install clang).
+# Fuzzes every reader of outside input (scene files, OBJ/MTL, PFM, .hdr, and what the grader reads
+# of a submission: the result channel, outputs, JUnit, objdump's text, objects) with libFuzzer
+# under AddressSanitizer and UndefinedBehaviorSanitizer. Needs Clang (Debian: apt-get install clang).
 #   bash scripts/fuzz.sh                 replay the corpus (fuzz/corpus/T: seeds and every crash
 #                                        found so far), then fuzz each target for 10 s (CI does this)
 #   bash scripts/fuzz.sh --seconds 600   fuzz each target for 10 minutes (a long run)
@@ -15,11 +16,11 @@ targets=()
 while [ $# -gt 0 ]; do
   case "$1" in
     --seconds) seconds="$2"; shift 2 ;;
-    -h|--help) sed -n '2,11p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,12p' "$0"; exit 0 ;;
     *) targets+=("$1"); shift ;;
   esac
 done
-[ ${#targets[@]} -gt 0 ] || targets=(scene obj pfm hdr)
+[ ${#targets[@]} -gt 0 ] || targets=(scene obj pfm hdr grade)
 if ! command -v clang++ >/dev/null 2>&1; then
   echo "fuzz: clang++ not found: fuzzing skipped (Debian: apt-get install clang)" >&2
   exit 0

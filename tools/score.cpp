@@ -6,7 +6,7 @@
 //
 // Every graded test the lesson declares (tests/NN-name/*.cpp) is listed: one the report does not
 // have (its lesson did not build, or it was not run) scores 0. Writes DIR/results.json (default
-// DIR: ./score). Exit status 0, or 2 for a bad command line.
+// DIR: ./score). Exit status 0, 1 when results.json cannot be written, 2 for a bad command line.
 #include <algorithm>
 #include <filesystem>
 #include <iostream>
@@ -138,7 +138,12 @@ int main(int argc, char** argv) {
     if (!fs::is_directory(out)) usage("--out " + out.string() + ": cannot make that folder");
     double seconds = 0;  // execution_time: the time the tests took in the student's run
     for (const TestResult& r : results) seconds += r.seconds;
-    writeReport(results, notes, out, false, seconds);
+    try {
+        writeReport(results, notes, out, false, seconds);
+    } catch (const std::exception& e) {
+        std::cerr << "score: " << e.what() << "\n";
+        return 1;
+    }
     std::cout << "\nA test's whole message:\n  ctest --test-dir build -L lesson-NN -R 'part of its name' "
                  "--output-on-failure\n";
     return 0;

@@ -4,11 +4,13 @@
 // after it (statistics.h, writeFailedImages). The console reporter puts the reason first: a failed
 // CHECK_MESSAGE prints "file:line: ERROR: <what the test says>" and then, in brackets, the check
 // itself (doctest's own first line is "CHECK( x ) is NOT correct!", which says nothing).
+// Under the autograder, main's status also goes to the grader's result channel (grade_channel.h).
 #define DOCTEST_CONFIG_IMPLEMENT
 #include <doctest/doctest.h>
 #include <algorithm>
 #include <sstream>
 #include <string>
+#include "grade_channel.h"
 #include "passive_wait.h"
 
 namespace ps::stats {
@@ -104,5 +106,5 @@ int main(int argc, char** argv) {
     doctest::Context context;
     context.setOption("reporters", "pathspace");  // the default; --reporters=... on the command line wins
     context.applyCommandLine(argc, argv);
-    return context.run();
+    return ps::gradechannel::exitStatus(context.run());
 }

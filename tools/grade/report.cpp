@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 
 namespace fs = std::filesystem;
 
@@ -24,7 +25,7 @@ std::string xmlUnescape(std::string s) {
 
 // s with every byte that does not belong to a well-formed UTF-8 sequence replaced by '?':
 // a test's output is whatever the submission printed, and JSON and XML readers reject bad UTF-8.
-std::string validUtf8(const std::string& s) {
+std::string utf8(const std::string& s) {
     std::string out;
     for (size_t i = 0; i < s.size();) {
         const unsigned char c = s[i];
@@ -45,7 +46,7 @@ std::string validUtf8(const std::string& s) {
 
 std::string xmlEscape(const std::string& s) {
     std::string out;
-    for (char c : validUtf8(s)) {
+    for (char c : utf8(s)) {
         switch (c) {
         case '&': out += "&amp;"; break;
         case '<': out += "&lt;"; break;
@@ -61,7 +62,7 @@ std::string xmlEscape(const std::string& s) {
 
 std::string jsonEscape(const std::string& s) {
     std::string out;
-    for (unsigned char c : validUtf8(s)) {
+    for (unsigned char c : utf8(s)) {
         switch (c) {
         case '"': out += "\\\""; break;
         case '\\': out += "\\\\"; break;
@@ -100,7 +101,17 @@ std::string secondsText(double s) {
     return b;
 }
 
+// The whole of `text` into `path`, every write checked through the close.
+void writeFile(const fs::path& path, const std::string& text) {
+    std::ofstream f(path, std::ios::binary);
+    f << text;
+    f.close();
+    if (!f) throw std::runtime_error("cannot write " + path.string());
+}
+
 }  // namespace
+
+std::string validUtf8(const std::string& s) { return utf8(s); }
 
 std::string readText(const fs::path& p) {
     std::ifstream in(p, std::ios::binary);
@@ -157,9 +168,10 @@ std::vector<std::string> declaredTests(const fs::path& dir) {
 
 // Parsed with find(), not std::regex: libstdc++'s regex recurses per character and overflows the
 // stack on the megabytes of output a failing skeleton produces.
-std::map<std::string, TestResult> readJUnit(const fs::path& file) {
+std::map<std::string, TestResult> readJUnit(const fs::path& file) { return readJUnitText(readText(file)); }
+
+std::map<std::string, TestResult> readJUnitText(const std::string& xml) {
     std::map<std::string, TestResult> out;
-    const std::string xml = readText(file);
     for (size_t pos = 0; (pos = xml.find("<testcase", pos)) != std::string::npos;) {
         const size_t tagEnd = xml.find('>', pos);
         if (tagEnd == std::string::npos) break;
@@ -264,13 +276,14 @@ void writeReport(const std::vector<TestResult>& results, const std::map<std::str
     }
     std::printf("%-16s %d / %d\n", "total", score, maxScore);
     // stdout (the grader's log, with the host's paths) is for the lecturer only.
-    std::ofstream(out / "results.json") << "{\n  \"score\": " << score
-                                        << ",\n  \"execution_time\": " << static_cast<long long>(seconds + 0.5)
-                                        << ",\n  \"visibility\": \"visible\",\n  \"stdout_visibility\": \"hidden\""
-                                        << ",\n  \"output\": \"" << jsonEscape(summary) << "\""
-                                        << ",\n  \"extra_data\": {\"max_score\": " << maxScore << "}"
-                                        << ",\n  \"tests\": [\n"
-                                        << tests.str() << (results.empty() ? "" : "\n") << "  ]\n}\n";
+    std::ostringstream json;
+    json << "{\n  \"score\": " << score << ",\n  \"execution_time\": " << static_cast<long long>(seconds + 0.5)
+         << ",\n  \"visibility\": \"visible\",\n  \"stdout_visibility\": \"hidden\""
+         << ",\n  \"output\": \"" << jsonEscape(summary) << "\""
+         << ",\n  \"extra_data\": {\"max_score\": " << maxScore << "}"
+         << ",\n  \"tests\": [\n"
+         << tests.str() << (results.empty() ? "" : "\n") << "  ]\n}\n";
+    writeFile(out / "results.json", json.str());
     if (!junit) return;
     // One suite per lesson; a test's failure type says why: failure or timeout.
     double allSeconds = 0;
@@ -303,7 +316,7 @@ void writeReport(const std::vector<TestResult>& results, const std::map<std::str
         x << "  </testsuite>\n";
     }
     x << "</testsuites>\n";
-    std::ofstream(out / "junit.xml") << x.str();
+    writeFile(out / "junit.xml", x.str());
 }
 
 }  // namespace grade

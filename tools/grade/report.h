@@ -27,6 +27,7 @@ std::vector<std::string> declaredTests(const std::filesystem::path& dir);
 // name -> result, from a CTest JUnit file (`ctest --output-junit FILE`). A test CTest stopped at
 // its TIMEOUT is marked timedOut.
 std::map<std::string, TestResult> readJUnit(const std::filesystem::path& file);
+std::map<std::string, TestResult> readJUnitText(const std::string& xml);  // the same, from its text
 
 // Prints the table, writes OUT/results.json (and OUT/junit.xml when `junit`); `notes`: what the
 // grader has to say about each lesson (left-out files, a build that failed: once per lesson), and
@@ -36,6 +37,11 @@ std::map<std::string, TestResult> readJUnit(const std::filesystem::path& file);
 // visibility, stdout_visibility, extra_data, tests; each test: name, score, max_score, status,
 // visibility, output, extra_data), with the maximum score and each test's time in extra_data;
 // junit.xml the JUnit XML that CI systems read (one testsuite per lesson, each count stated).
+// Throws std::runtime_error when a file cannot be written whole.
+// Every byte of text that goes into either file is made valid UTF-8 (a test's output is whatever
+// the submission printed): see validUtf8.
+std::string validUtf8(const std::string& s);
+
 void writeReport(const std::vector<TestResult>& results, const std::map<std::string, std::string>& notes,
                  const std::filesystem::path& out, bool junit, double seconds);
 

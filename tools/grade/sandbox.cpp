@@ -39,6 +39,8 @@ Step Sandbox::wrap(Step step, const View& view) const {
                        "--tmpfs", "/tmp"});
     for (const std::string& p : view.readOnly) a.insert(a.end(), {"--ro-bind", p, p});
     for (const std::string& p : view.writable) a.insert(a.end(), {"--bind", p, p});
+    for (const std::string& p : view.scratch)
+        a.insert(a.end(), {"--size", std::to_string(view.scratchBytes), "--tmpfs", p});
     // The root holds the mount points bwrap made for the view: read-only like the rest. So does
     // the empty /tmp once the view is in place: a view under /tmp (a tree or a build there) has
     // its parent folders made in it, where a submission could otherwise write at the paths of the
