@@ -12,7 +12,7 @@
 //      emptied, the tree the next pass fills (DirectionalTree::refined); the cosine-weighted
 //      incident radiance on that side (Eq. 12.14) for ADRRS;
 //   4. while the field is above its budget, every learning tree refined again, coarser (rho
-//      doubled).
+//      doubled, up to the root alone).
 #include <algorithm>
 #include <cmath>
 #include "12-path-guiding/guiding.h"
@@ -130,9 +130,11 @@ void GuideField::endPass(int pass) {
             s.reliable = s.error <= kMaxRelativeError;
             s.learnt = s.samples;
         }
-    // 2. The spatial tree, within the budget (a new cell as large as the largest one will be).
+    // 2. The spatial tree, within the budget: a new cell as large as the largest one will be, with
+    //    the two nodes its cut adds to the spatial tree (whose storage may hold twice its nodes).
     size_t perCell = sizeof(GuideCell);
     for (const GuideCell& c : cells_) perCell = std::max(perCell, cellBytes(c) + learningBytes(c));
+    perCell += 4 * sizeof(SpatialNode);
     const size_t maxCells = std::max<size_t>(cells_.size(), settings_.budget / perCell);
     const uint32_t threshold = uint32_t(std::lround(settings_.spatialThreshold * std::sqrt(std::ldexp(1.0, pass))));
     tree_.subdivide(cells_, std::max<uint32_t>(threshold, 1), maxCells);
@@ -151,11 +153,11 @@ void GuideField::endPass(int pass) {
         }
         c.samples = 0;
     }
-    // 4. Within the budget: coarser learning trees.
-    for (float rho = 2.0f * settings_.rho; bytes() > settings_.budget && rho < 1.0f; rho *= 2.0f)
+    // 4. Within the budget: coarser learning trees, down to the root alone (rho >= 1 cuts nothing).
+    for (float rho = 2.0f * settings_.rho; bytes() > settings_.budget && rho < 2.0f; rho *= 2.0f)
         for (GuideCell& c : cells_)
             for (GuideSide& s : c.side) {
-                s.learning = s.sampling.refined(rho, settings_.maxDepth);
+                s.learning = s.sampling.refined(std::min(rho, 1.0f), settings_.maxDepth);
                 s.learning.clear();
                 s.learning.nodes.shrink_to_fit();
             }
