@@ -227,8 +227,8 @@ constexpr float kGuideFraction = 0.5f;  // alpha where a cell can guide (Müller
 float guidedPdf(const Material& m, const Vec3& n, const Vec3& wo, const DirectionalTree& guide, float alpha,
                 const Vec3& wi);
 // One direction from the mixture (Eq. 12.3, 12.4), camera side (Transport::Radiance). At a delta
-// material: lesson 3's sampleBSDF(m, n, wo, rng.uniform2(), rng.uniform(), Transport::Radiance, s)
-// and nothing else (a delta lobe is never guided). Otherwise: one rng.uniform() chooses — below
+// material: lesson 3's sampleBSDF(m, n, wo, u, uLobe, Transport::Radiance, s) with u = rng.uniform2()
+// drawn before uLobe = rng.uniform(), and nothing else (a delta lobe is never guided). Otherwise: one rng.uniform() chooses — below
 // alpha the guide (guide.sample(rng.uniform2())), else the BSDF (sampleBSDF as above, which may
 // fail) —; then s.pdf = guidedPdf(wi), s.weight = f(wo, wi) |cos theta_i| / s.pdf, s.delta false.
 // False where no direction came out or f is black there (a guide direction below the surface).

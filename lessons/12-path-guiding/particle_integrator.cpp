@@ -43,7 +43,8 @@ ImportancePass importancePass(const Scene& scene, int paths, uint64_t seed, Samp
         const Vec2 raster = jitteredRaster(i % pixels, width, rng);
         std::vector<ImportanceVertex> path;
         Color L(0.0f);
-        cameraWalk(scene, cameraRay(scene.camera, raster, rng), rng, {maxDepth}, [&](const WalkVertex& v) {
+        const Ray ray = cameraRay(scene.camera, raster, rng);
+        cameraWalk(scene, ray, rng, {maxDepth}, [&](const WalkVertex& v) {
             ImportanceVertex x;
             x.store = v.hit && !scene.materials[v.sp.material].isDelta();
             if (v.hit) x.p = v.sp.p, x.n = v.sp.n;

@@ -32,14 +32,20 @@ bool sampleGuided(const Material& m, const Vec3& n, const Vec3& wo, const Direct
     //! STUB (void)m; (void)n; (void)wo; (void)guide; (void)alpha; (void)rng; (void)s;
     //! STUB return PS_TODO("lesson 12: sampleGuided", false);
     //! BEGIN
-    if (m.isDelta()) return sampleBSDF(m, n, wo, rng.uniform2(), rng.uniform(), Transport::Radiance, s);
+    if (m.isDelta()) {
+        const Vec2 u = rng.uniform2();  // drawn in this order, into variables (lesson 3)
+        const float uLobe = rng.uniform();
+        return sampleBSDF(m, n, wo, u, uLobe, Transport::Radiance, s);
+    }
     const float choose = rng.uniform();
     Vec3 wi;
     if (choose < alpha) {
         wi = guide.sample(rng.uniform2());
     } else {
         BSDFSample b;
-        if (!sampleBSDF(m, n, wo, rng.uniform2(), rng.uniform(), Transport::Radiance, b)) return false;
+        const Vec2 u = rng.uniform2();
+        const float uLobe = rng.uniform();
+        if (!sampleBSDF(m, n, wo, u, uLobe, Transport::Radiance, b)) return false;
         wi = b.wi;
     }
     const Color f = evalBSDF(m, n, wo, wi);

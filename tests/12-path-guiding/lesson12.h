@@ -143,6 +143,13 @@ inline const Leaf* leafAt(const std::vector<Leaf>& leaves, double u, double v) {
 
 namespace lesson12 {
 
+// A point of the unit cube, its coordinates drawn x, y, z in this order (C++ evaluates a
+// constructor's arguments in no fixed order).
+inline Vec3 uniform3(ps::Rng& rng) {
+    const float x = rng.uniform(), y = rng.uniform();
+    return Vec3(x, y, rng.uniform());
+}
+
 // A closed diffuse box [0, 2] x [0, 1] x [0, 1] seen from inside, with a lamp under its ceiling if
 // `lamp`; materials: 0 "w" diffuse albedo (0.5, 0.25, 1), 1 "m" a mirror, 2 "p" Phong 10 albedo 0.6
 // (the last two used by no surface: for vertices made by hand).

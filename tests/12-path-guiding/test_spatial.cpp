@@ -67,8 +67,7 @@ TEST_CASE("spatial tree: a point's cell is the leaf whose box contains it (Eq. 1
                                 Vec3(5.0f, 1.999f, 0.5f), Vec3(5.0f, 1.0f, 0.5f),   Vec3(5.0f, 1.0f, 1.5f),
                                 Vec3(8.0f, 4.0f, 2.0f),   Vec3(-1.0f, 9.0f, -3.0f), Vec3(7.9f, 0.1f, 1.0f)};
     ps::Rng rng(ps::testseed::seed(1204), 1);
-    for (int k = 0; k < 500; ++k)
-        points.push_back(Vec3(8.0f, 4.0f, 2.0f) * Vec3(rng.uniform(), rng.uniform(), rng.uniform()));
+    for (int k = 0; k < 500; ++k) points.push_back(Vec3(8.0f, 4.0f, 2.0f) * uniform3(rng));
     int wrong = 0;
     std::string first;
     for (const Vec3& p : points) {
@@ -163,7 +162,7 @@ TEST_CASE("learned field: a cell's statistics are the sums of what was recorded 
         std::vector<Point> pts;
         for (int k = 0; k < n; ++k) {
             const float s = k % 3 ? 0.3f : 1.0f;  // two thirds of them near the lower corner
-            const Vec3 p = box.lo + s * box.extent() * Vec3(rng.uniform(), rng.uniform(), rng.uniform());
+            const Vec3 p = box.lo + s * box.extent() * uniform3(rng);
             pts.push_back({p, ps::sampleUniformSphere(rng.uniform2()), 0.5f + rng.uniform(), k % 6});
         }
         return pts;

@@ -14,6 +14,12 @@ namespace {
 
 using ps::Vec3;
 
+// A point of the unit cube, drawn x, y, z in this order.
+Vec3 uniform3(ps::Rng& rng) {
+    const float x = rng.uniform(), y = rng.uniform();
+    return Vec3(x, y, rng.uniform());
+}
+
 // Passes of records spread over a box and over the sphere (many cells, deep directional trees),
 // into a field of the given budget; the field's bytes after every pass, and its cells at the end.
 struct Filled {
@@ -33,7 +39,7 @@ Filled fill(size_t budget, uint64_t seed) {
     for (int pass = 0; pass < 5; ++pass) {
         std::vector<ps::RadianceRecord> recs;
         for (int k = 0; k < 4000; ++k) {
-            const Vec3 p = box.lo + box.extent() * Vec3(rng.uniform(), rng.uniform(), rng.uniform());
+            const Vec3 p = box.lo + box.extent() * uniform3(rng);
             // Directions bunched around a few poles (trees that refine deep), values > 0.
             const Vec3 w = ps::sampleUniformSphere(rng.uniform2());
             const Vec3 bunched = glm::normalize(Vec3(float(k % 3) - 1.0f, 0.3f, 1.0f) + 0.2f * w);
