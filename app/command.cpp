@@ -8,6 +8,7 @@
 #include <iostream>
 #include <sstream>
 #include "errors.h"
+#include "image.h"
 #include "scene.h"
 #if defined(_WIN32)
 #include <io.h>
@@ -31,6 +32,12 @@ double parsePositive(const std::string& opt, const std::string& s) {
     if (!(v > 0.0) || !std::isfinite(v))
         throw UsageError("option " + opt + " must be a positive number, got '" + s + "'");
     return v;
+}
+
+TimeClock parseClockOption(const std::string& s) {
+    TimeClock c;
+    if (!parseClock(s, c)) throw UsageError("option --clock must be 'wall' or 'cpu', got '" + s + "'");
+    return c;
 }
 
 namespace {
@@ -57,6 +64,18 @@ std::string listed(const std::vector<std::string>& items) {
     return out;
 }
 
+// Where path leads: through dangling symbolic links to the file they would create (at most 40
+// links, as the system follows them); an existing file or a plain name is returned as it is.
+fs::path followDangling(fs::path p) {
+    std::error_code ec;
+    for (int i = 0; i < 40; ++i) {
+        if (!fs::is_symlink(fs::symlink_status(p, ec)) || fs::exists(p, ec)) return p;
+        const fs::path target = fs::read_symlink(p, ec);
+        if (ec) return p;
+        p = target.is_absolute() ? target : (p.has_parent_path() ? p.parent_path() : fs::path(".")) / target;
+    }
+    return p;
+}
 void checkOutputFile(const OutputFile& f) {
     if (f.path.empty()) badOutput(f.option, f.path, "empty file name");
     const fs::path p(f.path);
@@ -73,29 +92,62 @@ void checkOutputFile(const OutputFile& f) {
     const fs::path folder = p.has_parent_path() ? p.parent_path() : fs::path(".");
     if (!fs::exists(folder, ec)) badOutput(f.option, f.path, "folder '" + folder.string() + "' does not exist");
     if (!fs::is_directory(folder, ec)) badOutput(f.option, f.path, "'" + folder.string() + "' is not a folder");
-    // Try it: append (an existing file keeps its bytes), and remove what did not exist before.
-    const bool existed = fs::exists(p, ec);
+    // Try it: append (an existing file keeps its bytes), and remove what did not exist before
+    // (through a dangling symbolic link that is the file it points to, not the link).
+    const fs::path made = followDangling(p);
+    const bool existed = fs::exists(made, ec);
     errno = 0;
     std::ofstream probe(f.path, std::ios::binary | std::ios::app);
     const int err = errno;
     if (!probe) badOutput(f.option, f.path, "cannot be written (" + reason(err, "cannot open for writing") + ")");
     probe.close();
-    if (!existed) fs::remove(p, ec);
+    if (!existed) fs::remove(made, ec);
 }
 }  // namespace
 
-void checkOutputFiles(const std::vector<OutputFile>& files) {
+bool sameFile(const std::string& a, const std::string& b) {
+    std::error_code ec;
+    const fs::path pa = followDangling(a), pb = followDangling(b);
+    const bool ea = fs::exists(pa, ec), eb = fs::exists(pb, ec);
+    if (ea && eb) return fs::equivalent(pa, pb, ec);
+    if (ea != eb) return false;
+    if (pa.filename() != pb.filename()) return false;
+    const fs::path fa = pa.has_parent_path() ? pa.parent_path() : fs::path(".");
+    const fs::path fb = pb.has_parent_path() ? pb.parent_path() : fs::path(".");
+    return fs::exists(fa, ec) && fs::exists(fb, ec)
+               ? fs::equivalent(fa, fb, ec)
+               : fs::absolute(fa, ec).lexically_normal() == fs::absolute(fb, ec).lexically_normal();
+}
+
+void checkNotInputs(const std::vector<OutputFile>& files, const std::vector<InputFile>& inputs) {
+    for (const OutputFile& f : files)
+        for (const InputFile& in : inputs)
+            if (sameFile(f.path, in.path))
+                badOutput(f.option, f.path,
+                          "is " + in.what + " '" + in.path + "'" + (in.option.empty() ? "" : " (" + in.option + ")") +
+                              ": an output must not overwrite an input");
+}
+
+void checkOutputFiles(const std::vector<OutputFile>& files, const std::vector<InputFile>& inputs) {
     for (size_t i = 0; i < files.size(); ++i) {
         checkOutputFile(files[i]);
-        const fs::path a = fs::absolute(files[i].path).lexically_normal();
         for (size_t j = 0; j < i; ++j)
-            if (fs::absolute(files[j].path).lexically_normal() == a)
+            if (sameFile(files[j].path, files[i].path))
                 badOutput(files[i].option, files[i].path,
                           "is also the file of " + files[j].option + " ('" + files[j].path + "')");
     }
+    checkNotInputs(files, inputs);
 }
 
-void checkOutputFolder(const std::string& option, const std::string& folder, const std::vector<std::string>& files) {
+std::vector<InputFile> sceneInputs(const Scene& scene) {
+    std::vector<InputFile> inputs;
+    for (size_t i = 0; i < scene.inputFiles.size(); ++i)
+        inputs.push_back({i == 0 ? "the scene file" : "a file the scene file reads", scene.inputFiles[i], ""});
+    return inputs;
+}
+
+void checkOutputFolder(const std::string& option, const std::string& folder, const std::vector<std::string>& files,
+                       const std::vector<InputFile>& inputs) {
     if (folder.empty()) badOutput(option, folder, "empty folder name");
     std::error_code ec;
     const fs::path p = fs::path(folder).lexically_normal();
@@ -103,7 +155,7 @@ void checkOutputFolder(const std::string& option, const std::string& folder, con
         if (!fs::is_directory(p, ec)) badOutput(option, folder, "exists and is not a folder");
         std::vector<OutputFile> inside;
         for (const std::string& name : files) inside.push_back({option, (p / name).string(), {}});
-        checkOutputFiles(inside);
+        checkOutputFiles(inside, inputs);
         return;
     }
     // The nearest existing ancestor must be a folder in which the first missing one can be made.
@@ -118,6 +170,25 @@ void checkOutputFolder(const std::string& option, const std::string& folder, con
         badOutput(option, folder,
                   "cannot make folder '" + missing.string() + "' (" + (ec ? ec.message() : "unknown reason") + ")");
     fs::remove(missing, ec);
+}
+
+Image readReference(const std::string& path, const Scene& scene) {
+    Image ref = readImage(path, scene.camera.width(), scene.camera.height());
+    size_t bad = 0, first = 0;
+    for (size_t i = 0; i < ref.pixels.size(); ++i) {
+        const Color& c = ref.pixels[i];
+        if (std::isfinite(c.r) && std::isfinite(c.g) && std::isfinite(c.b)) continue;
+        if (bad++ == 0) first = i;
+    }
+    if (bad > 0) {
+        const Color& c = ref.pixels[first];
+        std::ostringstream os;
+        os << "pixel (" << first % size_t(ref.width) << ", " << first / size_t(ref.width) << ") is " << c.r << " "
+           << c.g << " " << c.b << ": a reference must be finite (" << bad << " of " << ref.pixels.size()
+           << " pixels are NaN or Inf)";
+        throw InputError(path, 0, os.str());
+    }
+    return ref;
 }
 
 std::string stem(const std::string& path) {

@@ -14,11 +14,13 @@
 #include "integrator.h"
 #include "numbers.h"
 #include "registry.h"
+#include "stopwatch.h"
 #include "vecmath.h"
 
 namespace ps {
 
 class Scene;
+struct Image;
 
 struct Command {
     std::string name;              // what the user types: pathspace NAME ...
@@ -90,6 +92,8 @@ constexpr int kMaxThreads = 1024;
 // A floating-point option that must be finite and positive (--time): UsageError
 // "option OPT must be a positive number, got 'S'" for 0, a negative number, nan or inf.
 double parsePositive(const std::string& opt, const std::string& s);
+// --clock: "wall" or "cpu" (framework/stopwatch.h); UsageError for anything else.
+TimeClock parseClockOption(const std::string& s);
 
 // Output paths are checked right after the options are parsed, before a scene is loaded or a
 // sample rendered: a bad path costs nothing and leaves nothing behind. Every command that
@@ -98,19 +102,44 @@ double parsePositive(const std::string& opt, const std::string& s);
 //     file can be opened for writing (tried: an existing file is opened for appending and left
 //     as it was, a new one is made and removed again), and its extension is one of
 //     `extensions` (lower case with the dot, any case accepted; empty: any name);
-//   - two outputs of one command must not be the same file;
+//   - two outputs of one command must not be the same file, and no output may be one of the
+//     command's inputs (the scene file, the reference image, ...): compared as files, not as
+//     spellings (sameFile), so "./x", a symbolic or a hard link to x are x;
 //   - a folder (checkOutputFolder): an existing folder in which each of `files` passes the
 //     file check, or a path whose nearest existing ancestor is a folder in which the missing
 //     folders can be made (tried, and removed again).
 // A problem throws UsageError "OPTION 'PATH': PROBLEM", e.g.
 //   option --out 'nodir/x.png': folder 'nodir' does not exist
+//   option --csv 'a.pfm': is the reference image 'a.pfm' (--reference): an output must not
+//   overwrite an input
 struct OutputFile {
     std::string option;                   // "--out"
     std::string path;                     // as the user gave it (or its default)
     std::vector<std::string> extensions;  // e.g. imageExtensions() (image.h) or {".pfm"}; {} = any
 };
-void checkOutputFiles(const std::vector<OutputFile>& files);
-void checkOutputFolder(const std::string& option, const std::string& folder, const std::vector<std::string>& files);
+struct InputFile {
+    std::string what;    // "the scene file", "the reference image"
+    std::string path;    // as the user gave it
+    std::string option;  // the option that named it ("--reference"), if any
+};
+void checkOutputFiles(const std::vector<OutputFile>& files, const std::vector<InputFile>& inputs = {});
+void checkOutputFolder(const std::string& option, const std::string& folder, const std::vector<std::string>& files,
+                       const std::vector<InputFile>& inputs = {});
+// Only the rule that no output is an input, for inputs known later: the meshes and material
+// libraries a scene file names (Scene::inputFiles), checked after loading, before rendering.
+void checkNotInputs(const std::vector<OutputFile>& files, const std::vector<InputFile>& inputs);
+// The scene's own files (Scene::inputFiles) as inputs: "the scene file", "a file the scene file reads".
+std::vector<InputFile> sceneInputs(const Scene& scene);
+// Whether paths a and b name the same file: an existing file by identity (device and inode:
+// symbolic and hard links, "./x" and "x"); a file that does not exist yet by its folder's identity
+// and its name (a dangling symbolic link by where it points).
+bool sameFile(const std::string& a, const std::string& b);
+
+// A reference image (--reference) for a scene: read with the scene's size (refused from its
+// header if it differs, before its pixels are decoded: image.h), and refused if a pixel is NaN or
+// Inf (every error against it would be NaN: the log would hold nothing). InputError naming the
+// file, the first such pixel and how many there are.
+Image readReference(const std::string& path, const Scene& scene);
 
 // stem("dir/a.scene") = "dir/a", baseName("dir/a.scene") = "a.scene", splitList("a,b,,c") = {a, b, c}.
 std::string stem(const std::string& path);

@@ -1,6 +1,9 @@
 // pathspace: the command-line front end. The commands register themselves (app/command.h,
 // one file each in app/commands/); this file only finds the one asked for and turns errors into
 // messages and exit statuses. `pathspace --help` lists the commands.
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -8,9 +11,9 @@
 #include "errors.h"
 #include "passive_wait.h"
 
-int main(int argc, char** argv) {
-    ps::preferPassiveWaiting(argv);
-    std::vector<std::string> args(argv + 1, argv + argc);
+namespace {
+
+int runCommandLine(std::vector<std::string> args) {
     try {
         if (args.empty() || args[0] == "--help" || args[0] == "-h") {
             std::cout << ps::programHelp();
@@ -39,4 +42,25 @@ int main(int argc, char** argv) {
         std::cerr << "pathspace: internal error: " << e.what() << "\n";
         return 3;
     }
+}
+
+// Standard output is a file too when it is redirected (pathspace compare A B > result.txt): what
+// was not written to it, up to its last flush, is an error as for every other file (a full disk
+// is never silent), never an exit status of 0.
+int finishStandardOutput(int status) {
+    errno = 0;
+    std::cout.flush();
+    const bool failed = std::fflush(stdout) != 0 || std::ferror(stdout) != 0 || !std::cout;
+    if (!failed) return status;
+    const int err = errno;
+    std::cerr << "pathspace: error: standard output: write failed ("
+              << (err != 0 ? std::strerror(err) : "an earlier write failed") << ")\n";
+    return status == 0 ? 1 : status;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    ps::preferPassiveWaiting(argv);
+    return finishStandardOutput(runCommandLine(std::vector<std::string>(argv + 1, argv + argc)));
 }

@@ -44,7 +44,8 @@ int main(int argc, char** argv) {
         return help ? 0 : 2;
     }
     try {
-        const ps::Image img = ps::readImage(argv[1]), ref = ps::readImage(argv[2]);
+        // The reference must have the image's size: compared from its header, before its pixels.
+        const ps::Image img = ps::readImage(argv[1]), ref = ps::readImage(argv[2], img.width, img.height);
         std::vector<bool> leftOut;
         if (withScene) {
             const ps::Scene scene = ps::loadScene(argv[4]);

@@ -1,24 +1,34 @@
 #!/usr/bin/env bash
 # pathspace against SmallVCM (github.com/SmallVCM/SmallVCM, built by you; never part of the
 # course) on SmallVCM's scenes 1 (a mirror sphere) and 2 (a point light, mirror and glass) at
-# equal wall-clock time: pixel samples per second and relMSE against one reference for pt, lt
-# and bpt. bench/README.md, "Renders against SmallVCM", says how to build SmallVCM with the
-# scenes' floor as ours (one sed line) and lists the figures.
+# equal time: pixel samples per second and relMSE against one reference for each algorithm.
+# bench/README.md, "Renders against SmallVCM", says how to build SmallVCM with the scenes' floor
+# as ours (one sed line) and lists the figures.
 #
-#   bench/smallvcm_compare.sh SMALLVCM [SECONDS] [THREADS] [SCENE]
+#   bench/smallvcm_compare.sh [--clock wall|cpu] [--algos LIST] SMALLVCM [SECONDS] [THREADS] [SCENE]
 #
-# SECONDS (default 20) of wall-clock time per render, THREADS (default 2) for both renderers,
-# SCENE 1 (default: SmallVCM's -s 1, scenes/smallvcm-mirror.scene) or 2 (smallvcm-point.scene).
-# The reference is pathspace's bpt for 8 x SECONDS (kept in $OUT/reference.pfm and reused when
-# present). SmallVCM's -t counts process CPU time (clock()), which with 2 threads is twice the
-# wall time, so SmallVCM is given a number of iterations instead: its rate is measured on a short
-# run first, and the iterations are chosen to fill SECONDS; both wall times are measured here
-# and printed, and the efficiency 1 / (relMSE x seconds) evens out what is left.
+# SECONDS (default 20) per render, THREADS (default 2) for both renderers, SCENE 1 (default:
+# SmallVCM's -s 1, scenes/smallvcm-mirror.scene) or 2 (smallvcm-point.scene); LIST of pt, lt,
+# bpt, ppm (default pt,lt,bpt,ppm). The reference is pathspace's bpt for 8 x SECONDS (kept in
+# $OUT/reference.pfm and reused when present). --clock wall (default): wall-clock seconds of each
+# whole process, measured here; --clock cpu: CPU seconds of the render loop, all threads added
+# up, as each renderer reports them (pathspace render --clock cpu; SmallVCM's "done in", which is
+# clock(), the process's CPU time): fair when other jobs share the machine. Either way SmallVCM
+# is given a number of iterations (its -t counts CPU time: with 2 threads it would stop at half
+# the wall time given), chosen from its rate on a short run to fill SECONDS; the efficiency
+# 1 / (relMSE x seconds) evens out the difference left.
 set -euo pipefail
-if [[ $# -lt 1 || $1 == --help || $1 == -h ]]; then
-  sed -n '2,16p' "$0" | sed 's/^# \{0,1\}//'
-  [[ $# -ge 1 ]] && exit 0 || exit 2
-fi
+CLOCK=wall; ALGOS=pt,lt,bpt,ppm
+while [[ $# -gt 0 && $1 == --* ]]; do
+  case $1 in
+    --clock) [[ ${2:-} == wall || ${2:-} == cpu ]] || { echo "smallvcm_compare: --clock wall|cpu" >&2; exit 2; }
+             CLOCK=$2; shift 2 ;;
+    --algos) ALGOS=${2:?--algos needs a list}; shift 2 ;;
+    --help|-h) sed -n '2,20p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    *) echo "smallvcm_compare: unknown option $1" >&2; exit 2 ;;
+  esac
+done
+if [[ $# -lt 1 ]]; then sed -n '2,20p' "$0" | sed 's/^# \{0,1\}//'; exit 2; fi
 SVCM=$(realpath "$1"); SECONDS_EACH=${2:-20}; THREADS=${3:-2}; SID=${4:-1}
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
 BUILD=${BUILD:-$ROOT/build}
@@ -27,6 +37,9 @@ case $SID in
   2) SCENE=$ROOT/scenes/smallvcm-point.scene ;;
   *) echo "smallvcm_compare: SCENE is 1 or 2, not $SID" >&2; exit 2 ;;
 esac
+for a in ${ALGOS//,/ }; do
+  [[ $a == pt || $a == lt || $a == bpt || $a == ppm ]] || { echo "smallvcm_compare: algorithm $a: pt, lt, bpt or ppm" >&2; exit 2; }
+done
 OUT=${OUT:-$ROOT/build/smallvcm-compare-$SID}
 [[ -x $SVCM ]] || { echo "smallvcm_compare: $SVCM is not an executable" >&2; exit 2; }
 for t in pathspace image_compare; do
@@ -35,34 +48,39 @@ done
 mkdir -p "$OUT"; cd "$OUT"
 now() { date +%s.%N; }
 calc() { awk "BEGIN { print $1 }"; }  # floating-point arithmetic (awk is in every Debian)
+# Seconds from pathspace's summary line ("N spp in S s" or "N spp in S CPU s") and SmallVCM's
+# last line ("done in S s", its clock(): CPU time).
+ours_seconds() { sed -E 's/.* spp in ([0-9.]+) .*/\1/' <<<"$1"; }
+svcm_seconds() { sed -nE 's/.*done in ([0-9.]+) s.*/\1/p' <<<"$1"; }
 if [[ ! -f reference.pfm ]]; then
-  echo "reference: pathspace bpt for $((8 * SECONDS_EACH)) s ..."
-  "$BUILD/pathspace" render "$SCENE" --algo bpt --time $((8 * SECONDS_EACH)) --threads "$THREADS" \
+  echo "reference: pathspace bpt for $((8 * SECONDS_EACH)) s ($CLOCK clock) ..."
+  "$BUILD/pathspace" render "$SCENE" --algo bpt --time $((8 * SECONDS_EACH)) --clock $CLOCK --threads "$THREADS" \
     --seed 1000 --out reference.pfm --no-progress 2>&1 | grep ' spp in '
 fi
-echo "scene $SID: $SCENE; $THREADS thread(s), $SECONDS_EACH s per render"
+unit="wall-clock s of each process"; [[ $CLOCK == cpu ]] && unit="CPU s of the render loop, all threads"
+echo "scene $SID: $SCENE; $THREADS thread(s), $SECONDS_EACH s per render; clock: $CLOCK ($unit)"
 echo "load average at the start: $(cut -d' ' -f1-3 /proc/loadavg)"
-printf '%-5s %-10s %6s %8s %12s %10s %10s %10s\n' algo renderer spp wall_s samples/s relMSE trimmed efficiency
-for a in pt lt bpt; do
-  # pathspace: --time stops the render loop after SECONDS_EACH.
+printf '%-5s %-10s %6s %8s %12s %10s %10s %10s\n' algo renderer spp seconds samples/s relMSE trimmed efficiency
+for a in ${ALGOS//,/ }; do
   s=$(now)
-  line=$("$BUILD/pathspace" render "$SCENE" --algo $a --time "$SECONDS_EACH" --threads "$THREADS" \
+  line=$("$BUILD/pathspace" render "$SCENE" --algo $a --time "$SECONDS_EACH" --clock $CLOCK --threads "$THREADS" \
            --out ours-$a.pfm --no-progress 2>&1 | grep ' spp in ')
   e=$(now)
   spp=$(sed -E 's/.*: ([0-9]+) spp in.*/\1/' <<<"$line")
-  wall=$(calc "$e - $s")
+  if [[ $CLOCK == cpu ]]; then time_ours=$(ours_seconds "$line"); else time_ours=$(calc "$e - $s"); fi
   # SmallVCM: 2 x THREADS iterations to measure its rate, then enough to fill SECONDS_EACH.
   n0=$((2 * THREADS)); s=$(now)
-  OMP_NUM_THREADS=$THREADS "$SVCM" -s $SID -a $a -i $n0 -o svcm-probe.hdr >/dev/null
+  probe=$(OMP_NUM_THREADS=$THREADS "$SVCM" -s $SID -a $a -i $n0 -o svcm-probe.hdr)
   e=$(now)
-  n=$(calc "int($SECONDS_EACH * $n0 / ($e - $s) / $THREADS + 0.5) * $THREADS")
+  if [[ $CLOCK == cpu ]]; then per=$(calc "$(svcm_seconds "$probe") / $n0"); else per=$(calc "($e - $s) / $n0"); fi
+  n=$(calc "int($SECONDS_EACH / $per / $THREADS + 0.5) * $THREADS")
   [[ $n -ge $THREADS ]] || n=$THREADS
   s=$(now)
-  OMP_NUM_THREADS=$THREADS "$SVCM" -s $SID -a $a -i $n -o svcm-$a.hdr >/dev/null
+  run=$(OMP_NUM_THREADS=$THREADS "$SVCM" -s $SID -a $a -i $n -o svcm-$a.hdr)
   e=$(now)
-  swall=$(calc "$e - $s")
+  if [[ $CLOCK == cpu ]]; then time_svcm=$(svcm_seconds "$run"); else time_svcm=$(calc "$e - $s"); fi
   for r in ours svcm; do
-    if [[ $r == ours ]]; then img=ours-$a.pfm; k=$spp; w=$wall; name=pathspace; else img=svcm-$a.hdr; k=$n; w=$swall; name=SmallVCM; fi
+    if [[ $r == ours ]]; then img=ours-$a.pfm; k=$spp; w=$time_ours; name=pathspace; else img=svcm-$a.hdr; k=$n; w=$time_svcm; name=SmallVCM; fi
     m=$("$BUILD/image_compare" "$img" reference.pfm --scene "$SCENE")
     rel=$(awk '$1 == "MSE" {print $4}' <<<"$m"); trim=$(awk '$1 == "MSE" {print $7}' <<<"$m")
     ratio=$(sed -nE 's/^mean ratio (.*)/\1/p' <<<"$m")
@@ -71,4 +89,5 @@ for a in pt lt bpt; do
   done
 done
 echo "load average at the end: $(cut -d' ' -f1-3 /proc/loadavg)"
-echo "samples/s: pixel samples (iterations x 512 x 512) per wall-clock second; efficiency: 1 / (relMSE x wall seconds)"
+echo "seconds: $unit; samples/s: pixel samples (iterations x 512 x 512) per such second;"
+echo "efficiency: 1 / (relMSE x seconds)"

@@ -1,9 +1,11 @@
 #include "image.h"
+#include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
-#include <iterator>
 #include <fstream>
 #include "errors.h"
+#include "file_writer.h"
 
 #define STB_IMAGE_WRITE_IMPLEMENTATION
 #include <stb_image_write.h>
@@ -30,6 +32,24 @@ bool littleEndianHost() {
 // a 24-byte file must not make them ask for gigabytes.
 constexpr int kMaxImageSide = 1 << 16;
 
+// The header's size w x h against the limits and against the size the caller expects (0: any),
+// before anything is allocated; InputError naming the file otherwise.
+void checkHeaderSize(const std::string& path, long long w, long long h, int expectW, int expectH) {
+    const std::string size = std::to_string(w) + "x" + std::to_string(h);
+    if (w < 1 || h < 1 || w > kMaxImageSide || h > kMaxImageSide)
+        throw InputError(
+            path, 0,
+            "the header says " + size + " pixels (each side must be 1 to " + std::to_string(kMaxImageSide) + ")");
+    if (expectW > 0 && expectH > 0 && (w != expectW || h != expectH))
+        throw InputError(
+            path, 0,
+            "the image is " + size + " pixels, expected " + std::to_string(expectW) + "x" + std::to_string(expectH));
+    if (w * h > kMaxImagePixels)
+        throw InputError(path, 0,
+                         "the header says " + size + " pixels, more than the " + std::to_string(kMaxImagePixels) +
+                             " pathspace reads");
+}
+
 // The bytes of f from its current position to its end (f is left where it was).
 uint64_t bytesLeft(std::ifstream& f) {
     const std::streampos here = f.tellg();
@@ -41,16 +61,15 @@ uint64_t bytesLeft(std::ifstream& f) {
 }  // namespace
 
 void writePFM(const std::string& path, const Image& img) {
-    std::ofstream f(path, std::ios::binary);
-    if (!f) throw InputError(path, 0, "cannot open for writing");
+    FileWriter f(path);
     // Header: "PF" (colour), size, scale < 0 means little-endian. Rows go bottom to top.
-    f << "PF\n" << img.width << " " << img.height << "\n" << (littleEndianHost() ? "-1.0" : "1.0") << "\n";
-    for (int y = img.height - 1; y >= 0; --y)
-        f.write(reinterpret_cast<const char*>(&img.at(0, y)), sizeof(Color) * size_t(img.width));
-    if (!f) throw InputError(path, 0, "write failed");
+    f.write("PF\n" + std::to_string(img.width) + " " + std::to_string(img.height) + "\n" +
+            (littleEndianHost() ? "-1.0" : "1.0") + "\n");
+    for (int y = img.height - 1; y >= 0; --y) f.write(&img.at(0, y), sizeof(Color) * size_t(img.width));
+    f.close();
 }
 
-Image readPFM(const std::string& path) {
+Image readPFM(const std::string& path, int expectW, int expectH) {
     std::ifstream f(path, std::ios::binary);
     if (!f) throw InputError(path, 0, "cannot open file (does it exist?)");
     std::string magic;
@@ -68,6 +87,7 @@ Image readPFM(const std::string& path) {
                          "the header says " + std::to_string(w) + "x" + std::to_string(h) + " pixels (" +
                              std::to_string(need) + " bytes) but the file has only " + std::to_string(have) +
                              " bytes of pixels (truncated?)");
+    checkHeaderSize(path, w, h, expectW, expectH);
     Image img(w, h);
     for (int y = h - 1; y >= 0; --y) {
         f.read(reinterpret_cast<char*>(&img.at(0, y)), sizeof(Color) * size_t(w));
@@ -86,9 +106,33 @@ Image readPFM(const std::string& path) {
     return img;
 }
 
+namespace {
+// stb's writers hand their bytes to a callback (a PNG at once, a .hdr a scanline at a time):
+// this one writes them through a FileWriter and keeps the first failure, which the caller throws
+// once stb has returned (an exception must not cross stb's C code).
+struct StbTarget {
+    FileWriter file;
+    std::string error;
+    explicit StbTarget(const std::string& path) : file(path) {}
+    static void write(void* context, void* data, int size) {
+        StbTarget& t = *static_cast<StbTarget*>(context);
+        if (!t.error.empty() || size <= 0) return;
+        try {
+            t.file.write(data, size_t(size));
+        } catch (const InputError& e) { t.error = e.what(); }
+    }
+    void finish(bool encoded, const std::string& what) {
+        if (!error.empty()) throw InputError(error);
+        if (!encoded) throw InputError(file.path(), 0, "cannot encode the " + what + " image");
+        file.close();
+    }
+};
+}  // namespace
+
 void writeHDR(const std::string& path, const Image& img) {
-    if (!stbi_write_hdr(path.c_str(), img.width, img.height, 3, &img.pixels[0].r))
-        throw InputError(path, 0, "cannot write .hdr file");
+    StbTarget target(path);
+    const int ok = stbi_write_hdr_to_func(&StbTarget::write, &target, img.width, img.height, 3, &img.pixels[0].r);
+    target.finish(ok != 0, ".hdr");
 }
 
 // Radiance .hdr (RGBE), our own reader: the header lines up to an empty line, the size line
@@ -97,7 +141,7 @@ void writeHDR(const std::string& path, const Image& img) {
 // c > 128 repeats the next byte c - 128 times, 0 < c <= 128 copies c bytes) or flat 4-byte
 // pixels. Every count and size is checked against the file, so a truncated or hostile file
 // gets an error, never a hang or a huge allocation.
-Image readHDR(const std::string& path) {
+Image readHDR(const std::string& path, int expectW, int expectH) {
     std::ifstream f(path, std::ios::binary);
     if (!f) throw InputError(path, 0, "cannot open file (does it exist?)");
     auto fail = [&](const std::string& problem) -> void {
@@ -129,7 +173,13 @@ Image readHDR(const std::string& path) {
     const uint64_t minLine = rle ? 4 + 4 * 2 * uint64_t((w + 126) / 127) : 4 * uint64_t(w);
     if (bytesLeft(f) < minLine * uint64_t(h))
         fail("the size says " + std::to_string(w) + "x" + std::to_string(h) + " but the file is too short for it");
-    std::vector<unsigned char> data((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+    checkHeaderSize(path, w, h, expectW, expectH);
+    // The most bytes w x h pixels can take (a scanline in copies of at most 128 bytes per channel,
+    // or flat): what follows is never read, however large the file.
+    const uint64_t maxLine = std::max<uint64_t>(4 + 4 * (uint64_t(w) + uint64_t((w + 127) / 128)), 4 * uint64_t(w));
+    std::vector<unsigned char> data(size_t(std::min(bytesLeft(f), maxLine * uint64_t(h))));
+    if (!f.read(reinterpret_cast<char*>(data.data()), std::streamsize(data.size())))
+        fail("the file could not be read to the end of its pixels");
     size_t at = 0;
     auto next = [&]() -> unsigned char {
         if (at >= data.size()) fail("the file ends inside the pixels (truncated?)");
@@ -178,13 +228,16 @@ void writePNG(const std::string& path, const Image& img, float exposure) {
             v = v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f;  // sRGB
             bytes[3 * i + k] = static_cast<unsigned char>(std::lround(v * 255.0f));
         }
-    if (!stbi_write_png(path.c_str(), img.width, img.height, 3, bytes.data(), img.width * 3))
-        throw InputError(path, 0, "cannot write PNG file");
+    StbTarget target(path);
+    const int ok =
+        stbi_write_png_to_func(&StbTarget::write, &target, img.width, img.height, 3, bytes.data(), img.width * 3);
+    target.finish(ok != 0, "PNG");
 }
 
 // OpenEXR through tinyexr (Debian libtinyexr-dev): RGB, 32-bit float per channel (the pixels
-// exactly, like PFM), ZIP-compressed; opens in tev and the other HDR viewers. Written with
-// SaveEXRImageToFile and header arrays we own (the simpler SaveEXR of tinyexr 1.0.1 leaks its
+// exactly, like PFM), ZIP-compressed; opens in tev and the other HDR viewers. Encoded in memory
+// by SaveEXRImageToMemory (its file writer checks neither fwrite nor fclose) and written through
+// FileWriter, with header arrays we own (the simpler SaveEXR of tinyexr 1.0.1 leaks its
 // channel list on every call). Channels in the order viewers expect: B, G, R.
 void writeEXR(const std::string& path, const Image& img) {
     const size_t n = size_t(img.width) * img.height;
@@ -210,12 +263,24 @@ void writeEXR(const std::string& path, const Image& img) {
     header.pixel_types = pixelTypes;
     header.requested_pixel_types = requested;
     header.compression_type = TINYEXR_COMPRESSIONTYPE_ZIP;
+    FileWriter file(path);
     const char* err = nullptr;
-    if (SaveEXRImageToFile(&image, &header, path.c_str(), &err) != TINYEXR_SUCCESS) {
+    unsigned char* bytes = nullptr;
+    const size_t size = SaveEXRImageToMemory(&image, &header, &bytes, &err);
+    if (size == 0 || !bytes) {
         const std::string why = err ? err : "unknown error";
         if (err) FreeEXRErrorMessage(err);
-        throw InputError(path, 0, "cannot write EXR file (" + why + ")");
+        std::free(bytes);
+        throw InputError(path, 0, "cannot encode the EXR image (" + why + ")");
     }
+    try {
+        file.write(bytes, size);
+    } catch (...) {
+        std::free(bytes);
+        throw;
+    }
+    std::free(bytes);
+    file.close();
 }
 
 const std::vector<std::string>& imageExtensions() {
@@ -232,10 +297,10 @@ void writeImage(const std::string& path, const Image& img) {
     else throw InputError(path, 0, "unknown image type '." + ext + "' (use .png, .pfm, .hdr or .exr)");
 }
 
-Image readImage(const std::string& path) {
+Image readImage(const std::string& path, int width, int height) {
     const std::string ext = extensionOf(path);
-    if (ext == "pfm") return readPFM(path);
-    if (ext == "hdr") return readHDR(path);
+    if (ext == "pfm") return readPFM(path, width, height);
+    if (ext == "hdr") return readHDR(path, width, height);
     throw InputError(path, 0, "cannot read '." + ext + "' images (use .pfm or .hdr)");
 }
 

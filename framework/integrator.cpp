@@ -5,6 +5,12 @@
 
 namespace ps {
 
+void Integrator::setDeadline(double secondsFromNow, TimeClock clock) {
+    hasDeadline_ = secondsFromNow > 0.0 && secondsFromNow < 1e9;  // also no NaN (a year is 3e7 s)
+    deadlineClock_ = clock;
+    if (hasDeadline_) deadline_ = clockSeconds(clock) + secondsFromNow;
+}
+
 void PixelIntegrator::renderIteration(const Scene& scene, uint32_t iteration, uint64_t seed, Image& out,
                                       SampleStats& stats) {
     renderPixelTasks(seed, iteration, out, stats, false, [&](int pixel, Rng& rng, Task&) {

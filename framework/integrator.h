@@ -1,6 +1,7 @@
 // Integrators are progressive: one iteration renders one sample per pixel (or one batch of
 // light paths) into an image of its own; the film averages the iterations.
 #pragma once
+#include <chrono>
 #include <functional>
 #include <memory>
 #include <string>
@@ -11,6 +12,7 @@
 #include "registry.h"
 #include "rng.h"
 #include "scene.h"
+#include "stopwatch.h"
 
 namespace ps {
 
@@ -100,6 +102,23 @@ public:
     IntegratorCaps caps;  // what it can do (makeIntegrator sets it from the registration)
     // Per-technique images of this integrator, as configured (set where caps.techniqueImages).
     TechniqueRenderer techniques;
+
+    // The render loop's time budget (--time). render() sets the deadline before each iteration,
+    // or none without a budget. An integrator whose one iteration can outlast the budget (lesson
+    // 11's radiosity: hundreds of shooting steps, each a row of up to a million form factors)
+    // asks timeIsUp() between pieces of its work and ends the iteration early, with an image
+    // that is a valid estimate. Without a deadline every iteration is whole, and a function of
+    // (scene, iteration, seed) as renderIteration says; with one, a cut iteration depends on
+    // the time, as the number of iterations of a timed render does.
+    // The deadline is on the render's clock (--clock: wall or the process's CPU time).
+    bool timeIsUp() const { return hasDeadline_ && clockSeconds(deadlineClock_) >= deadline_; }
+    // A budget that is not positive and finite: none.
+    void setDeadline(double secondsFromNow, TimeClock clock = TimeClock::Wall);
+
+private:
+    bool hasDeadline_ = false;
+    TimeClock deadlineClock_ = TimeClock::Wall;
+    double deadline_ = 0.0;  // clockSeconds(deadlineClock_) at the deadline
 };
 
 // An integrator that estimates the radiance along one camera ray per pixel per iteration. The

@@ -19,18 +19,34 @@ struct Light {
     Distribution1D primByArea;    // area light: picks a primitive proportionally to its area
     float area = 0.0f;            // area light: total area
     int line = 0;                 // the scene file's line that made it (0: not from a file)
-    // Point light lying on a surface (within 2^-17 of its coordinates' magnitude, Scene::finalize):
-    // surfaceScale > 0, and surfaceNormal is the (mean) normal of the surfaces it lies on. Rays
-    // leaving it, and shadow rays ending at it, are offset off that surface to their own side
-    // (Scene::spawnRay, spawnRayTo), as at any surface point: the point is in the surface's plane,
-    // so a ray never hits that surface at t = 0, and each half-space sees half of its light.
+    // Point light lying on surfaces (within 2^-17 of its coordinates' magnitude, Scene::finalize):
+    // surfaceScale > 0, and surfacePlanes holds the normals of the distinct planes it lies in
+    // (one on a face, two on an edge, three in a box's corner; planes within 1 degree of each other
+    // count as one). Rays leaving it, and shadow rays ending at it, start off every one of those
+    // planes on the side they go to (lightRayPoint; Scene::spawnRay, spawnRayTo): no ray hits
+    // them at t = 0, they get none of its light, and each region between them gets the light
+    // that goes into it. surfaceNormal is their mean (the offset where no such point is found).
+    std::vector<Vec3> surfacePlanes;
     Vec3 surfaceNormal = Vec3(0.0f);
     float surfaceScale = 0.0f;
 
 
     bool isDelta() const { return kind == LightKind::Point; }  // a flag, not a huge pdf
+    // At most this many distinct planes through a point light (a mesh vertex where more faces
+    // at different angles meet refuses it: Scene::finalize).
+    static constexpr size_t kMaxSurfacePlanes = 8;
     bool isInfinite() const { return kind == LightKind::Background; }
 };
+
+// Where a ray leaving a point light that lies on surfaces in direction w starts (or a shadow ray
+// to it from direction -w ends): its position moved off each plane of light.surfacePlanes to the
+// side w goes to, by at least 2^-16 of the light's surfaceScale-given magnitude from each (the
+// shortest such move: one plane, along its normal; an edge or a corner, the point nearest the
+// light in the region w enters). Its position itself for a light on no surface.
+Vec3 lightRayPoint(const Light& light, const Vec3& w);
+// Whether x lies in one of the planes of a point light on surfaces (within the 2^-17 of its
+// coordinates' magnitude that put the light on them): such a point gets none of its light.
+bool inLightPlane(const Light& light, const Vec3& x);
 
 // A point on a light, sampled for a reference point ref (next-event estimation), with the
 // densities it was sampled with, each in its own measure (the other one 0):

@@ -6,6 +6,9 @@
 namespace ps {
 
 constexpr uint32_t kNoPrimitive = 0xffffffffu;
+// The ignorePrim of a shadow ray that sees nothing without being traced: Scene::occluded says
+// true (Scene::spawnRayTo, between a point light on surfaces and a point in one of its planes).
+constexpr uint32_t kBlockedRay = 0xfffffffeu;
 
 struct Ray {
     Vec3 o;                              // origin

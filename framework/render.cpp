@@ -1,6 +1,5 @@
 #include "render.h"
 #include <omp.h>
-#include <chrono>
 #include <cstdio>
 #include <ostream>
 #include <sstream>
@@ -12,8 +11,6 @@ namespace ps {
 const char* const kErrorCsvHeader = "iteration,spp,seconds,mse,relmse,relmse_trim,nan,inf";
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
 
 void drawProgress(int done, int total, double seconds, double budget) {
     const double frac = total > 0 ? double(done) / total : (budget > 0 ? std::min(1.0, seconds / budget) : 0.0);
@@ -54,21 +51,22 @@ RenderResult render(const Scene& scene, Integrator& integrator, const RenderOpti
 
     double elapsed = 0.0, lastDraw = -1.0;
     int lastCheckpoint = 0;
-    auto t0 = Clock::now();
+    double t0 = clockSeconds(opt.clock);
     integrator.prepare(scene);
-    elapsed += std::chrono::duration<double>(Clock::now() - t0).count();
+    elapsed += clockSeconds(opt.clock) - t0;
 
     Image iterImage(res.film.width(), res.film.height());
     for (int it = 0;; ++it) {
         if (opt.spp > 0 && it >= opt.spp) break;
         if (opt.seconds > 0.0 && elapsed >= opt.seconds) break;
         if (opt.spp <= 0 && opt.seconds <= 0.0) break;
-        t0 = Clock::now();
+        integrator.setDeadline(opt.seconds > 0.0 ? opt.seconds - elapsed : 0.0, opt.clock);  // none without --time
+        t0 = clockSeconds(opt.clock);
         std::fill(iterImage.pixels.begin(), iterImage.pixels.end(), Color(0.0f));
         integrator.renderIteration(scene, static_cast<uint32_t>(it), opt.seed, iterImage, res.stats);
         if (integrator.caps.latestIterationIsImage) res.film = Film(res.film.width(), res.film.height());
         res.film.addIteration(iterImage);
-        elapsed += std::chrono::duration<double>(Clock::now() - t0).count();
+        elapsed += clockSeconds(opt.clock) - t0;
         res.iterations = it + 1;
 
         // Metrics and the progress bar are not counted as render time.
@@ -95,14 +93,17 @@ RenderResult render(const Scene& scene, Integrator& integrator, const RenderOpti
         std::fprintf(stderr, "\n");
     }
     res.seconds = elapsed;
+    res.clock = opt.clock;
     return res;
 }
 
 std::string summaryLine(const RenderResult& r) {
     char buf[256];
-    std::snprintf(buf, sizeof buf, "%d spp in %.2f s (%.2f Mrays/s), %llu NaN, %llu Inf samples", r.iterations,
-                  r.seconds, r.seconds > 0 ? double(r.stats.rays) / r.seconds * 1e-6 : 0.0,
-                  static_cast<unsigned long long>(r.stats.nan), static_cast<unsigned long long>(r.stats.inf));
+    const bool cpu = r.clock == TimeClock::Cpu;
+    std::snprintf(buf, sizeof buf, "%d spp in %.2f %s (%.2f Mrays%s), %llu NaN, %llu Inf samples", r.iterations,
+                  r.seconds, cpu ? "CPU s" : "s", r.seconds > 0 ? double(r.stats.rays) / r.seconds * 1e-6 : 0.0,
+                  cpu ? " per CPU s" : "/s", static_cast<unsigned long long>(r.stats.nan),
+                  static_cast<unsigned long long>(r.stats.inf));
     return buf;
 }
 

@@ -143,11 +143,13 @@ void Scene::finalize() {
 void Scene::findSurfacePointLights() {
     surfacePointLights.clear();
     constexpr double kTol = 0x1p-17;
+    const double kSamePlane = std::cos(kPi / 180.0);  // normals within 1 degree: one plane
     for (size_t l = 0; l < lights.size(); ++l) {
         Light& light = lights[l];
         if (light.kind != LightKind::Point) continue;
         light.surfaceNormal = Vec3(0.0f);
         light.surfaceScale = 0.0f;
+        light.surfacePlanes.clear();
         const glm::dvec3 p(light.position);
         const double pScale = maxAbsComponent(light.position);
         glm::dvec3 nSum(0.0), nFirst(0.0);
@@ -173,6 +175,7 @@ void Scene::findSurfacePointLights() {
             }
         }
         std::sort(near.begin(), near.end());
+        std::vector<glm::dvec3> planes;  // distinct: no two within 1 degree (or back to back)
         for (uint32_t prim : near) {
             const Primitive& pr = prims[prim];
             glm::dvec3 n;
@@ -202,22 +205,92 @@ void Scene::findSurfacePointLights() {
             if (scale == 0.0) nFirst = n;
             nSum += n;
             scale = std::max(scale, s);
+            bool known = false;
+            for (const glm::dvec3& m : planes) known = known || std::abs(glm::dot(m, n)) > kSamePlane;
+            if (!known) planes.push_back(n);
         }
         if (scale == 0.0) continue;
+        if (planes.size() > Light::kMaxSurfacePlanes)
+            throw InputError(path, light.line,
+                             "the point light lies where " + std::to_string(planes.size()) +
+                                 " surfaces at different angles meet (a vertex of a mesh?): more than " +
+                                 std::to_string(Light::kMaxSurfacePlanes) +
+                                 " planes, whose sides its rays would have to leave from; move it off them");
         // On an edge or corner of surfaces at an angle: their mean normal (off all of them for
         // rays into the space they bound); back to back (the sum vanishes): the first one's.
         const double sumLen = glm::length(nSum);
         light.surfaceNormal = Vec3(sumLen > 1e-3 ? nSum / sumLen : nFirst);
         light.surfaceScale = float(8.0 * scale);  // offsetRayOrigin's 2^-19 x 8 = 2^-16 of it
+        for (const glm::dvec3& n : planes) light.surfacePlanes.push_back(Vec3(n));
         surfacePointLights.push_back(int(l));
-        char buf[320];
-        std::snprintf(buf, sizeof buf,
-                      "the point light%s%s lies on a surface (within float rounding): it is taken to be in the "
-                      "surface's plane, so that surface gets none of its light and half of it goes to the surface's "
-                      "back; move it off the surface to light the surface itself",
-                      light.line > 0 ? " of line " : "", light.line > 0 ? std::to_string(light.line).c_str() : "");
-        warnings.push_back(buf);
+        const std::string which = light.line > 0 ? " of line " + std::to_string(light.line) : std::string();
+        if (planes.size() == 1)
+            warnings.push_back("the point light" + which +
+                               " lies on a surface (within float rounding): it is taken to be in the surface's "
+                               "plane, so that surface gets none of its light and half of it goes to the surface's "
+                               "back; move it off the surface to light the surface itself");
+        else
+            warnings.push_back("the point light" + which + " lies on " + std::to_string(planes.size()) +
+                               " surfaces at an edge or corner (within float rounding): it is taken to be in each "
+                               "of their planes, so they get none of its light and each region between them gets "
+                               "the light that goes into it; move it off them to light them");
     }
+}
+
+// The tolerance that put the light on its surfaces (findSurfacePointLights: 2^-17 of the magnitude).
+bool inLightPlane(const Light& light, const Vec3& x) {
+    const double tol = double(light.surfaceScale) * 0x1p-20;  // surfaceScale is 8 x the magnitude
+    const glm::dvec3 d = glm::dvec3(x) - glm::dvec3(light.position);
+    for (const Vec3& n : light.surfacePlanes)
+        if (std::abs(glm::dot(glm::dvec3(n), d)) <= tol) return true;
+    return false;
+}
+
+// A ray's end at a point light on surfaces (Light::surfacePlanes): its position plus the
+// shortest offset d with s_i n_i . d >= eps for every plane i, s_i the side w goes to (+ when
+// w lies in the plane). The shortest offset meets the bound with equality on at most three
+// planes, so it is the shortest of the candidates that solve s_i n_i . d = eps on one, two or
+// three of them and keep the bound on the rest (at most 8 + 28 + 56 for 8 planes; a light in a
+// box's corner has 3 + 3 + 1). One plane: offsetRayOrigin's offset along its normal (the mean of
+// the surfaces' normals, the plane's to rounding).
+Vec3 lightRayPoint(const Light& light, const Vec3& w) {
+    const size_t k = light.surfacePlanes.size();
+    if (k == 0) return light.position;
+    if (k == 1) return offsetRayOrigin(light.position, light.surfaceNormal, light.surfaceScale, w);  // the plane's
+    const double eps = double(light.surfaceScale) * 0x1p-19;
+    glm::dvec3 a[Light::kMaxSurfacePlanes];
+    for (size_t i = 0; i < k; ++i) {
+        const glm::dvec3 n(light.surfacePlanes[i]);
+        a[i] = glm::dot(n, glm::dvec3(w)) >= 0.0 ? n : -n;
+    }
+    glm::dvec3 best(0.0);
+    double bestLen2 = kInf;
+    const auto consider = [&](const glm::dvec3& d) {
+        const double len2 = glm::dot(d, d);
+        if (!(len2 < bestLen2)) return;
+        for (size_t i = 0; i < k; ++i)
+            if (!(glm::dot(a[i], d) >= eps * (1.0 - 1e-9))) return;
+        best = d;
+        bestLen2 = len2;
+    };
+    for (size_t i = 0; i < k; ++i) {
+        consider(eps * a[i]);
+        for (size_t j = i + 1; j < k; ++j) {
+            const double g = glm::dot(a[i], a[j]);
+            if (1.0 + g > 1e-12) consider(eps / (1.0 + g) * (a[i] + a[j]));
+            for (size_t m = j + 1; m < k; ++m) {
+                // d with a_i.d = a_j.d = a_m.d = eps (Cramer's rule).
+                const glm::dvec3 jm = glm::cross(a[j], a[m]), mi = glm::cross(a[m], a[i]), ij = glm::cross(a[i], a[j]);
+                const double det = glm::dot(a[i], jm);
+                if (std::abs(det) > 1e-9) consider(eps / det * (jm + mi + ij));
+            }
+        }
+    }
+    // No such offset within 256 eps (planes close to one another around a line, w almost in one
+    // of them): the mean normal's side, as a single plane.
+    if (!(bestLen2 <= 256.0 * 256.0 * eps * eps))
+        return offsetRayOrigin(light.position, light.surfaceNormal, light.surfaceScale, w);
+    return Vec3(glm::dvec3(light.position) + best);
 }
 
 namespace {
@@ -247,6 +320,11 @@ SurfacePoint Scene::surfacePoint(uint32_t prim, const Vec3& p) const {
     sp.p = s.center + s.radius * sp.n;  // reproject onto the surface
     sp.errScale = s.errScale();
     return sp;
+}
+
+float renderParameter(const RenderSettings& settings, const std::string& name, float fallback) {
+    const auto it = settings.parameters.find(name);
+    return it == settings.parameters.end() ? fallback : it->second;
 }
 
 bool Scene::closestHit(Ray& ray, SurfacePoint& sp) const {
@@ -337,6 +415,7 @@ bool Scene::intersect(Ray& ray, SurfacePoint& sp) const {
 }
 
 bool Scene::occluded(const Ray& ray) const {
+    if (ray.ignorePrim == kBlockedRay) return true;  // spawnRayTo: sees nothing, not traced
     ++tlsRays;
     return avx2Tracing ? anyHitAvx2(ray) : anyHit(ray);
 }
@@ -391,49 +470,47 @@ Vec3 rayOrigin(const Scene& s, const SurfacePoint& sp, const Vec3& w) {
 }
 }  // namespace
 
-const SurfacePoint& Scene::rayEnd(const SurfacePoint& sp, SurfacePoint& storage) const {
-    if (sp.light < 0 || surfacePointLights.empty()) return sp;
+const Light* Scene::surfaceLight(const SurfacePoint& sp) const {
+    if (sp.light < 0 || surfacePointLights.empty()) return nullptr;
     const Light& light = lights[size_t(sp.light)];
-    if (light.kind != LightKind::Point || !(light.surfaceScale > 0.0f)) return sp;
-    storage = sp;
-    storage.p = light.position;
-    storage.n = light.surfaceNormal;
-    storage.errScale = light.surfaceScale;
-    storage.prim = kNoPrimitive;
-    return storage;
+    return light.kind == LightKind::Point && light.surfaceScale > 0.0f ? &light : nullptr;
 }
 
-Ray Scene::spawnRay(const SurfacePoint& spIn, const Vec3& dir) const {
-    SurfacePoint storage;
-    const SurfacePoint& sp = rayEnd(spIn, storage);
+Ray Scene::spawnRay(const SurfacePoint& sp, const Vec3& dir) const {
+    if (const Light* light = surfaceLight(sp)) return Ray(lightRayPoint(*light, dir), dir, kInf, kNoPrimitive);
     return Ray(rayOrigin(*this, sp, dir), dir, kInf, ignoreFor(*this, sp));
 }
 
-Ray Scene::spawnRayTo(const SurfacePoint& spIn, const SurfacePoint& qIn) const {
-    SurfacePoint s1, s2;
-    const SurfacePoint& sp = rayEnd(spIn, s1);
-    const SurfacePoint& q = rayEnd(qIn, s2);
-    const Vec3 o = rayOrigin(*this, sp, q.p - sp.p);
-    const Vec3 target = offsetRayOrigin(q.p, q.n, q.errScale, sp.p - q.p);
+Ray Scene::spawnRayTo(const SurfacePoint& sp, const SurfacePoint& q) const {
+    const Light* fromLight = surfaceLight(sp);
+    const Light* toLight = surfaceLight(q);
+    const Vec3 from = fromLight ? fromLight->position : sp.p, to = toLight ? toLight->position : q.p;
+    const Vec3 o = fromLight ? lightRayPoint(*fromLight, to - from) : rayOrigin(*this, sp, to - from);
+    const Vec3 target = toLight ? lightRayPoint(*toLight, from - to) : offsetRayOrigin(q.p, q.n, q.errScale, from - to);
     const Vec3 d = target - o;
     const float len = glm::length(d);
-    return Ray(o, d / len, len, ignoreFor(*this, sp));
+    // A point in a plane of the light does not see it: the light lies in that plane, so none of
+    // its light arrives there (cos = 0). Traced, such a shadow ray would find the point's own
+    // float rounding off the plane, a random cos ~ 2^-23 / d, and the estimators rare spikes
+    // ~ 1/d^3 near the light (heavy tails no t-test can judge).
+    const bool inPlane = (toLight && inLightPlane(*toLight, from)) || (fromLight && inLightPlane(*fromLight, to));
+    return Ray(o, d / len, len, inPlane ? kBlockedRay : fromLight ? kNoPrimitive : ignoreFor(*this, sp));
 }
 
-Ray Scene::spawnRayTo(const SurfacePoint& spIn, const Vec3& q) const {
+Ray Scene::spawnRayTo(const SurfacePoint& sp, const Vec3& q) const {
     for (int l : surfacePointLights)
         if (lights[size_t(l)].position == q) {
             SurfacePoint target;
             target.p = q;
             target.light = l;
-            return spawnRayTo(spIn, target);
+            return spawnRayTo(sp, target);
         }
-    SurfacePoint storage;
-    const SurfacePoint& sp = rayEnd(spIn, storage);
-    const Vec3 o = rayOrigin(*this, sp, q - sp.p);
+    const Light* fromLight = surfaceLight(sp);
+    const Vec3 from = fromLight ? fromLight->position : sp.p;
+    const Vec3 o = fromLight ? lightRayPoint(*fromLight, q - from) : rayOrigin(*this, sp, q - from);
     const Vec3 d = q - o;
     const float len = glm::length(d);
-    return Ray(o, d / len, len * (1.0f - 0x1p-20f), ignoreFor(*this, sp));
+    return Ray(o, d / len, len * (1.0f - 0x1p-20f), fromLight ? kNoPrimitive : ignoreFor(*this, sp));
 }
 
 int Scene::selectLight(float u, float& prob) const {

@@ -1,6 +1,7 @@
 // The scene: shapes, materials, lights, camera, the BVH over the shapes, default settings,
 // and the capabilities recorded at load time (what kinds of light, BSDF and camera it has).
 #pragma once
+#include <map>
 #include <string>
 #include <vector>
 #include "bsdf.h"
@@ -23,6 +24,25 @@ struct Primitive {
 // The most elements radiosity cuts a quad's edge into (RenderSettings::elements).
 constexpr int kMaxElements = 256;
 
+// A number the scene's `render` statement may set for some lesson's algorithm (`render NAME
+// VALUE`), registered by that lesson (Registry<RenderParameter>, keyed by NAME), as camera models
+// are. The loader refuses an unregistered name and a value `check` refuses, naming the line, and
+// keeps the value in RenderSettings::parameters; the algorithm reads it with renderParameter.
+struct RenderParameter {
+    std::string help;  // one line: what it sets, for the loader's list of allowed options
+    // Empty if the value is allowed, else what is wrong with it ("must be a positive number").
+    std::string (*check)(float value) = nullptr;
+};
+
+// The largest image a scene may ask for: each side at most kMaxResolution, and at most
+// kMaxPixels pixels in all. A render keeps state per pixel, measured with /usr/bin/time on the
+// Cornell spheres at 512^2 and 1024^2: about 60 bytes for pt and the first-hit views (the film's
+// double sums and an iteration's image), 126 for lt and bpt (splat lists), 230-250 for pm and
+// pssmlt, 510 for pt-adrrs, 720-730 for mmlt and ppm (scenes/README.md, "Memory"): at
+// kMaxPixels every algorithm fits in 4 GiB (the grader's limit of a process).
+constexpr int kMaxResolution = 16384;
+constexpr long long kMaxPixels = 1LL << 22;  // 4,194,304: 2048 x 2048, 4096 x 1024
+
 // Defaults a scene file may set; the command line overrides them.
 struct RenderSettings {
     int spp = 16;
@@ -34,6 +54,9 @@ struct RenderSettings {
     // makes `shots` shooting steps.
     int elements[2] = {8, 8};
     int shots = 256;
+    // The render parameters the scene sets (`render NAME VALUE` for a registered NAME; see
+    // RenderParameter below), by name.
+    std::map<std::string, float> parameters;
     // Integrators leave out work the capabilities show cannot contribute (Integrator::leftOut);
     // false (`--no-prune`) makes them do all of it, to check that pruning changes nothing.
     bool prune = true;
@@ -41,6 +64,9 @@ struct RenderSettings {
     // non-specular surface it shades as ambient times the albedo. 0: none.
     Color ambient = Color(0.0f);
 };
+
+// The value the scene sets for render parameter `name`, or `fallback` if it sets none.
+float renderParameter(const RenderSettings& settings, const std::string& name, float fallback);
 
 // What a scene has, recorded at load time so integrators can leave out what it does not need.
 struct Capabilities {
@@ -71,6 +97,9 @@ struct Quad {
 class Scene {
 public:
     std::string path;  // the scene file, for messages
+    // The files it was read from: the scene file (loadScene), then its meshes and their material
+    // libraries, in the order named. The program's commands never write over any of them.
+    std::vector<std::string> inputFiles;
     Camera camera;
     RenderSettings settings;
     std::vector<Material> materials;
@@ -108,11 +137,12 @@ public:
     Ray spawnRayTo(const SurfacePoint& sp, const SurfacePoint& q) const;
     // A shadow ray from sp to a point not on a surface (a point light, the pinhole).
     Ray spawnRayTo(const SurfacePoint& sp, const Vec3& q) const;
-    // All three treat a point light that lies on a surface (Light::surfaceScale > 0) as a point
-    // of that surface: as origin (sp.light is the light) and as target (q is its position), the
-    // ray is offset off the surface to its own side, so it never hits that surface at t ~ 0
-    // (float rounding makes the watertight test's t of an origin in a triangle's plane a
-    // random +-ulps, which would scatter or block the light at its own position).
+    // All three treat a point light that lies on surfaces (Light::surfaceScale > 0) as a point
+    // in each of their planes: as origin (sp.light is the light) and as target (q is its
+    // position), the ray's end is offset off every one of those planes to the side the ray goes
+    // to (lightRayPoint), so it never hits them at t ~ 0 (float rounding makes the watertight
+    // test's t of an origin in a triangle's plane a random +-ulps, which would scatter or block
+    // the light at its own position).
     std::vector<int> surfacePointLights;  // indices of such lights (finalize)
 
     // Light index for u in [0,1) and its probability.
@@ -142,8 +172,8 @@ private:
     bool anyHit(const Ray& ray) const;
     bool closestHitAvx2(Ray& ray, SurfacePoint& sp) const;
     bool anyHitAvx2(const Ray& ray) const;
-    // sp itself, or for a point light lying on a surface the point rays leave it from.
-    const SurfacePoint& rayEnd(const SurfacePoint& sp, SurfacePoint& storage) const;
+    // The light sp stands for if it is a point light lying on a surface (surfaceScale > 0), else nullptr.
+    const Light* surfaceLight(const SurfacePoint& sp) const;
     void findSurfacePointLights();
 };
 

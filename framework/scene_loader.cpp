@@ -231,8 +231,14 @@ private:
         const int h = Statement::toInt(st, res[1], "'resolution' (height)");
         if (!(fov > 0.0f && fov < 180.0f))
             st.fail("'fov' must be between 0 and 180 degrees (exclusive), got " + st.options.at("fov")[0]);
-        if (w < 1 || h < 1 || w > 16384 || h > 16384)
-            st.fail("'resolution' must be between 1 and 16384 pixels in each direction, got " + res[0] + " " + res[1]);
+        if (w < 1 || h < 1 || w > kMaxResolution || h > kMaxResolution)
+            st.fail("'resolution' must be between 1 and " + std::to_string(kMaxResolution) +
+                    " pixels in each direction, got " + res[0] + " " + res[1]);
+        if (static_cast<long long>(w) * h > kMaxPixels)
+            st.fail("'resolution' " + res[0] + " " + res[1] + " is " + std::to_string(static_cast<long long>(w) * h) +
+                    " pixels, more than the " + std::to_string(kMaxPixels) +
+                    " (2048 x 2048) a render may have: some algorithms keep 750 bytes per pixel, and the largest "
+                    "image must fit in 4 GiB (scenes/README.md, 'Memory')");
         if (!(glm::length(target - eye) > 0.0f)) st.fail("'eye' and 'target' are the same point");
         const Vec3 f = glm::normalize(target - eye);
         if (!(glm::length(glm::cross(f, up)) > 1e-6f * glm::length(up)))
@@ -427,7 +433,8 @@ private:
         const std::string meshOf = " (mesh of " + path_ + ":" + std::to_string(st.line) + ")";
         // Our own pass first: tinyobjloader reads malformed numbers as 0 and drops short faces
         // without a word; this reports them, and gives each face its line for later messages.
-        const std::vector<int> faceLines = scanObj(objPath, meshOf);
+        scene_.inputFiles.push_back(objPath);
+        const std::vector<int> faceLines = scanObj(objPath, meshOf, scene_.inputFiles);
 
         tinyobj::attrib_t attrib;
         std::vector<tinyobj::shape_t> shapes;
@@ -459,6 +466,8 @@ private:
             Material m;
             m.name = file + ":" + tm.name;
             m.kind = BSDFKind::Diffuse;
+            // Kd is in [0, 1] (scanMtl refuses anything else); the clamp only guards against a
+            // reading of tinyobjloader's that differs from ours.
             m.albedo = glm::clamp(Color(tm.diffuse[0], tm.diffuse[1], tm.diffuse[2]), 0.0f, 1.0f);
             const int mi = static_cast<int>(scene_.materials.size());
             scene_.materials.push_back(m);
@@ -513,7 +522,9 @@ private:
 
     // Checks what tinyobjloader lets pass (a 'v' line's numbers, a face's vertex count and
     // indices) and returns the line numbers of the OBJ's faces, in order, for later messages.
-    static std::vector<int> scanObj(const std::string& objPath, const std::string& meshOf) {
+    // The material libraries it names are added to `files`.
+    static std::vector<int> scanObj(const std::string& objPath, const std::string& meshOf,
+                                    std::vector<std::string>& files) {
         std::vector<int> lines;
         std::ifstream in(objPath);
         std::string s;
@@ -530,8 +541,10 @@ private:
                         fail("malformed or non-finite vertex coordinate '" + tok[k] + "'");
                 }
             } else if (tok[0] == "mtllib") {
-                for (size_t k = 1; k < tok.size(); ++k)
-                    scanMtl(folderOf(objPath) + tok[k], " (material library of " + objPath + ")" + meshOf);
+                for (size_t k = 1; k < tok.size(); ++k) {
+                    files.push_back(folderOf(objPath) + tok[k]);
+                    scanMtl(files.back(), " (material library of " + objPath + ")" + meshOf);
+                }
             } else if (tok[0] == "f") {
                 if (tok.size() < 4)
                     fail("face with " + std::to_string(tok.size() - 1) + " vertices (a face needs at least 3)");
@@ -604,7 +617,10 @@ private:
     }
 
     void render(Statement& st) {
-        st.readOptions({{"spp", 1}, {"maxdepth", 1}, {"algo", 1}, {"ambient", 3}, {"elements", 2}, {"shots", 1}});
+        std::map<std::string, int> arity{{"spp", 1},     {"maxdepth", 1}, {"algo", 1},
+                                         {"ambient", 3}, {"elements", 2}, {"shots", 1}};
+        for (const auto& p : Registry<RenderParameter>::sorted()) arity[p.name] = 1;
+        st.readOptions(arity);
         RenderSettings& s = scene_.settings;
         if (st.has("ambient")) s.ambient = checkColor(st, "ambient", st.optVec3("ambient", Color(0.0f)), false);
         if (st.has("elements")) {
@@ -618,6 +634,13 @@ private:
         }
         s.shots = st.optInt("shots", s.shots);
         if (s.shots < 1) st.fail("'shots' must be at least 1");
+        for (const auto& p : Registry<RenderParameter>::sorted()) {
+            if (!st.has(p.name)) continue;
+            const float v = st.optNumber(p.name, 0.0f);
+            const std::string problem = p.value.check ? p.value.check(v) : std::string();
+            if (!problem.empty()) st.fail("'" + p.name + "' " + problem + ", got " + st.options.at(p.name)[0]);
+            s.parameters[p.name] = v;
+        }
         s.spp = st.optInt("spp", s.spp);
         s.maxDepth = st.optInt("maxdepth", s.maxDepth);
         s.algo = st.optWord("algo", s.algo);
@@ -638,6 +661,7 @@ private:
 Scene parseScene(const std::string& text, const std::string& path) {
     Scene scene;
     scene.path = path;
+    scene.inputFiles = {path};
     Loader(scene, path).run(text);
     scene.finalize();
     return scene;

@@ -89,12 +89,14 @@ std::vector<bool> leftOutMask(const Scene& scene, const std::vector<PointLightPi
 ConvergenceReport runConvergence(const Scene& scene, const Image& reference, const ConvergeOptions& opt) {
     ConvergenceReport report;
     report.leftOut = pointLightsInView(scene);
+    report.clock = opt.clock;
     const std::vector<bool> leftOut = leftOutMask(scene, report.leftOut);
     for (const std::string& algo : opt.algos) {
         for (int seed = 0; seed < opt.seeds; ++seed) {
             auto integrator = makeIntegrator(algo, opt.options);
             RenderOptions ro;
             ro.seconds = opt.seconds;
+            ro.clock = opt.clock;
             ro.spp = opt.spp;
             ro.seed = static_cast<uint64_t>(seed);
             ro.threads = opt.threads;
@@ -237,9 +239,9 @@ std::string convergencePlotSvg(const std::string& title, const ConvergenceReport
     }
     std::snprintf(
         buf, sizeof buf,
-        "<text x=\"%.1f\" y=\"%.1f\" text-anchor=\"middle\">seconds</text>\n"
+        "<text x=\"%.1f\" y=\"%.1f\" text-anchor=\"middle\">%s</text>\n"
         "<text x=\"18\" y=\"%.1f\" text-anchor=\"middle\" transform=\"rotate(-90 18 %.1f)\">relMSE (eps = 0.01)</text>\n",
-        (X(x0) + X(x1)) / 2, H - 20, (Y(y0) + Y(y1)) / 2, (Y(y0) + Y(y1)) / 2);
+        (X(x0) + X(x1)) / 2, H - 20, clockUnit(report.clock), (Y(y0) + Y(y1)) / 2, (Y(y0) + Y(y1)) / 2);
     os << buf;
     // Slope -1 guide through the middle of the plot: error proportional to 1 / time.
     {
@@ -280,7 +282,8 @@ std::string efficiencyTable(const ConvergenceReport& report) {
     std::sort(curves.begin(), curves.end(),
               [&](const Curve& a, const Curve& b) { return efficiency(a.last) > efficiency(b.last); });
     std::ostringstream os;
-    os << "| algorithm | spp | seconds | relMSE | relMSE without top 0.1 % | efficiency 1/(relMSE s) | NaN | Inf |\n"
+    os << "| algorithm | spp | " << (report.clock == TimeClock::Cpu ? "CPU seconds" : "seconds")
+       << " | relMSE | relMSE without top 0.1 % | efficiency 1/(relMSE s) | NaN | Inf |\n"
           "|---|---:|---:|---:|---:|---:|---:|---:|\n";
     char line[512];
     for (const Curve& c : curves) {

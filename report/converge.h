@@ -52,6 +52,7 @@ struct ConvergeOptions {
     Regions regions;       // empty: no per-region errors
     int seeds = 1;         // independent runs per algorithm (seeds 0 .. seeds-1), averaged
     int threads = 0;
+    TimeClock clock = TimeClock::Wall;  // the clock of `seconds` and of every time reported
     bool progress = false;
     // Algorithm options (integrator.h, e.g. --paths EXPR) every algorithm is made with
     // (makeIntegrator(algo, options)); empty: none.
@@ -73,6 +74,7 @@ struct ConvergenceReport {
     std::vector<Image> finalImages;        // per algorithm, seed 0, at the end of the budget
     double referenceVariance = 0.0;        // mean variance of the reference's pixels (0 if unknown)
     std::vector<PointLightPixel> leftOut;  // pixels left out of every error (pointLightsInView)
+    TimeClock clock = TimeClock::Wall;     // the clock of every point's seconds
 };
 
 ConvergenceReport runConvergence(const Scene& scene, const Image& reference, const ConvergeOptions& opt);

@@ -54,13 +54,10 @@ CompareOptions parseCompareOptions(const std::vector<std::string>& args) {
     // Every file this run writes, checked before an image is read (command.h); no input is ever
     // overwritten by an output.
     const std::string pfm = stem(o.out) + ".pfm";
-    checkOutputFiles({{"--out", o.out, {".png"}}, {"--out", pfm, {".pfm"}}});
-    for (const std::string& in : {o.a, o.b, o.varianceA, o.varianceB}) {
-        std::error_code ec;
-        for (const std::string& written : {o.out, pfm})
-            if (!in.empty() && std::filesystem::equivalent(in, written, ec))
-                throw UsageError("option --out '" + o.out + "' would overwrite the input '" + in + "'");
-    }
+    std::vector<InputFile> inputs = {{"image A", o.a, ""}, {"image B", o.b, ""}};
+    if (!o.varianceA.empty()) inputs.push_back({"the variance of A", o.varianceA, "--variance-a"});
+    if (!o.varianceB.empty()) inputs.push_back({"the variance of B", o.varianceB, "--variance-b"});
+    checkOutputFiles({{"--out", o.out, {".png"}}, {"--out", pfm, {".pfm"}}}, inputs);
     return o;
 }
 
@@ -73,10 +70,11 @@ std::string number(double v) {
 std::string colorText(const Color& c) { return number(c.r) + " " + number(c.g) + " " + number(c.b); }
 
 int runCompare(const CompareOptions& o) {
-    const Image a = readImage(o.a), b = readImage(o.b);
+    // B and the variances must have A's size: compared from their headers, before their pixels.
+    const Image a = readImage(o.a), b = readImage(o.b, a.width, a.height);
     Image va, vb;
-    if (!o.varianceA.empty()) va = readImage(o.varianceA);
-    if (!o.varianceB.empty()) vb = readImage(o.varianceB);
+    if (!o.varianceA.empty()) va = readImage(o.varianceA, a.width, a.height);
+    if (!o.varianceB.empty()) vb = readImage(o.varianceB, a.width, a.height);
     const ImageComparison c = compareImages(a, b, &va, &vb, o.alpha);
 
     std::cout << "A: " << o.a << " (" << c.width << "x" << c.height << "), mean r g b " << colorText(c.meanA) << "\n"

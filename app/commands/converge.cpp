@@ -3,12 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <optional>
 #include <sstream>
 #include "command.h"
 #include "errors.h"
+#include "file_writer.h"
 #include "image.h"
 #include "integrator.h"
 #include "render.h"
@@ -22,6 +22,9 @@ namespace {
 const char* const kUsage = R"(converge options:
   --algos A,B,...    the algorithms to compare (required)
   --time SECONDS     time budget of each algorithm (and seed)
+  --clock C          the clock of --time, --ref-time and every time in the report: wall
+                     (default), or cpu: the CPU time of the process, all threads added up
+                     (fairer on a machine that other jobs share); the report names it
   --spp N            samples per pixel of each algorithm (and seed): equal samples instead
                      of equal time (with --time too: whichever comes first); one is required
   --reference REF    the reference image (.pfm); without it one is rendered first with
@@ -44,15 +47,6 @@ A pixel in which a point light is seen directly is left out of every algorithm's
 tracer cannot sample that path: both ends are delta positions); the report says which.
 )";
 
-// The whole of text into path, else InputError (a full disk must not pass silently).
-void writeText(const std::string& path, const std::string& text) {
-    std::ofstream f(path, std::ios::binary);
-    if (!f) throw InputError(path, 0, "cannot open for writing");
-    f << text;
-    f.close();
-    if (!f) throw InputError(path, 0, "write failed");
-}
-
 // What the command line asks for (parseConverge), before anything is loaded.
 struct ConvergeArgs {
     std::string scenePath, reference, refAlgo, outDir;
@@ -61,6 +55,7 @@ struct ConvergeArgs {
     double refSeconds = 0.0;
     int maxDepth = -1;
     bool prune = true;
+    std::vector<std::string> files;  // what it writes into outDir, checked (command.h)
 };
 
 ConvergeArgs parseConverge(const std::vector<std::string>& args) {
@@ -73,6 +68,7 @@ ConvergeArgs parseConverge(const std::vector<std::string>& args) {
         auto value = [&]() -> std::string { return optionValue(args, i); };
         if (a == "--algos") opt.algos = splitList(value());
         else if (a == "--time") opt.seconds = parsePositive(a, value());
+        else if (a == "--clock") opt.clock = parseClockOption(value());
         else if (a == "--spp") opt.spp = parseAtLeast<int>(a, value(), 1);
         else if (a == "--regions") c.regionNames = splitList(value());
         else if (a == "--reference") c.reference = value();
@@ -104,7 +100,10 @@ ConvergeArgs parseConverge(const std::vector<std::string>& args) {
                                       "equal-time.pfm"};
     if (c.reference.empty()) files.insert(files.end(), {"reference.pfm", "reference-variance.pfm"});
     if (!c.regionNames.empty()) files.push_back("regions.md");
-    checkOutputFolder("--out", c.outDir, files);
+    std::vector<InputFile> inputs = {{"the scene file", c.scenePath, ""}};
+    if (!c.reference.empty()) inputs.push_back({"the reference image", c.reference, "--reference"});
+    checkOutputFolder("--out", c.outDir, files, inputs);
+    c.files = files;
     return c;
 }
 
@@ -117,6 +116,11 @@ int runConverge(ConvergeArgs c) {
     std::string& refAlgo = c.refAlgo;
     const std::string name = stem(baseName(scenePath));
     Scene scene = loadScene(scenePath);
+    {
+        std::vector<OutputFile> outputs;
+        for (const std::string& f : c.files) outputs.push_back({"--out", outDir + "/" + f, {}});
+        checkNotInputs(outputs, sceneInputs(scene));  // its meshes and material libraries
+    }
     if (c.maxDepth >= 0) scene.settings.maxDepth = c.maxDepth;
     if (!regionNames.empty()) {
         try {
@@ -126,6 +130,8 @@ int runConverge(ConvergeArgs c) {
     scene.settings.prune = c.prune;
     for (const std::string& a : opt.algos) checkScene(scene, *makeAlgorithm(a, opt.options));  // e.g. a camera model
     if (reference.empty() && !refAlgo.empty()) checkScene(scene, *makeAlgorithm(refAlgo, opt.options));  // the same
+    Image ref, refVariance;
+    if (!reference.empty()) ref = readReference(reference, scene);  // its size before its pixels, then finite
     for (const std::string& a : opt.algos) printLeftOut(a, *makeAlgorithm(a, opt.options), scene);
     const std::vector<PointLightPixel> leftOut = pointLightsInView(scene);
     for (const PointLightPixel& p : leftOut) std::cerr << "pathspace: " << describe(p) << "\n";
@@ -133,16 +139,12 @@ int runConverge(ConvergeArgs c) {
     std::filesystem::create_directories(outDir, ec);
     if (!std::filesystem::is_directory(outDir, ec)) throw InputError(outDir, 0, "cannot create the output folder");
 
-    Image ref, refVariance;
-    if (!reference.empty()) {
-        ref = readImage(reference);
-        if (ref.width != scene.camera.width() || ref.height != scene.camera.height())
-            throw InputError(reference, 0, "reference size differs from the scene's resolution");
-    } else {
+    if (reference.empty()) {
         if (refAlgo.empty()) refAlgo = opt.algos[0];
         auto integrator = makeAlgorithm(refAlgo, opt.options);
         RenderOptions ro;
         ro.seconds = c.refSeconds > 0.0 ? c.refSeconds : 10.0 * opt.seconds;
+        ro.clock = opt.clock;
         ro.seed = 1000003;  // independent of the compared runs (seeds 0 .. K-1)
         ro.threads = opt.threads;
         ro.progress = opt.progress;
@@ -156,19 +158,22 @@ int runConverge(ConvergeArgs c) {
     }
 
     const ConvergenceReport report = runConvergence(scene, ref, opt);
-    writeText(outDir + "/convergence.csv", convergenceCsv(name, report));
-    writeText(
+    writeFile(outDir + "/convergence.csv", convergenceCsv(name, report));
+    writeFile(
         outDir + "/convergence.svg",
         convergencePlotSvg(name + ": relMSE against render time (" + std::to_string(opt.seeds) + " seed(s))", report));
     const std::string table = efficiencyTable(report);
     std::ostringstream budget;
-    if (opt.seconds > 0.0) budget << opt.seconds << " s";
+    if (opt.seconds > 0.0) budget << opt.seconds << (opt.clock == TimeClock::Cpu ? " CPU s" : " s");
     if (opt.spp > 0) budget << (opt.seconds > 0.0 ? " or " : "") << opt.spp << " spp";
     std::ostringstream md;
-    md << "Efficiency on " << name << " at " << budget.str() << " per algorithm (relMSE with eps = 0.01):\n\n" << table;
+    md << "Efficiency on " << name << " at " << budget.str() << " per algorithm (relMSE with eps = 0.01; time in "
+       << clockUnit(opt.clock) << ", " << (opt.threads > 0 ? std::to_string(opt.threads) : std::string("all"))
+       << " thread(s)):\n\n"
+       << table;
     if (!report.leftOut.empty()) md << "\n";
     for (const PointLightPixel& p : report.leftOut) md << "Note: " << describe(p) << ".\n";
-    writeText(outDir + "/efficiency.md", md.str());
+    writeFile(outDir + "/efficiency.md", md.str());
     std::vector<Image> images = report.finalImages;
     images.push_back(ref);
     // The PNG says what each image is (algorithm and samples per pixel at the end of the budget,
@@ -186,7 +191,7 @@ int runConverge(ConvergeArgs c) {
     std::cout << table;
     if (!regionNames.empty()) {
         const std::string regions = regionTable(report, opt.regions);
-        writeText(outDir + "/regions.md", "relMSE (eps = 0.01) of each region of " + name +
+        writeFile(outDir + "/regions.md", "relMSE (eps = 0.01) of each region of " + name +
                                               " (the pixels that see each material) at the end of the run:\n\n" +
                                               regions);
         std::cout << "\n" << regions;

@@ -9,8 +9,9 @@ namespace {
 
 const char* const kExitStatus = R"(exit status: 0 on success, 1 on bad input (the message names file, line and problem),
 2 on a bad command line: an unknown option, a number out of range (NaN and Inf never pass),
-or an output path that cannot be written (missing folder, a folder, an unknown extension);
-every output path is checked before anything is loaded or rendered.
+or an output path that cannot be written (missing folder, a folder, an unknown extension)
+or that is one of the command's inputs (the scene, its meshes, the reference: no output
+overwrites an input); every output path is checked before anything is rendered.
 )";
 
 constexpr size_t kSummaryColumn = 37, kWidth = 96;

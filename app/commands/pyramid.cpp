@@ -4,6 +4,7 @@
 // per path length, centred; the algorithm says which cells a row has.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <iostream>
 #include "command.h"
 #include "image.h"
@@ -44,7 +45,33 @@ struct PyramidArgs {
     AlgorithmOptions options;
     std::unique_ptr<Integrator> integrator;
     std::vector<TechniqueRow> layout;
+    std::vector<OutputFile> outputs;  // every file it writes, checked (command.h)
 };
+
+// The memory a pyramid takes (scenes/README.md, 'Memory'): each cell keeps its unweighted and
+// weighted images with their sums, about 90 bytes per pixel (peak memory, /usr/bin/time, 256 x 256
+// pixels, bpt: 17, 107 and 556 MB for --max-length 1, 4 and 12, i.e. 3, 18 and 102 cells), on top
+// of the algorithm's own (bpt: 126 bytes per pixel). A pyramid that would take more than the
+// budget every render keeps within is refused before anything is rendered. The estimate is on the
+// safe side (2048 x 2048, --max-length 1: 0.77 GB measured, 1.8 GB estimated).
+constexpr double kCellBytesPerPixel = 100.0;       // measured 83 to 91, rounded up
+constexpr double kAlgorithmBytesPerPixel = 130.0;  // bpt's 126 (the algorithms with per-technique images)
+constexpr double kMemoryBudget = 3.0 * double(1u << 30);
+
+void checkPyramidMemory(const PyramidArgs& p, const Scene& scene) {
+    size_t cells = 0;
+    for (const TechniqueRow& row : p.layout) cells += row.cells.size();
+    const double pixels = double(scene.camera.width()) * scene.camera.height();
+    const double bytes = pixels * (kAlgorithmBytesPerPixel + kCellBytesPerPixel * double(cells));
+    if (bytes <= kMemoryBudget) return;
+    char need[32];
+    std::snprintf(need, sizeof need, "%.1f", bytes / double(1u << 30));
+    throw UsageError("option --max-length " + std::to_string(p.images.maxLength) + ": " + std::to_string(cells) +
+                     " technique images of " + std::to_string(scene.camera.width()) + " x " +
+                     std::to_string(scene.camera.height()) + " pixels need about " + need +
+                     " GiB, more than the 3 GiB a render may take (scenes/README.md, 'Memory'): lower --max-length "
+                     "or the scene's resolution");
+}
 
 PyramidArgs parsePyramid(const std::vector<std::string>& args) {
     PyramidArgs p;
@@ -83,15 +110,18 @@ PyramidArgs parsePyramid(const std::vector<std::string>& args) {
             outputs.push_back({"--out", p.out + "-" + cell.name + ".pfm", {".pfm"}});
             outputs.push_back({"--out", p.out + "-" + cell.name + "-weighted.pfm", {".pfm"}});
         }
-    checkOutputFiles(outputs);
+    checkOutputFiles(outputs, {{"the scene file", p.scenePath, ""}});
+    p.outputs = outputs;
     return p;
 }
 
 int runPyramid(PyramidArgs p) {
     Scene scene = loadScene(p.scenePath);
+    checkNotInputs(p.outputs, sceneInputs(scene));  // its meshes and material libraries
     scene.settings.prune = p.prune;
     if (p.images.spp == 0) p.images.spp = scene.settings.spp;
     checkScene(scene, *p.integrator);
+    checkPyramidMemory(p, scene);
     for (const std::string& line : p.integrator->leftOut(scene))
         std::cerr << "pathspace: pyramid leaves out " << line << "\n";
     const TechniquePyramid t = p.integrator->techniques.render(scene, p.images);

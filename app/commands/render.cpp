@@ -1,12 +1,12 @@
 // pathspace render SCENE [options]: one image with one integrator, progressively (framework/render.h).
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <iostream>
 #include <memory>
 #include <optional>
 #include "command.h"
 #include "errors.h"
+#include "file_writer.h"
 #include "image.h"
 #include "integrator.h"
 #include "render.h"
@@ -20,6 +20,9 @@ const char* const kUsage = R"(render options:
   --spp N            iterations (samples per pixel) to render (default: the scene's)
   --time SECONDS     stop after this much render time instead (with --spp: whichever first);
                      a positive finite number
+  --clock C          the clock of --time and of the time printed: wall (default), or cpu:
+                     the CPU time of the process, all threads added up (fairer on a machine
+                     that other jobs share; with T threads busy, T CPU s per second)
   --maxdepth D       maximum number of bounces, 0 = emission seen directly (default: the scene's)
   --seed S           random seed (default 0); the same seed gives the same image
   --threads T        worker threads, 1 to 1024 (default: all cores); the image does not
@@ -45,10 +48,12 @@ struct RenderArgs {
     std::string scenePath, algo, out, reference, csvPath, variancePath;
     int spp = 0, threads = 0, maxDepth = -1, shots = 0, elements[2] = {0, 0};
     double seconds = 0.0;
+    TimeClock clock = TimeClock::Wall;
     uint64_t seed = 0;
     bool progress = false, prune = true;
     AlgorithmOptions options;  // --paths EXPR and the like (integrator.h)
     std::optional<Color> ambient;
+    std::vector<OutputFile> outputs;  // every file it writes, checked (command.h)
 };
 
 RenderArgs parseRender(const std::vector<std::string>& args) {
@@ -60,6 +65,7 @@ RenderArgs parseRender(const std::vector<std::string>& args) {
         if (a == "--algo") r.algo = value();
         else if (a == "--spp") r.spp = parseAtLeast<int>(a, value(), 1);
         else if (a == "--time") r.seconds = parsePositive(a, value());
+        else if (a == "--clock") r.clock = parseClockOption(value());
         else if (a == "--maxdepth") r.maxDepth = parseAtLeast<int>(a, value(), 0);
         else if (a == "--seed") r.seed = parseNumber<uint64_t>(a, value());
         else if (a == "--threads") r.threads = parseWithin<int>(a, value(), 1, kMaxThreads);
@@ -95,12 +101,16 @@ RenderArgs parseRender(const std::vector<std::string>& args) {
         if (r.csvPath.empty()) r.csvPath = stem(r.out) + ".csv";
         outputs.push_back({"--csv", r.csvPath, {}});
     }
-    checkOutputFiles(outputs);
+    std::vector<InputFile> inputs = {{"the scene file", r.scenePath, ""}};
+    if (!r.reference.empty()) inputs.push_back({"the reference image", r.reference, "--reference"});
+    checkOutputFiles(outputs, inputs);
+    r.outputs = outputs;
     return r;
 }
 
 int runRender(RenderArgs r) {
     Scene scene = loadScene(r.scenePath);
+    checkNotInputs(r.outputs, sceneInputs(scene));  // its meshes and material libraries
     if (r.maxDepth >= 0) scene.settings.maxDepth = r.maxDepth;
     scene.settings.prune = r.prune;
     if (r.ambient) scene.settings.ambient = *r.ambient;
@@ -120,24 +130,19 @@ int runRender(RenderArgs r) {
     checkScene(scene, *integrator);  // a refusal (InputError) before anything is printed
 
     Image ref;
-    std::ofstream csv;
+    std::unique_ptr<FileStream> csv;  // the error log, written while the render runs
     RenderOptions opt;
     opt.spp = r.spp;
     opt.seconds = r.seconds;
+    opt.clock = r.clock;
     opt.seed = r.seed;
     opt.threads = r.threads;
     opt.progress = r.progress;
     if (!r.reference.empty()) {
-        ref = readImage(r.reference);
-        if (ref.width != scene.camera.width() || ref.height != scene.camera.height())
-            throw InputError(r.reference, 0,
-                             "reference is " + std::to_string(ref.width) + "x" + std::to_string(ref.height) +
-                                 " but the scene renders " + std::to_string(scene.camera.width()) + "x" +
-                                 std::to_string(scene.camera.height()));
-        csv.open(r.csvPath);
-        if (!csv) throw InputError(r.csvPath, 0, "cannot open for writing");
+        ref = readReference(r.reference, scene);  // the size before the pixels, then finite
+        csv = std::make_unique<FileStream>(r.csvPath);
         opt.reference = &ref;
-        opt.csv = &csv;
+        opt.csv = csv.get();
     }
     std::cerr << "pathspace: " << r.scenePath << " (" << scene.caps.describe() << "), algo " << r.algo;
     for (const auto& [name, value] : r.options) std::cerr << ", " << name << " '" << value << "'";
@@ -156,7 +161,10 @@ int runRender(RenderArgs r) {
         writePFM(r.variancePath, res.film.varianceOfMean());
         written += ", " + r.variancePath;
     }
-    if (opt.csv) written += ", " + r.csvPath;
+    if (csv) {
+        csv->close();
+        written += ", " + r.csvPath;
+    }
     std::cout << "pathspace: " << summaryLine(res) << "; wrote " << written << "\n";
     for (const std::string& line : integrator->report()) std::cout << "pathspace: " << r.algo << ": " << line << "\n";
     if (res.stats.bad() > 0)

@@ -20,9 +20,9 @@ TechniqueSample sampleTechnique(const Scene& scene, int k, int s, Rng& rng) {
         const int l = scene.selectLight(rng.uniform(), P);
         if (l < 0 || P <= 0.0f) return ts;
         // Named, in this order: C++ evaluates a call's arguments in no fixed order.
-        const Vec2 uPos = rng.uniform2();
-        const Vec2 uDir = rng.uniform2();
-        const EmissionSample e = sampleEmission(scene, l, uPos, uDir);
+        const Vec2 uPoint = rng.uniform2();
+        const Vec2 uDirection = rng.uniform2();
+        const EmissionSample e = sampleEmission(scene, l, uPoint, uDirection);
         if (!(e.pdfA > 0.0f && e.pdfW > 0.0f)) return ts;
         x[0] = lightVertex(scene, l, e);
         Ray ray = x[0].infinite ? Ray(e.p, e.dir) : scene.spawnRay(x[0].sp, e.dir);

@@ -272,8 +272,9 @@ double ppmRadius2(double r1sq, int pass, double alpha = kPpmAlpha);
 
 // One pass of the `ppm` integrator (ppm_integrator.cpp, plumbing): iteration k is pass k + 1, a
 // new global map of photon paths (tracePhotonMap, with `rules` if set) and one camera ray per
-// pixel through LiProgressive with the pass's radius (ppmRadius2, the first 3 % of the scene's
-// bounding radius), into out.
+// pixel through LiProgressive with the pass's radius (ppmRadius2; the first radius, the photon
+// paths per pass and alpha from the scene's render parameters ppmradius, ppmphotons, ppmalpha, or
+// their defaults), into out.
 void renderPpmPass(const Scene& scene, uint32_t iteration, uint64_t seed, Image& out, SampleStats& stats,
                    const PhotonRules& rules = {});
 

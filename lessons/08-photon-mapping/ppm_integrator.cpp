@@ -8,6 +8,7 @@
 // loop). README, section 1.9, says why this form and not Hachisuka and Jensen's per-pixel
 // statistics.
 #include <cmath>
+#include <string>
 #include "08-photon-mapping/photonmap.h"
 #include "tasks.h"
 
@@ -22,21 +23,45 @@ double ppmRadius2(double r1sq, int pass, double alpha) {
 namespace {
 
 // The first pass's radius, as a fraction of the scene's bounding radius, and the photon paths
-// traced per pass: four per pixel, at least kMinPhotons.
+// traced per pass: four per pixel, at least kMinPhotons. A scene may set both, and alpha, as
+// render parameters (`render ppmradius R ppmphotons N ppmalpha A`, scenes/README.md): SmallVCM's
+// scenes set SmallVCM's own, so that both renderers run the same algorithm (bench/README.md).
 constexpr float kInitialRadius = 0.03f;
 constexpr int kMinPhotons = 8192;
 constexpr uint64_t kPpmSalt = 0x6A09E667F3BCC909ull;
-int photonsPerPass(const Image& out) { return std::max(kMinPhotons, 4 * out.width * out.height); }
+int photonsPerPass(const Scene& scene, const Image& out) {
+    const float n = renderParameter(scene.settings, "ppmphotons", 0.0f);
+    return n > 0.0f ? int(n) : std::max(kMinPhotons, 4 * out.width * out.height);
+}
+
+[[maybe_unused]] const bool radiusRegistered = Registry<RenderParameter>::add(
+    "ppmradius", {"ppm's first radius in scene units (default: 0.03 of the scene's bounding radius)", [](float v) {
+                      return v > 0.0f && std::isfinite(v) ? std::string() : std::string("must be a positive number");
+                  }});
+[[maybe_unused]] const bool photonsRegistered = Registry<RenderParameter>::add(
+    "ppmphotons", {"ppm's photon paths per pass (default: four per pixel, at least 8192)", [](float v) {
+                       return v >= 1.0f && v <= 1e9f && v == std::floor(v)
+                                  ? std::string()
+                                  : std::string("must be a whole number of photon paths between 1 and 1e9");
+                   }});
+[[maybe_unused]] const bool alphaRegistered = Registry<RenderParameter>::add(
+    "ppmalpha", {"ppm's radius reduction alpha, Eq. 8.13 (default 2/3)", [](float v) {
+                     return v > 0.0f && v < 1.0f ? std::string() : std::string("must lie between 0 and 1 (exclusive)");
+                 }});
 
 }  // namespace
 
 void renderPpmPass(const Scene& scene, uint32_t iteration, uint64_t seed, Image& out, SampleStats& stats,
                    const PhotonRules& rules) {
-    const double r1 = double(kInitialRadius) * scene.radius;
-    const float r2 = float(ppmRadius2(r1 * r1, int(iteration) + 1));
-    const int maxDepth = scene.settings.maxDepth;
-    const PhotonMap map =
-        tracePhotonMap(scene, MapKind::Global, photonsPerPass(out), maxDepth, seed ^ kPpmSalt, iteration, stats, rules);
+    const RenderSettings& set = scene.settings;
+    // The defaults in double, as before the scenes could set them (the stored renders' bytes).
+    const float r1Set = renderParameter(set, "ppmradius", 0.0f), alphaSet = renderParameter(set, "ppmalpha", 0.0f);
+    const double r1 = r1Set > 0.0f ? double(r1Set) : double(kInitialRadius) * scene.radius;
+    const double alpha = alphaSet > 0.0f ? double(alphaSet) : kPpmAlpha;
+    const float r2 = float(ppmRadius2(r1 * r1, int(iteration) + 1, alpha));
+    const int maxDepth = set.maxDepth;
+    const PhotonMap map = tracePhotonMap(scene, MapKind::Global, photonsPerPass(scene, out), maxDepth, seed ^ kPpmSalt,
+                                         iteration, stats, rules);
     renderPixelTasks(seed, iteration, out, stats, false, [&](int pixel, Rng& rng, Task&) {
         const Ray ray = cameraRay(scene.camera, jitteredRaster(pixel, out.width, rng), rng);
         return LiProgressive(scene, ray, rng, map, r2, maxDepth);

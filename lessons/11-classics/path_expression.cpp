@@ -186,17 +186,43 @@ private:
 
 using StateSet = std::vector<int>;  // sorted NFA states
 
-StateSet closure(const Nfa& nfa, StateSet set) {
+// `work` counts the states and edges visited (the construction's budget, kMaxWork).
+StateSet closure(const Nfa& nfa, StateSet set, size_t& work) {
     std::vector<bool> in(nfa.states.size(), false);
     for (int s : set) in[size_t(s)] = true;
-    for (size_t i = 0; i < set.size(); ++i)
+    for (size_t i = 0; i < set.size(); ++i) {
+        work += 1 + nfa.states[size_t(set[i])].eps.size();
         for (int e : nfa.states[size_t(set[i])].eps)
             if (!in[size_t(e)]) {
                 in[size_t(e)] = true;
                 set.push_back(e);
             }
+    }
     std::sort(set.begin(), set.end());
     return set;
+}
+
+// The construction's budget: NFA states and edges visited by the subset construction, plus
+// states times rounds of the minimisation. An expression of kMaxLength characters builds an NFA
+// of up to a few thousand states, and its DFA, capped at 4096 states before minimising, could
+// take 10^8 such steps; the budget stops it at about 0.3 s ('L' then '.?' 490 times: the DFA has
+// 490 states, each a closure over most of the NFA). Expressions of a lesson take a few hundred.
+constexpr size_t kMaxWork = size_t(1) << 24;
+
+// Refused before parsing: too long, or groups nested too deep (one line, no expression shown).
+void checkSize(const std::string& text) {
+    if (text.size() > PathExpression::kMaxLength)
+        throw PathExpressionError("", std::string::npos,
+                                  "the expression is " + std::to_string(text.size()) + " characters long; at most " +
+                                      std::to_string(PathExpression::kMaxLength) + " are accepted");
+    int depth = 0;
+    for (size_t i = 0; i < text.size(); ++i) {
+        if (text[i] == ')') depth = std::max(0, depth - 1);
+        if (text[i] == '(' && ++depth > PathExpression::kMaxNesting)
+            throw PathExpressionError("", std::string::npos,
+                                      "groups nested more than " + std::to_string(PathExpression::kMaxNesting) +
+                                          " deep (the '(' at character " + std::to_string(i + 1) + ")");
+    }
 }
 
 }  // namespace
@@ -210,6 +236,7 @@ PathExpressionError::PathExpressionError(const std::string& expression_, size_t 
       column(column_) {}
 
 std::string PathExpressionError::pointed(const std::string& indent) const {
+    if (expression.empty() && column == std::string::npos) return problem;
     std::string s = problem + "\n" + indent + expression;
     if (column != std::string::npos) s += "\n" + indent + std::string(column, ' ') + "^";
     return s;
@@ -217,12 +244,21 @@ std::string PathExpressionError::pointed(const std::string& indent) const {
 
 PathExpression::PathExpression(const std::string& text) : text_(text) {
     // 1. Thompson's NFA.
+    checkSize(text);
     Nfa nfa;
     const Fragment whole = Parser(text, nfa).parse();
     const auto tooComplex = [&]() {
         throw PathExpressionError(
             text, std::string::npos,
             "the expression needs more than " + std::to_string(kMaxStates) + " automaton states: write it more simply");
+    };
+    size_t work = 0;
+    const auto spend = [&](size_t units) {
+        work += units;
+        if (work > kMaxWork)
+            throw PathExpressionError(text, std::string::npos,
+                                      "building the expression's automaton takes more than " +
+                                          std::to_string(kMaxWork) + " steps: write it more simply");
     };
 
     // 2. The subset construction (Eq. 11.3): a DFA state is the set of NFA states the NFA can be
@@ -239,7 +275,7 @@ PathExpression::PathExpression(const std::string& text) : text_(text) {
         next.emplace_back(kVertexTypes, -1);
         return int(sets.size()) - 1;
     };
-    find(closure(nfa, {whole.in}));
+    find(closure(nfa, {whole.in}, work));
     for (size_t d = 0; d < sets.size(); ++d)
         for (int t = 0; t < kVertexTypes; ++t) {
             StateSet moved;
@@ -247,7 +283,9 @@ PathExpression::PathExpression(const std::string& text) : text_(text) {
                 const Nfa::State& ns = nfa.states[size_t(s)];
                 if (ns.to >= 0 && (ns.on & (1u << unsigned(t)))) moved.push_back(ns.to);
             }
-            next[d][size_t(t)] = find(closure(nfa, moved));
+            size_t used = sets[d].size();
+            next[d][size_t(t)] = find(closure(nfa, moved, used));
+            spend(used);
         }
     const size_t n = sets.size();
     std::vector<bool> accepting(n);
@@ -258,6 +296,7 @@ PathExpression::PathExpression(const std::string& text) : text_(text) {
     std::vector<int> cls(n);
     for (size_t d = 0; d < n; ++d) cls[d] = accepting[d] ? 1 : 0;
     for (size_t classes = 0;;) {
+        spend(n * (kVertexTypes + 1));
         std::map<std::vector<int>, int> signature;
         std::vector<int> refined(n);
         for (size_t d = 0; d < n; ++d) {

@@ -50,6 +50,7 @@ public:
     //   the '(' is never closed
     //     L(D|S*E
     //      ^
+    // (only the problem when the error holds neither expression nor column: one too long to show)
     std::string pointed(const std::string& indent = "  ") const;
 };
 
@@ -58,9 +59,15 @@ public:
     using State = uint8_t;
     // A state fits in a byte (lesson 11's photons keep theirs in one).
     static constexpr int kMaxStates = 255;
+    // Refused before any work: a longer expression, or groups nested deeper (the parser recurses
+    // once per level). Heckbert's expressions are a few dozen characters.
+    static constexpr size_t kMaxLength = 1000;
+    static constexpr int kMaxNesting = 64;
 
     // Compiles text; throws PathExpressionError for a malformed expression, for one that matches
-    // no path L (D|G|S)* E at all, and for one whose automata need more than kMaxStates states.
+    // no path L (D|G|S)* E at all, for one longer than kMaxLength or nested deeper than
+    // kMaxNesting, and for one whose automata need more than kMaxStates states (or whose
+    // construction would take more than a bounded amount of work on the way).
     explicit PathExpression(const std::string& text);
     const std::string& text() const { return text_; }
 

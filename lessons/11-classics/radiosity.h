@@ -115,12 +115,15 @@ inline int formFactorSamples(int elements) {
 // element i shoots. F_ij = 0 without a ray where it is 0 exactly: j on i's own quad (a quad is
 // flat), or j wholly behind i's plane, or i wholly behind j's. `back` is the fraction of the
 // power leaving i that arrives at the back of a reflecting quad, which one-sided elements lose
-// (estimated with 4 kFormFactorSamples cosine rays from i). stats counts the rays.
+// (estimated with 4 kFormFactorSamples cosine rays from i). stats counts the rays. With a
+// `stop` that says true while the row is computed (the render's time is up), the row is
+// abandoned: F comes back empty.
 struct FormFactorRow {
     std::vector<float> F;
     float back = 0.0f;
 };
-FormFactorRow formFactorRow(const Scene& scene, const ElementMesh& mesh, int i, uint64_t seed, SampleStats& stats);
+FormFactorRow formFactorRow(const Scene& scene, const ElementMesh& mesh, int i, uint64_t seed, SampleStats& stats,
+                            const Integrator* stop = nullptr);
 
 // ---------------------------------------------------------------------------------------------
 // (b) Progressive refinement: the shooting iteration (shooting.cpp; Eq. 11.27, 11.28).
@@ -189,7 +192,9 @@ public:
                          SampleStats& stats) override;
     std::vector<std::string> report() const override;
 
-    // Shooting steps until `shots` more are made or the residual is below kStopResidual.
+    // Shooting steps until `shots` more are made or the residual is below kStopResidual, or the
+    // render's time is up (timeIsUp: checked before each step and while a row of form factors
+    // is computed; a row not finished is dropped, so every step made is whole).
     void shootSteps(const Scene& scene, int shots, uint64_t seed, SampleStats& stats);
     // The radiance an element shows: B / pi, plus rho ambient / pi with the ambient term.
     Color radiance(int element) const;
@@ -204,6 +209,7 @@ private:
     std::vector<FormFactorRow> rows_;  // the rows computed so far (empty: not yet, or not kept)
     size_t keptFloats_ = 0;
     uint64_t rowsComputed_ = 0;
+    int cutIterations_ = 0;   // iterations that ended early at the time budget
     double backPower_ = 0.0;  // power shot onto the backs of reflecting quads (lost)
     double shotPower_ = 0.0;  // power shot in all
 };

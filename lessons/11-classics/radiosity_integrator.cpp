@@ -16,6 +16,7 @@
 // draws from taskRng(seed, i, j) only). So the solution, and the image, are the same for any
 // number of threads.
 #include <algorithm>
+#include <atomic>
 #include <cstdio>
 #include <sstream>
 #include "11-classics/radiosity.h"
@@ -38,16 +39,24 @@ bool behind(const Element& b, const Element& a) {
 }
 }  // namespace
 
-FormFactorRow formFactorRow(const Scene& scene, const ElementMesh& mesh, int i, uint64_t seed, SampleStats& stats) {
+FormFactorRow formFactorRow(const Scene& scene, const ElementMesh& mesh, int i, uint64_t seed, SampleStats& stats,
+                            const Integrator* stop) {
     FormFactorRow row;
     row.F.assign(size_t(mesh.size()), 0.0f);
     const Element& ei = mesh[i];
     const int samples = formFactorSamples(mesh.size());
+    std::atomic<bool> stopped{false};
     runTasks(TaskLoop(mesh.size(), seed, uint32_t(i)), stats, [&](int j, Rng& rng, Task&) {
+        if (stopped.load(std::memory_order_relaxed)) return;
+        if (stop && (j & 63) == 0 && stop->timeIsUp()) {  // a task is 64 elements: once per task
+            stopped = true;
+            return;
+        }
         const Element& ej = mesh[j];
         if (ej.quad == ei.quad || behind(ej, ei) || behind(ei, ej)) return;
         row.F[size_t(j)] = formFactor(scene, mesh, i, j, samples, rng);
     });
+    if (stopped) return {};
     // The power lost to the backs of reflecting quads: cosine rays from element i (Eq. 11.24:
     // the fraction of them that arrive somewhere is the form factor to there).
     Rng rng = taskRng(seed ^ kBackSalt, uint32_t(i), 0);
@@ -83,6 +92,7 @@ void RadiosityIntegrator::prepare(const Scene& scene) {
     rows_.assign(size_t(mesh_.size()), {});
     keptFloats_ = 0;
     rowsComputed_ = 0;
+    cutIterations_ = 0;
     backPower_ = shotPower_ = 0.0;
     ambientTerm_ = Color(0.0f);
 }
@@ -93,6 +103,10 @@ void RadiosityIntegrator::shootSteps(const Scene& scene, int shots, uint64_t see
     const uint64_t rowSeed = mix64(seed ^ kRowSalt);
     for (int k = 0; k < shots; ++k) {
         if (unshotFraction(mesh_, solution_) < kStopResidual) break;
+        if (timeIsUp()) {  // the render's budget (--time): the steps made so far are the image
+            ++cutIterations_;
+            break;
+        }
         const int i = chooseShooter(mesh_, solution_);
         if (i < 0 || size_t(i) >= n) break;
         FormFactorRow computed;
@@ -100,7 +114,11 @@ void RadiosityIntegrator::shootSteps(const Scene& scene, int shots, uint64_t see
         if (!rows_[size_t(i)].F.empty()) {
             row = &rows_[size_t(i)];
         } else {
-            computed = formFactorRow(scene, mesh_, i, rowSeed, stats);
+            computed = formFactorRow(scene, mesh_, i, rowSeed, stats, this);
+            if (computed.F.empty()) {  // abandoned at the time budget: no step
+                ++cutIterations_;
+                break;
+            }
             ++rowsComputed_;
             row = &computed;
             if (keptFloats_ + n <= kKeptFloats) {
@@ -149,6 +167,7 @@ std::vector<std::string> RadiosityIntegrator::report() const {
       << " shots, " << rowsComputed_ << " rows of form factors computed (" << formFactorSamples(mesh_.size())
       << " samples each); unshot power " << unshotFraction(mesh_, solution_) << " of the emitted (stops below "
       << kStopResidual << ")";
+    if (cutIterations_ > 0) s << "; " << cutIterations_ << " iteration(s) ended early at the time budget (--time)";
     lines.push_back(s.str());
     if (backPower_ > 0.0) {
         char buf[256];

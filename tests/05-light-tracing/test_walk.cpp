@@ -57,10 +57,10 @@ std::string replay(const ps::Scene& scene, ps::Rng rng, int maxDepth, const std:
     std::ostringstream why;
     ps::LightPathStart start;
     if (inOrder) {
-        const float uLight = rng.uniform();
-        const Vec2 uPos = rng.uniform2();
-        const Vec2 uDir = rng.uniform2();
-        start = ps::startLightPath(scene, uLight, uPos, uDir);
+        const float u1 = rng.uniform();
+        const Vec2 u2 = rng.uniform2();
+        const Vec2 u3 = rng.uniform2();
+        start = ps::startLightPath(scene, u1, u2, u3);
     } else {
         start = ps::startLightPath(scene, rng.uniform(), rng.uniform2(), rng.uniform2());
     }

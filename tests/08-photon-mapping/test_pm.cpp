@@ -44,10 +44,12 @@ void checkCornell(const std::string& algo, int iterations, uint64_t seed, double
     const char* names[5] = {"the whole image (without the lamp)", "the top left quadrant", "the top right quadrant",
                             "the bottom left quadrant", "the bottom right quadrant"};
     ps::stats::Welford mean[5];
+    ps::stats::ImageWelford images;  // for the images a failure writes
     ps::SampleStats stats;
     for (int it = 0; it < iterations; ++it) {
         ps::Image img(w, h);
         pm->renderIteration(scene, uint32_t(it), seed, img, stats);
+        images.add(img);
         for (int region = 0; region < 5; ++region) {
             double s = 0.0;
             int n = 0;
@@ -93,7 +95,8 @@ void checkCornell(const std::string& algo, int iterations, uint64_t seed, double
                       algo << ", " << iterations << " iterations, " << names[region] << ": expected the mean " << num(r)
                            << " of the path-traced reference within the bias bound " << num(bound) << " ("
                            << num(100.0 * fraction) << " %) + noise " << num(noise) << ", got "
-                           << num(mean[region].mean) << " (ratio " << num(ratio) << ")" << hint);
+                           << num(mean[region].mean) << " (ratio " << num(ratio) << ")" << hint << "\n  "
+                           << ps::stats::writeFailedImages(images.mean(), images.varianceOfMean(), ref, refVar));
     }
 }
 
@@ -180,11 +183,13 @@ TEST_CASE(
     std::unique_ptr<ps::Integrator> pm = ps::makeIntegrator("pm");
     pm->prepare(scene);
     ps::stats::Welford mean;
+    ps::stats::ImageWelford images;  // for the images a failure writes
     ps::SampleStats stats;
     const int iterations = 256;
     for (int it = 0; it < iterations; ++it) {
         ps::Image img(w, h);
         pm->renderIteration(scene, uint32_t(it), ps::testseed::seed(835), img, stats);
+        images.add(img);
         double s = 0.0;
         for (size_t p : caustic) s += ps::testrender::sum(img.pixels[p]);
         mean.add(s / n);
@@ -204,5 +209,6 @@ TEST_CASE(
                       << (ratio < 0.75 ? " (too dark: is the caustic map looked up "
                                          "at the diffuse point after a specular "
                                          "bounce?)"
-                                       : ""));
+                                       : "")
+                      << "\n  " << ps::stats::writeFailedImages(images.mean(), images.varianceOfMean(), ref, refVar));
 }

@@ -51,10 +51,12 @@ inline void checkCornellBlocks(const char* what, const std::function<Rendered(co
     const ps::Image ref = ps::readPFM(ps::testfiles::sourcePath("tests/03-path-tracing/data/cornell-box-32.pfm"));
     REQUIRE(ref.width == 2 * kRes);
     std::vector<ps::stats::Welford> w(kBlocks * kBlocks * 3);
+    ps::stats::ImageWelford renders;  // for the images a failure writes
     uint64_t bad = 0;
     for (int k = 0; k < kRenders; ++k) {
         const Rendered r = render(scene, ps::testseed::seed(seed) + 7919 * uint64_t(k));
         bad += r.stats.bad();
+        renders.add(r.mean);
         for (int by = 0; by < kBlocks; ++by)
             for (int bx = 0; bx < kBlocks; ++bx) {
                 double s[3] = {0, 0, 0};
@@ -100,11 +102,24 @@ inline void checkCornellBlocks(const char* what, const std::function<Rendered(co
                 }
             }
         }
+    // On failure: the mean of the renders and its variance of the mean, and the reference at
+    // 16 x 16 (each pixel the mean of four), for `pathspace compare`.
+    auto images = [&]() {
+        ps::Image ref16(kRes, kRes);
+        for (int y = 0; y < kRes; ++y)
+            for (int x = 0; x < kRes; ++x) {
+                ps::Color c(0.0f);
+                for (int dy = 0; dy < 2; ++dy)
+                    for (int dx = 0; dx < 2; ++dx) c += ref.pixels[size_t((2 * y + dy) * ref.width + 2 * x + dx)];
+                ref16.pixels[size_t(y * kRes + x)] = 0.25f * c;
+            }
+        return ps::stats::writeFailedImages(renders.mean(), renders.varianceOfMean(), ref16, ps::Image());
+    };
     CHECK_MESSAGE(failed == 0, what << " on the Cornell box (16 x 16, " << spp << " spp, " << kRenders
                                     << " independent renders): every 4 x 4 block should equal the path-traced "
                                        "reference, "
                                     << failed << " of 48 block channels differ (the first 4):" << report << "\n  ("
-                                    << hint << ")");
+                                    << hint << ")\n  " << images());
 }
 
 }  // namespace lesson09

@@ -16,6 +16,7 @@
 #include <string>
 #include "errors.h"
 #include "film.h"
+#include "file_writer.h"
 #include "image.h"
 #include "rng.h"
 #include <tinyexr.h>
@@ -127,7 +128,50 @@ TEST_CASE("film: EXR output holds the pixels exactly (32-bit float RGB, read bac
     }
     Image img(2, 2);
     CHECK_THROWS_WITH_AS(writeEXR("/nonexistent-folder/x.exr", img),
-                         doctest::Contains("/nonexistent-folder/x.exr: cannot write EXR file"), InputError);
+                         doctest::Contains("/nonexistent-folder/x.exr: cannot open for writing"), InputError);
+}
+
+TEST_CASE("film: a reader given the expected size refuses another one from the header, before the pixels") {
+    // A reference is read with the size of the render it is compared with: a file of another
+    // size is refused before its pixels are allocated or decoded (issue 31: a 50 MB run-length
+    // .hdr described 9.4 GB of pixels, all decoded before the size was compared).
+    const Image img(3, 2, Color(0.25f));
+    for (const char* ext : {".pfm", ".hdr"}) {
+        const std::string path = tempPath(std::string("sized") + ext);
+        writeImage(path, img);
+        CHECK(readImage(path, 3, 2).width == 3);
+        CHECK_THROWS_WITH_AS(readImage(path, 2, 3), doctest::Contains("the image is 3x2 pixels, expected 2x3"),
+                             InputError);
+        CHECK(readImage(path).height == 2);  // without an expected size: any
+        fs::remove(path);
+    }
+}
+
+TEST_CASE("film: every writer reports a full device, naming the file (checked to the close)") {
+    // /dev/full takes no byte: every write fails with ENOSPC. A small image sits in the stream's
+    // buffer until the close, so only a check of the flush and the close sees it (stb's and
+    // tinyexr's own file writers check neither; issue 31 found them silent).
+    if (!fs::exists("/dev/full")) {
+        MESSAGE("no /dev/full on this system: skipped");
+        return;
+    }
+    const Image img(2, 2, Color(0.5f));
+    const std::string full = "/dev/full";
+    const char* const nospace = "/dev/full: write failed (No space left on device)";
+    CHECK_THROWS_WITH_AS(writePFM(full, img), doctest::Contains(nospace), InputError);
+    CHECK_THROWS_WITH_AS(writePNG(full, img), doctest::Contains(nospace), InputError);
+    CHECK_THROWS_WITH_AS(writeHDR(full, img), doctest::Contains(nospace), InputError);
+    CHECK_THROWS_WITH_AS(writeEXR(full, img), doctest::Contains(nospace), InputError);
+    CHECK_THROWS_WITH_AS(writeFile(full, "a line\n"), doctest::Contains(nospace), InputError);
+    FileStream log(full);
+    log << "iteration,spp\n0,1\n";
+    CHECK_THROWS_WITH_AS(log.close(), doctest::Contains(nospace), InputError);
+    // And the same writer succeeds on a file.
+    const std::string path = tempPath("written.pfm");
+    writePFM(path, img);
+    const Image back = readPFM(path);
+    fs::remove(path);
+    CHECK((back.width == 2 && back.height == 2 && back.pixels == img.pixels));
 }
 
 TEST_CASE("film: readPFM of a missing or malformed file throws InputError naming the file") {

@@ -6,6 +6,8 @@
 #include "light.h"
 #include "rng.h"
 #include "scene.h"
+#include "scene_loader.h"
+#include "warps.h"
 
 using namespace ps;
 
@@ -366,6 +368,51 @@ TEST_CASE("light: point lights are delta lights with pdf 1") {
     CHECK(q.pdfA == e.pdfA);
     CHECK(q.pdfW == e.pdfW);
     CHECK(lightPower(s, l) == doctest::Approx(4.0f * kPi * 7.0f));
+}
+
+TEST_CASE(
+    "light: a point light in a corner of three walls: rays leave each wall's plane to their own side, and "
+    "points in those planes do not see it") {
+    // Issue 31: a point light where three surfaces meet was offset along their mean normal only;
+    // 3/8 of the directions (towards the mean normal but out of the walls' octant) then started
+    // inside the octant, hit a wall at t ~ 0 next to the light and scattered light there that no
+    // shadow ray sees: lt and bpt rendered the Cornell box 1.5 to 2 times too bright. The walls
+    // here are the planes x = 0, y = 0, z = 0, so "its own side" is the sign of each coordinate.
+    const Scene scene = parseScene(
+        "camera eye 2 1.5 3  target 0.5 0.5 0.5  fov 60  resolution 4 4\n"
+        "material w diffuse albedo 0.5 0.5 0.5\n"
+        "quad 0 0 0  0 0 1  1 0 1  1 0 0  material w\n"  // y = 0
+        "quad 0 0 0  0 1 0  0 1 1  0 0 1  material w\n"  // x = 0
+        "quad 0 0 0  1 0 0  1 1 0  0 1 0  material w\n"  // z = 0
+        "sphere center 0.6 0.3 0.6  radius 0.1  material w\n"
+        "pointlight position 0 0 0  intensity 1 1 1\n",
+        "corner.scene");
+    REQUIRE(scene.lights[0].surfacePlanes.size() == 3);
+    SurfacePoint light;
+    light.p = Vec3(0.0f);
+    light.light = 0;
+    Rng rng(31);
+    int wrongSide = 0, nearHits = 0;
+    for (int i = 0; i < 20000; ++i) {
+        const Vec3 w = sampleUniformSphere(rng.uniform2());
+        Ray ray = scene.spawnRay(light, w);
+        for (int a = 0; a < 3; ++a)
+            if (w[a] != 0.0f && (ray.o[a] > 0.0f) != (w[a] > 0.0f)) ++wrongSide;
+        SurfacePoint hit;
+        if (scene.intersect(ray, hit) && ray.tMax < 1e-3f) ++nearHits;
+    }
+    CHECK_MESSAGE(wrongSide == 0, wrongSide << " ray origins on the other side of a wall's plane than their direction");
+    CHECK_MESSAGE(nearHits == 0, nearHits << " rays from the light hit a wall it lies on, next to it");
+    // A point of the floor (in a plane of the light) does not see it; a point of the sphere does.
+    Ray down(Vec3(0.3f, 1.0f, 0.4f), Vec3(0, -1, 0));
+    SurfacePoint floor;
+    REQUIRE(scene.intersect(down, floor));
+    CHECK(scene.occluded(scene.spawnRayTo(floor, Vec3(0.0f))));
+    Ray toSphere(Vec3(0.2f, 0.1f, 0.2f), glm::normalize(Vec3(0.4f, 0.2f, 0.4f)));  // its side facing the light
+    SurfacePoint onSphere;
+    REQUIRE(scene.intersect(toSphere, onSphere));
+    CHECK(!scene.occluded(scene.spawnRayTo(onSphere, Vec3(0.0f))));
+    CHECK(!scene.occluded(scene.spawnRayTo(light, onSphere)));
 }
 
 TEST_CASE("light: background sampling is uniform over the sphere with pdf 1/(4 pi)") {

@@ -148,6 +148,21 @@ TEST_CASE("render: a time budget stops the loop") {
     CHECK_MESSAGE(wall < 2.0, "the render took " << wall << " s for a budget of 0.1 s");
 }
 
+TEST_CASE("render: on the CPU clock, time the process does not compute is not counted") {
+    // Five iterations that each sleep 20 ms, on one thread: 0.1 s of wall-clock time, but a
+    // few ms of CPU time (40 x 40 eyelight pixels). --clock cpu must count the latter.
+    const Scene scene = smallCornellBox();
+    RecordingIntegrator wall(20), cpu(20);
+    const RenderResult rw = render(scene, wall, options(5, 1));
+    RenderOptions o = options(5, 1);
+    o.clock = TimeClock::Cpu;
+    const RenderResult rc = render(scene, cpu, o);
+    CHECK_MESSAGE(rw.seconds >= 0.1, "wall clock: expected at least the 0.1 s slept, got " << rw.seconds);
+    CHECK_MESSAGE(rc.seconds < 0.05, "CPU clock: expected a few ms (the 0.1 s slept is no CPU time), got "
+                                         << rc.seconds << " s; is the render timed on the wall clock?");
+    CHECK_MESSAGE(summaryLine(rc).find(" CPU s (") != std::string::npos, "summary: " << summaryLine(rc));
+}
+
 TEST_CASE("render: NaN and Inf samples are counted exactly and kept out of the image") {
     const Scene scene = smallCornellBox();
     for (int threads : {1, 2}) {

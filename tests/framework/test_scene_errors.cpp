@@ -14,6 +14,14 @@
 using namespace ps;
 
 namespace {
+// A render parameter as a lesson registers one (lesson 8's ppm radius schedule, for instance).
+[[maybe_unused]] const bool testParameter = Registry<RenderParameter>::add(
+    "testfraction", {"a fraction for the loader's tests", [](float v) {
+                         return v > 0.0f && v < 1.0f ? std::string() : std::string("must lie between 0 and 1");
+                     }});
+}  // namespace
+
+namespace {
 
 // Lines 1 and 2 of most test scenes; the line under test is line 3.
 const std::string kHead =
@@ -224,6 +232,11 @@ TEST_CASE("scene errors: bad resolution or field of view") {
     camera("fov 40 resolution 0 8", {"'resolution' must be between 1 and 16384", "got 0 8"});
     camera("fov 40 resolution 8 -1", {"'resolution'", "got 8 -1"});
     camera("fov 40 resolution 20000 8", {"'resolution'", "16384"});
+    // Each side within 16384, but more pixels than a render may have (the memory model, issue 31:
+    // 16384 x 16384 needed more than 8 GB).
+    camera("fov 40 resolution 16384 16384", {"'resolution' 16384 16384 is 268435456 pixels", "4194304", "4 GiB"});
+    camera("fov 40 resolution 2049 2048", {"is 4196352 pixels, more than the 4194304"});
+    CHECK_NOTHROW(parseScene("camera eye 0 0 -5  target 0 0 0  fov 40 resolution 4096 1024\n", "ok.scene"));
     camera("fov 40 resolution 8.5 8", {"malformed integer '8.5'", "'resolution' (width)"});
     camera("fov 40 resolution 8", {"option 'resolution' needs 2 value(s)"});
     camera("fov 40 resolution 8 8 up 0 0 1", {"'up' is parallel to the view direction"});
@@ -337,6 +350,11 @@ TEST_CASE("scene errors: other values out of their range") {
     expectLine3("render elements 4 257", {"'elements' must be between 1 and 256", "got 4 257"});
     expectLine3("render elements 4", {"'elements' needs 2 value(s)"});
     expectLine3("render shots 0", {"'shots' must be at least 1"});
+    // A render parameter some lesson registers (this test registers its own, testfraction):
+    // the loader checks its value, and refuses a name no lesson registered.
+    expectLine3("render testfraction 1", {"'testfraction' must lie between 0 and 1", "got 1"});
+    expectLine3("render testfraction", {"'testfraction' needs 1 value(s)"});
+    expectLine3("render testfractoin 0.5", {"unknown option 'testfractoin' for 'render'", "testfraction"});
 }
 
 TEST_CASE("scene errors: a quad is kept as written (Scene::quads), its two triangles after it") {
@@ -345,7 +363,7 @@ TEST_CASE("scene errors: a quad is kept as written (Scene::quads), its two trian
         "material w diffuse albedo 0.5 0.5 0.5\n"
         "triangle 0 0 0  1 0 0  0 1 0  material w\n"
         "quad 0 0 1  2 0 1  2 1 1  0 1 1  material w\n"
-        "render elements 3 5 shots 7\n",
+        "render elements 3 5 shots 7 testfraction 0.75\n",
         "quads.scene");
     REQUIRE(s.quads.size() == 1);
     CHECK(s.quads[0].line == 4);
@@ -357,6 +375,8 @@ TEST_CASE("scene errors: a quad is kept as written (Scene::quads), its two trian
     CHECK(s.settings.elements[0] == 3);
     CHECK(s.settings.elements[1] == 5);
     CHECK(s.settings.shots == 7);
+    CHECK(renderParameter(s.settings, "testfraction", 0.0f) == 0.75f);
+    CHECK(renderParameter(s.settings, "spp", -1.0f) == -1.0f);  // not a render parameter
 }
 
 TEST_CASE("scene errors: values too large for float light transport") {

@@ -40,6 +40,22 @@ TEST_CASE("thin lens scene: a bad lens (lens RADIUS focus DISTANCE) is one error
     camera("lens 0.1 focus nan", {"'nan'", "'focus'", "not a finite number"});
     camera("focus 2", {"'focus' without 'lens RADIUS'"});
     camera("lens 0.1 0.2", {"'0.2'"});
+    // Issue 31: 'lens 2e-19' passed the normal-range test (pi r^2 = 1.3e-37) and light tracing gave
+    // NaN. Refused as a sphere that small is: below 16 float steps of the eye's coordinates (here
+    // 5: a step of 4.8e-7) ...
+    camera("lens 2e-19", {"'lens' radius 2e-19 is below 16 float steps", "eye's coordinates"});
+    camera("lens 7e-6", {"'lens' radius 7e-6 is below 16 float steps"});
+    // ... and, at the origin, where float steps are tiny, by the pixel's importance through it.
+    const auto atOrigin = [](const std::string& radius) {
+        return "camera eye 0 0 0  target 0 0 1  fov 40  resolution 8 8  lens " + radius + "\n";
+    };
+    for (const char* r : {"2e-19", "1e-9"}) {
+        const std::string msg = errorOf(atOrigin(r));
+        CHECK_MESSAGE(msg.find("'lens' radius " + std::string(r) + ": a pixel's importance") != std::string::npos, msg);
+        CHECK_MESSAGE(msg.find("beyond 2^64") != std::string::npos, msg);
+    }
+    CHECK_NOTHROW(parseScene(atOrigin("1e-8"), "t.scene"));
+    CHECK_NOTHROW(parseScene("camera eye 0 0 -5  target 0 0 0  fov 40  resolution 8 8  lens 8e-6\n", "t.scene"));
     // Accepted: radius 0 (the pinhole), focus defaulting to the target's distance.
     const Scene pin = parseScene("camera eye 0 0 -5  target 0 0 0  fov 40  resolution 8 8  lens 0\n", "t.scene");
     CHECK(pin.camera.isPinhole());

@@ -18,6 +18,7 @@
 #include <fstream>
 #include <limits>
 #include <numeric>
+#include <stdexcept>
 #include "rng.h"
 
 namespace ps::stats {
@@ -663,6 +664,34 @@ void Welford::add(double x) {
 double Welford::variance() const { return n > 1 ? m2 / double(n - 1) : 0.0; }
 
 double Welford::stdError() const { return n > 0 ? std::sqrt(variance() / double(n)) : kInfD; }
+
+void ImageWelford::add(const Image& img) {
+    if (channels.empty()) {
+        width = img.width;
+        height = img.height;
+        channels.resize(img.pixels.size() * 3);
+    }
+    if (img.width != width || img.height != height) throw std::invalid_argument("ImageWelford: images of two sizes");
+    for (size_t i = 0; i < img.pixels.size(); ++i)
+        for (int ch = 0; ch < 3; ++ch) channels[i * 3 + size_t(ch)].add(double(img.pixels[i][ch]));
+}
+
+Image ImageWelford::mean() const {
+    Image m(width, height);
+    for (size_t i = 0; i < m.pixels.size(); ++i)
+        for (int ch = 0; ch < 3; ++ch) m.pixels[i][ch] = float(channels[i * 3 + size_t(ch)].mean);
+    return m;
+}
+
+Image ImageWelford::varianceOfMean() const {
+    Image v(width, height);
+    for (size_t i = 0; i < v.pixels.size(); ++i)
+        for (int ch = 0; ch < 3; ++ch) {
+            const Welford& w = channels[i * 3 + size_t(ch)];
+            v.pixels[i][ch] = w.n > 0 ? float(w.variance() / double(w.n)) : 0.0f;
+        }
+    return v;
+}
 
 TTestResult tTest(const Welford& samples, double reference, double alpha, double maxRelStdError) {
     TTestResult r;

@@ -59,6 +59,16 @@ struct Welford {
     double stdError() const;  // sqrt(variance / n)
 };
 
+// Welford per pixel and channel over independent images of one size: their mean image and its
+// variance of the mean (what writeFailedImages takes), for the images a failed test writes.
+struct ImageWelford {
+    int width = 0, height = 0;
+    std::vector<Welford> channels;  // pixel-major, three per pixel
+    void add(const Image& img);     // the first image sets the size; later ones must match it
+    Image mean() const;
+    Image varianceOfMean() const;
+};
+
 struct TTestResult {
     bool passed = false;
     double mean = 0.0, reference = 0.0, stdError = 0.0, t = 0.0, pValue = 0.0;

@@ -1,7 +1,8 @@
 # Runs one command and checks what it did. Used by the command-line tests (CMakeLists.txt here):
 #
 #   cmake [-DEXIT=N] [-DSTDOUT_REGEX=RE] [-DSTDERR_REGEX=RE] [-DSTDERR_LINES=N]
-#         [-DFILE=PATH -DFILE_REGEX=RE] [-DNOT_WRITTEN=PATH|PATH...] -P expect.cmake -- COMMAND [ARG...]
+#         [-DFILE=PATH -DFILE_REGEX=RE] [-DNOT_WRITTEN=PATH|PATH...] [-DUNCHANGED=PATH|PATH...]
+#         -P expect.cmake -- COMMAND [ARG...]
 #
 #   EXIT          the exit code the command must return (default 0). A crash (a signal) always fails.
 #   STDOUT_REGEX  a regular expression (CMake syntax) stdout must match somewhere
@@ -11,6 +12,8 @@
 #                 content must match FILE_REGEX (use ^ and $ to match it exactly)
 #   NOT_WRITTEN   paths (files or folders, separated by '|') the command must not leave behind:
 #                 removed before the command runs, checked to be absent after it
+#   UNCHANGED     files (separated by '|') that must exist before the command runs and hold the
+#                 same bytes after it (inputs an output must not overwrite)
 #
 # Everything after "--" is the command, passed as is (no shell).
 cmake_minimum_required(VERSION 3.18)
@@ -41,6 +44,19 @@ if(DEFINED NOT_WRITTEN)
   string(REPLACE "|" ";" _absent "${NOT_WRITTEN}")
   foreach(_p ${_absent})
     file(REMOVE_RECURSE "${_p}")
+  endforeach()
+endif()
+
+set(_kept "")
+set(_hashes "")
+if(DEFINED UNCHANGED)
+  string(REPLACE "|" ";" _kept "${UNCHANGED}")
+  foreach(_p ${_kept})
+    if(NOT EXISTS "${_p}")
+      message(FATAL_ERROR "expect.cmake: ${_p} (UNCHANGED) does not exist before the command")
+    endif()
+    file(SHA256 "${_p}" _hash)
+    list(APPEND _hashes "${_hash}")
   endforeach()
 endif()
 
@@ -91,6 +107,20 @@ endif()
 foreach(_p ${_absent})
   if(EXISTS "${_p}")
     string(APPEND _failures "  the command left ${_p} behind\n")
+  endif()
+endforeach()
+
+set(_i 0)
+foreach(_p ${_kept})
+  list(GET _hashes ${_i} _before)
+  math(EXPR _i "${_i} + 1")
+  if(NOT EXISTS "${_p}")
+    string(APPEND _failures "  the command removed ${_p}\n")
+  else()
+    file(SHA256 "${_p}" _after)
+    if(NOT _after STREQUAL _before)
+      string(APPEND _failures "  the command changed ${_p} (an input it must not overwrite)\n")
+    endif()
   endif()
 endforeach()
 
