@@ -4,6 +4,7 @@
 #include <doctest/doctest.h>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 #include "lesson00.h"
 #include "seed.h"
@@ -261,6 +262,21 @@ TEST_CASE("rays: triangles behind the origin are missed and the reversed ray hit
     expectHit(Ray(p + Vec3(0, 0, 3), Vec3(0, 0, -1)), kFlat, 3.0, 0.25, 0.5, 1e-7, 1e-7, "the reversed ray", tally);
     expectMiss(Ray(p, Vec3(0, 0, -1)), kFlat, "the origin is on the triangle: t = 0 is not in (0, tMax)", tally);
     expectMiss(Ray(p, Vec3(0, 0, 1)), kFlat, "the origin is on the triangle: t = 0 is not in (0, tMax)", tally);
+    {
+        // A hit closer than any float: the corner a lies the smallest positive float d above the
+        // origin's plane, the others in it, and the ray meets the triangle where a's weight is 1/4,
+        // at t = d / 4, which rounds to 0 in float (every product of Eq. 0.6 is exact here: 2*area
+        // = 64, T = 16 d). Whatever the test returns, a hit must have t > 0.
+        const float d = std::numeric_limits<float>::denorm_min();
+        const Triangle nearly{Vec3(-1, -1, d), Vec3(7, -1, 0), Vec3(-1, 7, 0)};
+        const Ray up(Vec3(2, 2, 0), Vec3(0, 0, 1));
+        const Hit h = intersect(up, nearly);
+        if (tally.fail(!h.hit || h.t > 0.0f))
+            FAIL_CHECK(
+                "a hit at t = 3.5e-46, below the smallest positive float: expected no hit or a hit with t > 0\n  "
+                << str(up) << "\n  " << str(nearly) << "\n  got " << str(h)
+                << " (t = T / det rounds to 0 here: is t itself checked against (0, tMax)?)");
+    }
     ps::Rng rng(ps::testseed::seed(8));
     for (int i = 0; i < 300; ++i) {
         const float e1 = 0.05f + 0.9f * rng.uniform(), e2 = (1.0f - e1) * (0.05f + 0.9f * rng.uniform());

@@ -31,6 +31,15 @@ TEST_CASE("estimators: the sample mean reports the variance s^2 / n with the unb
                   "samples 1, 2, 3, 4: expected the variance of the mean s^2 / n = (5/3) / 4 = 0.41667, got "
                       << e.variance << " (ratio " << ratio << "; 0.75: divided by n instead of n - 1? 4: "
                       << "the variance of the samples, not of their mean (1/n missing)?)");
+    // A sample where the pdf is 0 (a sampler that can fail, as a BSDF's can) counts as 0 (Eq. 1.5):
+    // the samples 1, 2, 3, 4 with pdf 0 at 3 give 1, 2, 0, 4: mean 7/4, s^2 = 35/12, variance 35/48.
+    next = 0;
+    const ps::Function1D pdfHole = [](double x) { return x == 3.0 ? 0.0 : 1.0; };
+    const ps::Estimate h = ps::estimateImportance(f, sample, pdfHole, 4, rng);
+    CHECK_MESSAGE((near(h.value, 1.75) && near(h.variance, 35.0 / 48.0)),
+                  "samples 1, 2, 3, 4 with pdf 0 at x = 3: expected that sample to count 0, the mean 1.75 and "
+                  "the variance 0.72917, got "
+                      << h.value << " and " << h.variance << " (f / pdf with pdf = 0 is Inf or NaN, not 0)");
 }
 
 TEST_CASE(

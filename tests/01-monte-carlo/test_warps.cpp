@@ -246,6 +246,12 @@ TEST_CASE("warps: invert(sample(u)) gives back u [2 pts]") {
         }
         f.check();
     }
+    // The triangle's corner b = (0, 0) is where every u = (0, u.y) lands; its inverse is u = (0, 0)
+    // (the TODO's rule for s = 0), finite: a division by s = 0 there gives NaN.
+    const Vec2 corner = ps::invertUniformTriangle(Vec2(0.0f, 0.0f));
+    CHECK_MESSAGE((corner.x == 0.0f && corner.y == 0.0f),
+                  "uniform triangle: invert at the corner b = (0, 0) should give u = (0, 0), got "
+                      << str(corner) << " (divided by s = 0?)");
 }
 
 TEST_CASE("warps: Phong lobe stays finite and right for exponents 0 to 1e6 [2 pts]") {

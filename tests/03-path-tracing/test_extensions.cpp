@@ -74,8 +74,9 @@ TEST_CASE(
     struct Case {
         const char* what;
         std::function<ps::Continuations(const ps::WalkVertex&)> rule;
-        int n;        // continuations at every vertex
-        double step;  // beta's factor per bounce
+        int n;                       // continuations at every vertex
+        double step;                 // beta's factor per bounce
+        const char* tree = nullptr;  // the bounces expected, if not the full tree of n
     };
     const std::vector<Case> cases = {
         {"two continuations, each with beta / 2",
@@ -98,6 +99,13 @@ TEST_CASE(
              return ps::Continuations{0, v.beta};
          },
          0, 1.0},
+        // Every continuation of a split can end at the vertex it leaves (here: a black throughput),
+        // the extra ones too: each of the two vertices after one bounce then ends its walk.
+        {"two continuations with beta / 2, black ones after the first bounce",
+         [](const ps::WalkVertex& v) {
+             return v.bounces == 1 ? ps::Continuations{2, Color(0.0f)} : ps::Continuations{2, v.beta * 0.5f};
+         },
+         2, 0.25, "0 1 1 "},
     };
     for (const Case& c : cases) {
         ps::WalkOptions opt(kDepth, ps::alwaysSurvive);
@@ -109,8 +117,8 @@ TEST_CASE(
         for (uint32_t i = 0; i < 8; ++i) {
             asked = 0;
             const std::vector<Seen> seen = walkWith(scene, opt, i);
-            std::string want;
-            fullTree(0, kDepth, c.n, want);
+            std::string want = c.tree ? c.tree : "";
+            if (!c.tree) fullTree(0, kDepth, c.n, want);
             CHECK_MESSAGE(bounces(seen) == want, "a rule of " << c.what << " at every vertex, maxDepth " << kDepth
                                                               << ": expected the vertices' bounces in depth-first "
                                                                  "order (every continuation walked to its end "

@@ -65,6 +65,16 @@ TEST_CASE(
     checkFlux("point light I = (2, 3, 4) at height 1 over the patch [-0.3, 0.7] x [-0.2, 0.5] (solid angle " +
                   num(omega) + " sr)",
               measureFlux(scene, n, 4201), (2.0 + 3.0 + 4.0) * omega, n);
+    // Without any light there is no flux: every particle 0 (and none drawn from a light that is not there).
+    const ps::Scene dark = ps::parseScene(
+        "camera eye 0 3 -4  target 0 0 0  fov 40  resolution 4 4\n"
+        "material sensor diffuse albedo 0 0 0\n"
+        "quad -0.3 0 -0.2  -0.3 0 0.5  0.7 0 0.5  0.7 0 -0.2  material sensor\n",
+        "the patch without a light (test_flux.cpp)");
+    const FluxResult none = measureFlux(dark, 100, 4203);
+    CHECK_MESSAGE((none.bad == 0 && none.w.n == 100 && none.w.mean == 0.0),
+                  "a scene without lights: expected every particle's flux 0, got the mean "
+                      << none.w.mean << " and " << none.bad << " NaN or Inf particles");
 }
 
 TEST_CASE(

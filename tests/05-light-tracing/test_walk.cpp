@@ -195,6 +195,27 @@ TEST_CASE("light walk: y0 first, then one vertex per bounce up to maxdepth, and 
         "closed cube furnace, maxdepth 10, a visitor that returns false at y0: expected 1 visit and no random number "
         "drawn after startLightPath's five, got "
             << seen.size() << " visits" << (sameNumbers ? "" : " and more numbers drawn"));
+    // A visitor that returns false at the vertex after two bounces: the walk ends there (3 visits).
+    for (int i = 0; i < 20; ++i) {
+        ps::Rng r = ps::taskRng(ps::testseed::seed(595), 0, uint32_t(i));
+        const std::vector<Seen> two = recordWalk(scene, r, 10, 2);
+        CHECK_MESSAGE(two.size() == 3,
+                      "closed cube furnace (albedo 1: q = 1), maxdepth 10, a visitor that returns "
+                      "false at the vertex with 2 bounces: expected 3 visits (bounces 0, 1, 2), got "
+                          << two.size() << " (bounces " << bounceList(two)
+                          << "; the visitor's answer after y0 ignored?)");
+        if (two.size() != 3) break;
+    }
+    // A scene without lights has no particle: no vertex at all.
+    const ps::Scene dark = ps::parseScene(
+        "camera eye 0 1 -3  target 0 1 0  fov 60  resolution 4 4\n"
+        "material white diffuse albedo 0.5 0.5 0.5\n"
+        "quad -2 0 -2  -2 0 2  2 0 2  2 0 -2  material white\n",
+        "a floor without a light (test_walk.cpp)");
+    ps::Rng r = ps::taskRng(ps::testseed::seed(596), 0, 0);
+    const std::vector<Seen> none = recordWalk(dark, r, 10);
+    CHECK_MESSAGE(none.empty(), "a scene without lights: expected no vertex (no light to start from), got "
+                                    << none.size() << " (bounces " << bounceList(none) << ")");
 }
 
 TEST_CASE(

@@ -145,4 +145,11 @@ TEST_CASE(
                   "path " << describe(up)
                           << ": the area light emits only below (its normal faces -y): expected f = 0, got "
                           << str(gotUp));
+    // A path that does not start on a light carries nothing (Le(x0) = 0), and one vertex is no path.
+    const ps::Path dark = {x1, surface(room(), Vec3(-0.4f, 0.8f, 2.0f), Vec3(0, 0, -1), "wall"), pinhole(room())};
+    const ps::DColor gotDark = ps::contribution(room(), dark);
+    CHECK_MESSAGE(black(gotDark),
+                  "path " << describe(dark) << ": x0 is on no light: expected f = 0, got " << str(gotDark));
+    const ps::DColor gotOne = ps::contribution(room(), {pinhole(room())});
+    CHECK_MESSAGE(black(gotOne), "a path of the pinhole alone (no edge): expected f = 0, got " << str(gotOne));
 }

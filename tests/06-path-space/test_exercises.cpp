@@ -61,4 +61,10 @@ TEST_CASE("exercise: the light tracer's pdf p_{2,1} of a length-2 path, by hand 
                           << " per unit area (per unit light area too), got " << got << " (ratio " << got / expected
                           << "; the cosine at x1 or the 1/d^2 of Eq. 6.6 missing, or 1/A of the light?)");
     }
+    // x1 behind the light's plane: the cosine-weighted first ray never goes there, p = 0.
+    const double behind = ps::lightTracerPdfK2(1.0, Vec3(0, 2, 0), Vec3(0, -1, 0), Vec3(0.5f, 3, 0), Vec3(0, -1, 0));
+    CHECK_MESSAGE(behind == 0.0,
+                  "lightTracerPdfK2 with x1 behind the light (cos theta_0 = -0.89): expected 0 (the "
+                  "light emits only on its front side), got "
+                      << behind);
 }

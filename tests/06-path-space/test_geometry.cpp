@@ -62,6 +62,8 @@ TEST_CASE("path space: a solid-angle pdf as an area pdf, pdfW |cos theta_to| / d
     pl.pointLight = true;
     ps::PathVertex back = at(Vec3(3, 4, 0), Vec3(0, 1, 0));
     back.infinite = true;
+    ps::PathVertex eye = at(Vec3(3, 4, 0), Vec3(1, 0, 0));  // its normal meaningless: no surface there
+    eye.pinhole = true;
     struct Case {
         std::string what;
         ps::PathVertex from, to;
@@ -71,6 +73,7 @@ TEST_CASE("path space: a solid-angle pdf as an area pdf, pdfW |cos theta_to| / d
         {"to a surface", a, b, 0.7, 0.7 * (3.0 / 5.0) / 25.0},
         {"back, to a surface", b, a, 0.7, 0.7 * (4.0 / 5.0) / 25.0},
         {"to a point (no surface, no cosine)", a, pl, 0.25, 0.25 / 25.0},
+        {"to the pinhole (a point too: no cosine)", a, eye, 0.25, 0.25 / 25.0},
         {"to the background (solid angle stays)", a, back, 0.3, 0.3},
     };
     for (const Case& c : cases) {

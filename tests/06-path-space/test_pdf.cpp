@@ -209,6 +209,16 @@ void checkAllTechniques(const TestPath& t) {
     }
 }
 
+// Every technique, and s outside 0 ... k + 1, gives p = 0 exactly: paths no technique samples.
+void checkNone(const std::string& name, const ps::Path& x, const std::string& why) {
+    const int k = int(x.size()) - 1;
+    for (int s = -1; s <= k + 2; ++s) {
+        const double got = ps::pdfTechnique(room(), x, s);
+        CHECK_MESSAGE(got == 0.0, name << ", s = " << s << ", path " << describe(x) << ": " << why
+                                       << ": expected p = 0 exactly, got " << num(got));
+    }
+}
+
 }  // namespace
 
 TEST_CASE(
@@ -241,4 +251,29 @@ TEST_CASE(
                                                                     {Kind::Phong, Vec3(0.5f, 1.1f, 2.0f)},
                                                                     {Kind::Diffuse, Vec3(0.1f, 0.0f, 0.5f)},
                                                                     {Kind::Pinhole, Vec3(0.0f)}}));
+    // Paths no technique can sample, and techniques outside 0 ... k + 1: p = 0 exactly. The mirror
+    // (x = -2) at the point where light from (0, 2, 0) reflects to the floor point (0.3, 0, 0.4),
+    // joined instead to (0.6, 0, 0.4): the two directions there are no reflected pair, which a
+    // delta lobe never samples (Eq. 6.11), from either side.
+    const ps::Scene& scene = room();
+    const DVec3 p0(0.0, 2.0, 0.0), img(-4.3, 0.0, 0.4);
+    const DVec3 pm = p0 + (2.0 / 4.3) * (img - p0);
+    const ps::PathVertex mirror = surface(scene, Vec3(pm), Vec3(1, 0, 0), "mirror");
+    const ps::PathVertex floor = surface(scene, Vec3(0.6f, 0.0f, 0.4f), Vec3(0, 1, 0), "floor");
+    checkNone("area light -> mirror off its reflection -> floor -> pinhole",
+              {areaLightPoint(scene, Vec3(p0)), mirror, floor, pinhole(scene)},
+              "the directions at the mirror are not a reflected pair");
+    checkNone("floor -> glossy wall -> floor -> pinhole",
+              {surface(scene, Vec3(0.3f, 0.0f, 0.4f), Vec3(0, 1, 0), "floor"),
+               surface(scene, Vec3(-0.4f, 0.8f, 2.0f), Vec3(0, 0, -1), "wall"), floor, pinhole(scene)},
+              "x0 is on no light");
+    checkNone("the pinhole alone", {pinhole(scene)}, "one vertex is no path (k = 0)");
+    const TestPath two = makePath("area light -> floor -> pinhole", {{Kind::AreaLight, Vec3(0.1f, 2.0f, -0.2f)},
+                                                                     {Kind::Diffuse, Vec3(0.3f, 0.0f, 0.4f)},
+                                                                     {Kind::Pinhole, Vec3(0.0f)}});
+    for (int s : {-1, 4}) {
+        const double got = ps::pdfTechnique(scene, two.x, s);
+        CHECK_MESSAGE(got == 0.0, two.name << ": technique s = " << s << " of a path with k = 2 (s from 0 to 3): "
+                                           << "expected p = 0 exactly, got " << num(got));
+    }
 }

@@ -61,6 +61,16 @@ TEST_CASE("MIS weights from the full pdf list sum to 1 over the techniques of a 
             checkScene(s, h, "misWeightFull", [&](const Split& x, int sp, int tp) {
                 return ps::misWeightFull(x.y.data(), sp, x.z.data(), tp, x.rev, h);
             });
+    // Eq. 7.7 outside the techniques 0 ... n: no technique s' = -1 or n + 1 samples anything.
+    const ps::Scene scene = loadSceneAt("scenes/cornell-box.scene", 16, 16);
+    const std::vector<JoinedPath> paths = randomPaths(scene, 20, ps::testseed::seed(7003), ps::Heuristic::Balance);
+    REQUIRE_MESSAGE(!paths.empty(), "test setup: no joined path");
+    const JoinedPath& j = paths.front();
+    const int n = int(j.x.size());
+    for (int sp : {-1, n + 1})
+        CHECK_MESSAGE(!ps::techniqueSamples(j.x.data(), n, sp),
+                      describe(j) << ": techniqueSamples(x, " << n << ", " << sp
+                                  << "): expected false (s' outside 0 ... " << n << "), got true");
 }
 
 TEST_CASE("recursive MIS weights sum to 1 and equal the full-list weights to 1e-5 [3 pts]") {
@@ -90,5 +100,26 @@ TEST_CASE("recursive MIS weights sum to 1 and equal the full-list weights to 1e-
                 }
             CHECK_MESSAGE(worst <= 1e-5,
                           s << ": expected misWeightRecursive = misWeightFull (+- 1e-5), worst at " << where);
+        }
+    // Eq. 7.9, 7.10 by hand for a camera subpath whose z_0 is a camera model's point (a ray can hit
+    // it: t = 0 samples the path, c_0 = 1) and for the pinhole (c_0 = 0): z_0 with pdfRev / pdfFwd
+    // = 0.5, then B_2 = r_0^b (c_0 + B_1) with B_1 = 0.
+    for (const bool model : {true, false})
+        for (const ps::Heuristic h : {ps::Heuristic::Balance, ps::Heuristic::Power}) {
+            ps::Subpath z(3);
+            z[0].onCamera = model;
+            z[0].pinhole = !model;
+            for (ps::PathVertex& v : z) v.sp.n = Vec3(0, 0, 1);
+            z[0].pdfFwd = 1.0f, z[0].pdfRev = 0.5f;
+            z[1].pdfFwd = 2.0f, z[1].pdfRev = 1.0f;
+            z[2].pdfFwd = 3.0f, z[2].pdfRev = 1.0f;
+            for (size_t i = 0; i < 3; ++i) ps::updateMisSum(z, i, h);
+            const double expected = model ? (h == ps::Heuristic::Power ? 0.25 : 0.5) : 0.0;
+            CHECK_MESSAGE(std::abs(z[2].misSum - expected) <= 1e-7,
+                          "a camera subpath z_0 z_1 z_2, z_0 "
+                              << (model ? "a camera model's point (c_0 = 1)" : "the pinhole (c_0 = 0)")
+                              << ", r_0 = pdfRev / pdfFwd = 0.5, " << (h == ps::Heuristic::Power ? "power" : "balance")
+                              << " heuristic: expected B_2 = r_0^b (c_0 + B_1) = " << expected << ", got "
+                              << z[2].misSum);
         }
 }

@@ -128,6 +128,16 @@ TEST_CASE("no NaN or Inf in any scene of the course, and every image is lit [1 p
             CHECK_MESSAGE(total(r.mean) > 0.0, algo << " on " << name << ": expected a lit image, got a black one");
         }
     }
+    // A scene without lights: no light subpath, no light to connect to, a black image.
+    const ps::Scene dark = ps::parseScene(
+        "camera eye 0 1 -3  target 0 1 0  fov 60  resolution 8 8\n"
+        "material white diffuse albedo 0.5 0.5 0.5\n"
+        "quad -2 0 -2  -2 0 2  2 0 2  2 0 -2  material white\n",
+        "a floor without a light (test_robust.cpp)");
+    const Render r = render(dark, "bpt", 4, ps::testseed::seed(7502));
+    CHECK_MESSAGE((r.stats.bad() == 0 && total(r.mean) == 0.0),
+                  "bpt on a floor without a light: expected a black image and 0 NaN or Inf samples, got the total "
+                      << total(r.mean) << " and " << r.stats.bad() << " NaN or Inf");
 }
 
 TEST_CASE("the image does not depend on the number of threads [1 pt]") {
