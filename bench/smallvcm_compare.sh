@@ -5,30 +5,33 @@
 # bench/README.md, "Renders against SmallVCM", says how to build SmallVCM with the scenes' floor
 # as ours (one sed line) and lists the figures.
 #
-#   bench/smallvcm_compare.sh [--clock wall|cpu] [--algos LIST] SMALLVCM [SECONDS] [THREADS] [SCENE]
+#   bench/smallvcm_compare.sh [--clock wall|cpu] [--algos LIST] [--ref-algo A] SMALLVCM [SECONDS] [THREADS] [SCENE]
 #
 # SECONDS (default 20) per render, THREADS (default 2) for both renderers, SCENE 1 (default:
 # SmallVCM's -s 1, scenes/smallvcm-mirror.scene) or 2 (smallvcm-point.scene); LIST of pt, lt,
-# bpt, ppm (default pt,lt,bpt,ppm). The reference is pathspace's bpt for 8 x SECONDS (kept in
-# $OUT/reference.pfm and reused when present). --clock wall (default): wall-clock seconds of each
-# whole process, measured here; --clock cpu: CPU seconds of the render loop, all threads added
+# bpt, ppm, vcm, vcm-balance, vcm-bpm, vcm-ppm (default pt,lt,bpt,ppm), each against SmallVCM's
+# of the same name (vcm and vcm-balance against its vcm, vcm-bpm its bpm, vcm-ppm its ppm). The
+# reference is pathspace's A (default bpt; vcm where no connection samples a scene's caustics)
+# for 8 x SECONDS (kept in $OUT/reference.pfm and reused when present). --clock wall (default):
+# wall-clock seconds of each whole process, measured here; --clock cpu: CPU seconds of the render loop, all threads added
 # up, as each renderer reports them (pathspace render --clock cpu; SmallVCM's "done in", which is
 # clock(), the process's CPU time): fair when other jobs share the machine. Either way SmallVCM
 # is given a number of iterations (its -t counts CPU time: with 2 threads it would stop at half
 # the wall time given), chosen from its rate on a short run to fill SECONDS; the efficiency
 # 1 / (relMSE x seconds) evens out the difference left.
 set -euo pipefail
-CLOCK=wall; ALGOS=pt,lt,bpt,ppm
+CLOCK=wall; ALGOS=pt,lt,bpt,ppm; REF_ALGO=bpt
 while [[ $# -gt 0 && $1 == --* ]]; do
   case $1 in
     --clock) [[ ${2:-} == wall || ${2:-} == cpu ]] || { echo "smallvcm_compare: --clock wall|cpu" >&2; exit 2; }
              CLOCK=$2; shift 2 ;;
     --algos) ALGOS=${2:?--algos needs a list}; shift 2 ;;
-    --help|-h) sed -n '2,20p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    --ref-algo) REF_ALGO=${2:?--ref-algo needs an algorithm}; shift 2 ;;
+    --help|-h) sed -n '2,21p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "smallvcm_compare: unknown option $1" >&2; exit 2 ;;
   esac
 done
-if [[ $# -lt 1 ]]; then sed -n '2,20p' "$0" | sed 's/^# \{0,1\}//'; exit 2; fi
+if [[ $# -lt 1 ]]; then sed -n '2,21p' "$0" | sed 's/^# \{0,1\}//'; exit 2; fi
 SVCM=$(realpath "$1"); SECONDS_EACH=${2:-20}; THREADS=${3:-2}; SID=${4:-1}
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
 BUILD=${BUILD:-$ROOT/build}
@@ -37,8 +40,10 @@ case $SID in
   2) SCENE=$ROOT/scenes/smallvcm-point.scene ;;
   *) echo "smallvcm_compare: SCENE is 1 or 2, not $SID" >&2; exit 2 ;;
 esac
+# SmallVCM's name of the same algorithm.
+svcm_algo() { case $1 in pt | lt | bpt | ppm) echo "$1" ;; vcm | vcm-balance) echo vcm ;; vcm-bpm) echo bpm ;; vcm-ppm) echo ppm ;; esac; }
 for a in ${ALGOS//,/ }; do
-  [[ $a == pt || $a == lt || $a == bpt || $a == ppm ]] || { echo "smallvcm_compare: algorithm $a: pt, lt, bpt or ppm" >&2; exit 2; }
+  [[ -n $(svcm_algo "$a") ]] || { echo "smallvcm_compare: algorithm $a: pt, lt, bpt, ppm, vcm, vcm-balance, vcm-bpm or vcm-ppm" >&2; exit 2; }
 done
 OUT=${OUT:-$ROOT/build/smallvcm-compare-$SID}
 [[ -x $SVCM ]] || { echo "smallvcm_compare: $SVCM is not an executable" >&2; exit 2; }
@@ -53,8 +58,8 @@ calc() { awk "BEGIN { print $1 }"; }  # floating-point arithmetic (awk is in eve
 ours_seconds() { sed -E 's/.* spp in ([0-9.]+) .*/\1/' <<<"$1"; }
 svcm_seconds() { sed -nE 's/.*done in ([0-9.]+) s.*/\1/p' <<<"$1"; }
 if [[ ! -f reference.pfm ]]; then
-  echo "reference: pathspace bpt for $((8 * SECONDS_EACH)) s ($CLOCK clock) ..."
-  "$BUILD/pathspace" render "$SCENE" --algo bpt --time $((8 * SECONDS_EACH)) --clock $CLOCK --threads "$THREADS" \
+  echo "reference: pathspace $REF_ALGO for $((8 * SECONDS_EACH)) s ($CLOCK clock) ..."
+  "$BUILD/pathspace" render "$SCENE" --algo "$REF_ALGO" --time $((8 * SECONDS_EACH)) --clock $CLOCK --threads "$THREADS" \
     --seed 1000 --out reference.pfm --no-progress 2>&1 | grep ' spp in '
 fi
 unit="wall-clock s of each process"; [[ $CLOCK == cpu ]] && unit="CPU s of the render loop, all threads"
@@ -62,6 +67,7 @@ echo "scene $SID: $SCENE; $THREADS thread(s), $SECONDS_EACH s per render; clock:
 echo "load average at the start: $(cut -d' ' -f1-3 /proc/loadavg)"
 printf '%-5s %-10s %6s %8s %12s %10s %10s %10s\n' algo renderer spp seconds samples/s relMSE trimmed efficiency
 for a in ${ALGOS//,/ }; do
+  sa=$(svcm_algo "$a")
   s=$(now)
   line=$("$BUILD/pathspace" render "$SCENE" --algo $a --time "$SECONDS_EACH" --clock $CLOCK --threads "$THREADS" \
            --out ours-$a.pfm --no-progress 2>&1 | grep ' spp in ')
@@ -70,13 +76,13 @@ for a in ${ALGOS//,/ }; do
   if [[ $CLOCK == cpu ]]; then time_ours=$(ours_seconds "$line"); else time_ours=$(calc "$e - $s"); fi
   # SmallVCM: 2 x THREADS iterations to measure its rate, then enough to fill SECONDS_EACH.
   n0=$((2 * THREADS)); s=$(now)
-  probe=$(OMP_NUM_THREADS=$THREADS "$SVCM" -s $SID -a $a -i $n0 -o svcm-probe.hdr)
+  probe=$(OMP_NUM_THREADS=$THREADS "$SVCM" -s $SID -a "$sa" -i $n0 -o svcm-probe.hdr)
   e=$(now)
   if [[ $CLOCK == cpu ]]; then per=$(calc "$(svcm_seconds "$probe") / $n0"); else per=$(calc "($e - $s) / $n0"); fi
   n=$(calc "int($SECONDS_EACH / $per / $THREADS + 0.5) * $THREADS")
   [[ $n -ge $THREADS ]] || n=$THREADS
   s=$(now)
-  run=$(OMP_NUM_THREADS=$THREADS "$SVCM" -s $SID -a $a -i $n -o svcm-$a.hdr)
+  run=$(OMP_NUM_THREADS=$THREADS "$SVCM" -s $SID -a "$sa" -i $n -o svcm-$a.hdr)
   e=$(now)
   if [[ $CLOCK == cpu ]]; then time_svcm=$(svcm_seconds "$run"); else time_svcm=$(calc "$e - $s"); fi
   for r in ours svcm; do

@@ -291,6 +291,23 @@ if wanted 11; then
   done_fig "$d/lens-pyramid-unweighted.png, lens-pyramid-weighted.png"
 fi
 
+# Lesson 13: pt, bpt, ppm and vcm at equal time on the Cornell spheres (glass and mirror) and on
+# the caustic seen through a window pane, 2 seeds, in seconds of CPU time (--clock cpu: the course
+# machine is shared); the references: pt on the Cornell spheres, vcm itself on the pane (no unbiased
+# technique samples its caustic well: lessons/13-vcm README, "Expected output").
+if wanted 13; then
+  d="$(dest 13-vcm)"
+  for c in "cornell-spheres spheres pt 1800" "sds-caustic sds vcm 1800"; do
+    set -- $c
+    s="$(scene "$1" 128)"; r="$work/13-$2-ref.pfm"
+    "$ps" render "$s" --algo "$3" --time "$(t "$4" 0.5)" --clock cpu --seed 99 --out "$r" --no-progress >&2
+    converge "$s" "$r" "$work/13-$2" --algos pt,bpt,ppm,vcm --time "$(t 60 0.3)" --clock cpu --seeds 2
+    cp "$work/13-$2/equal-time.png" "$d/$2-equal-time.png"; cp "$work/13-$2/convergence.svg" "$d/$2-converge.svg"
+    cp "$work/13-$2/convergence.csv" "$d/$2-convergence.csv"; cp "$work/13-$2/efficiency.md" "$d/$2-efficiency.md"
+    done_fig "$d/$2-equal-time.png, $2-converge.svg, $2-convergence.csv, $2-efficiency.md"
+  done
+fi
+
 # Every image a slide deck shows from a lesson folder must be one this script makes (so one command
 # remakes all of them); checked when every lesson was run, with the reference.
 if [ ${#only[@]} -eq 0 ] && [ "$handout" = 0 ]; then

@@ -55,12 +55,10 @@ fi
 mkdir -p "$dest"
 cd "$src"
 git ls-files -z --cached --others --exclude-standard |
-  grep -zv -E '^(solutions/|\.ci/|tests/course/|scripts/handout\.sh|scripts/check-skeleton\.sh|scripts/grade-bench\.sh|scripts/gradescope\.sh|scripts/classroom\.sh|tools/gradescope/|tools/grade/(main|lesson|process|sandbox)|tools/photon_figures\.cpp|lessons/11-classics/filtered_pm\.cpp|cmake/grader)' |
+  grep -zv -E '^(solutions/|\.ci/|tests/course/|scripts/handout\.sh|scripts/check-skeleton\.sh|scripts/grade-bench\.sh|scripts/gradescope\.sh|scripts/classroom\.sh|tools/gradescope/|tools/grade/(main|lesson|process|sandbox)|tools/photon_figures\.cpp|cmake/grader)' |
   xargs -0 -I{} cp --parents {} "$dest"/
 # (tools/photon_figures.cpp draws lesson 8's figures with the reference's gather: lecturer only,
-# like every tool whose target the handout's tools/CMakeLists.txt leaves out below. So is
-# lessons/11-classics/filtered_pm.cpp, `pm --paths`, which re-implements lesson 8's camera side and
-# photon storage to carry path states: the handout's pm refuses --paths.)
+# like every tool whose target the handout's tools/CMakeLists.txt leaves out below.)
 # The grader needs the reference; the handout has none.
 sed -i '/^# grade: the autograder/,$d' "$dest/tools/CMakeLists.txt"
 # The student's README (tools/handout/README.md) instead of the lecturer's, with the lessons

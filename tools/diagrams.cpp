@@ -1002,6 +1002,85 @@ Svg familyTree() {
 
 }  // namespace
 
+// Lesson 13: a merge and its neighbours in the MIS sum. Top: the light subpath's vertex y_2 lands
+// within r of the camera subpath's vertex z_2, and the merge stands for the path x_0 .. x_4 whose
+// vertex x_2 is y_2 seen from the light and z_2 seen from the camera (13.1-13.3). Bottom: the
+// eight techniques of that path of length 4: five connections (7.7) and three merges (13.6), the
+// merge at x_2 with its neighbours: the connections at the edges through x_2 and the merges at x_1
+// and x_3.
+void techniqueStrip(Svg& s, double bx, double y0, bool merge, int at, int frame, const std::string& caption) {
+    // x_0 (light) .. x_4 (camera), left to right.
+    P v[] = {{bx + 10, y0}, {bx + 34, y0 + 70}, {bx + 62, y0 + 10}, {bx + 90, y0 + 72}, {bx + 108, y0 + 20}};
+    if (frame == 1) s.rect({bx - 4, y0 - 22}, {bx + 114, y0 + 128}, "#fff4d6", "#d98a00", 1, 1.5);
+    if (frame == 2) s.rect({bx - 4, y0 - 22}, {bx + 114, y0 + 128}, "none", kInk, 1, 3);
+    s.line(v[0] - P{12, 0}, v[0] + P{12, 0}, kLight, 6);
+    for (int e = 0; e < 4; ++e) {
+        // merge at `at`: edges before x_at are the light's, from x_at on the camera's; connection
+        // s = at: edge at-1 -> at is the joining edge.
+        const bool lightEdge = merge ? e < at : e + 1 < at;
+        const bool joined = !merge && e + 1 == at;
+        s.line(v[e], v[e + 1], joined ? kGrey : lightEdge ? kLight : kCamera, 3, joined ? "7 5" : nullptr);
+    }
+    for (int k = 0; k < 5; ++k) {
+        const bool light = merge ? k < at : k < at;
+        if (k == 4) s.circle(v[k], 7, light ? kLight : kCamera);
+        else s.dot(v[k], light ? kLight : kCamera, 6);
+    }
+    if (merge) s.circle(v[at], 14, "none", kInk, 1.8);
+    s.text({bx + 55, y0 + 112}, caption, "middle", 18, kInk, true);
+}
+
+Svg mergeTechniques() {
+    Svg s(1000, 700);
+    // The merge itself: a surface from (340, 235) to (620, 195), slope -1/7.
+    auto onSurface = [](double x) { return P{x, 235 - (x - 340) / 7}; };
+    P y0{80, 70}, y1{250, 250}, y2 = onSurface(462), z2 = onSurface(500), z3{690, 90}, z4{900, 190};
+    s.line(y0 - P{50, 0}, y0 + P{50, 0}, kLight, 9);
+    s.text(y0 + P{0, -16}, "light", "middle", 18, kLight);
+    s.circle(z2, 62, "#1f5fbf", kCamera, 1.5, 0.08);
+    s.line(onSurface(330), onSurface(640), kInk, 4);  // the surface the merge happens on
+    s.line(z2, z2 + P{0, 62}, kGrey, 1.5, "5 4");
+    s.text(z2 + P{8, 50}, "r", "start", 20, kGrey, true);
+    s.arrow(y0, y1, kLight, 3);
+    s.arrow(y1, y2, kLight, 3);
+    s.arrow(z4, z3, kCamera, 3);
+    s.arrow(z3, z2, kCamera, 3);
+    s.dot(y1, kLight, 7);
+    s.dot(y2, kLight, 7);
+    s.dot(z3, kCamera, 7);
+    s.dot(z2, kCamera, 7);
+    s.circle(z4, 9, kCamera);
+    s.text(y0 + P{-6, 36}, "x_0 = y_0", "end", 20, kInk, true);
+    s.text(y1 + P{0, 34}, "x_1 = y_1", "middle", 20, kInk, true);
+    s.text(y2 + P{-24, -22}, "y_2", "middle", 20, kLight, true);
+    s.text(z2 + P{30, 40}, "z_2", "start", 20, kCamera, true);
+    s.text(z3 + P{0, -18}, "x_3 = z_1", "middle", 20, kInk, true);
+    s.text(z4 + P{0, 36}, "x_4 = z_0", "middle", 20, kInk, true);
+    s.text({560, 310}, "x_2: y_2 seen from the light side, z_2 from the camera side", "middle", 18, kGrey);
+    s.text({30, 350},
+           "P(‖y_2 − z_2‖ ≤ r) ≈ π r² p_L(x_2)   so   N p_{M,2} = η p_L(x_2) p_{2,3} = η p_E(x_2) p_{3,2},"
+           "   η = N π r²",
+           "start", 18);
+    // The techniques of the path: connections (7.7) and merges (13.6).
+    const char* conn[] = {"(0,5)", "(1,4)", "(2,3)", "(3,2)", "(4,1)"};
+    for (int c = 0; c < 5; ++c) techniqueStrip(s, 12 + 120 * c, 410, false, c, c == 2 || c == 3 ? 1 : 0, conn[c]);
+    const char* merges[] = {"M at x_1", "M at x_2", "M at x_3"};
+    for (int m = 0; m < 3; ++m) techniqueStrip(s, 632 + 120 * m, 410, true, m + 1, m == 1 ? 2 : 1, merges[m]);
+    s.line({620, 390}, {620, 545}, "#dddddd", 2);
+    s.text({30, 590}, "w_{M,2} = (η p_L(x_2) p_{2,3})^b / (the same for all 5 connections and 3 merges)", "start", 18);
+    s.text({30, 620}, "framed: the merge at x_2; shaded: its neighbours, which share an edge or an end with it",
+           "start", 18, kGrey);
+    s.line({30, 670}, {75, 670}, kLight, 3.5);
+    s.text({82, 676}, "light subpath", "start", 18);
+    s.line({250, 670}, {295, 670}, kCamera, 3.5);
+    s.text({302, 676}, "camera subpath", "start", 18);
+    s.line({480, 670}, {525, 670}, kGrey, 3.5, "7 5");
+    s.text({532, 676}, "connection", "start", 18);
+    s.circle({700, 670}, 12, "none", kInk, 1.8);
+    s.text({720, 676}, "merge", "start", 18);
+    return s;
+}
+
 int main(int argc, char** argv) {
     std::string dir = argc > 1 ? argv[1] : "lessons";
     if (argc > 2 || dir == "-h" || dir == "--help") {
@@ -1030,6 +1109,7 @@ int main(int argc, char** argv) {
     figures.push_back({"10-adrrs/weight-window.svg", weightWindow()});
     figures.push_back({"11-classics/family-tree.svg", familyTree()});
     figures.push_back({"12-path-guiding/guiding-field.svg", guidingField()});
+    figures.push_back({"13-vcm/merge-techniques.svg", mergeTechniques()});
     for (const Figure& f : figures) {
         std::string path = dir + "/" + f.path;
         std::error_code ec;

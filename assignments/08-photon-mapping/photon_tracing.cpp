@@ -16,7 +16,7 @@ float photonSurvival(const Color& throughput, int bounces) {
 }
 
 void tracePhoton(const Scene& scene, Rng& rng, int maxDepth, MapKind kind, int emitted, std::vector<Photon>& out,
-                 const ContinuationRule& continuation) {
+                 const PhotonVisitor& visit, const ContinuationRule& continuation) {
     // TODO(08) Eq. 8.1-8.3: lightWalk(scene, rng, options, visitor), the options {maxDepth,
     //          photonSurvival} with `continuation` as their continuation rule. The visitor
     //          goes on at y0 (bounces 0). At a surface (bounces >= 1) with material m:
@@ -25,7 +25,10 @@ void tracePhoton(const Scene& scene, Rng& rng, int maxDepth, MapKind kind, int e
     //            for the global map always; for the caustic map only if every surface before this
     //            one was specular and there was at least one (L S+ D). The caustic walk ends at
     //            its first non-specular surface, the global walk goes on.
-    (void)scene; (void)rng; (void)maxDepth; (void)kind; (void)emitted; (void)out; (void)continuation;
+    //          Last, at every vertex, the photon visitor if there is one (visit(v, the photon to
+    //          store or nullptr)): its false drops that photon and ends the walk.
+    (void)scene; (void)rng; (void)maxDepth; (void)kind; (void)emitted; (void)out; (void)visit;
+    (void)continuation;
     (void)PS_TODO("lesson 08: tracePhoton", 0);
 }
 

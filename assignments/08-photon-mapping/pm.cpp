@@ -9,15 +9,16 @@ namespace ps {
 
 Color gatherRadiance(const Scene& scene, const SurfacePoint& sp, const Vec3& wi, Color weight, int bounces, Rng& rng,
                      const PhotonMap& global, const PmOptions& opt, float* hitDistance) {
-    // TODO(08) Eq. 8.11, the last term: the gather ray scene.spawnRay(sp, wi). For bounces + 1,
-    //          bounces + 2, ... up to opt.maxDepth, while weight is not black: intersect (a miss:
-    //          black); the first hit's distance goes to *hitDistance (if given; infinity when
-    //          nothing is hit). At a non-specular surface y: return weight * radianceEstimate(
-    //          global, y, its material, -ray direction, opt.globalEstimate). At a specular one:
-    //          sampleBSDF(material, y.n, -ray direction, u, uLobe, Transport::Radiance, s)
-    //          (u = rng.uniform2() drawn before uLobe = rng.uniform(); a failed sample: black),
-    //          weight *= s.weight, and go on from y in direction s.wi. Emission met on the way
-    //          is left out.
+    // TODO(08) Eq. 8.11, the last term, on lesson 3's camera walk resumed at the gather ray
+    //          (cameraWalk from a WalkStart: the ray scene.spawnRay(sp, wi), what it carries,
+    //          the k of its first vertex) with no Russian roulette (alwaysSurvive) and
+    //          opt.maxDepth. The first vertex's distance goes to *hitDistance (if given; infinity
+    //          when nothing is hit). At a non-specular surface y: the radiance is the vertex's
+    //          beta times radianceEstimate(global, y, its material, towards sp, opt.globalEstimate),
+    //          or the gather visitor's global estimate there if it has one; the walk ends. A
+    //          specular surface: the walk samples it and goes on.
+    //          Pitfalls: emission met on the way is left out (next-event estimation and the
+    //          caustic map have it); the start's k counts the bounces before sp.
     (void)scene; (void)sp; (void)wi; (void)weight; (void)bounces; (void)rng; (void)global; (void)opt;
     if (hitDistance) *hitDistance = std::numeric_limits<float>::infinity();
     return PS_TODO("lesson 08: gatherRadiance", Color(0.0f));
@@ -41,6 +42,11 @@ Color LiPhotonMap(const Scene& scene, const Ray& ray, Rng& rng, const PhotonMaps
     //                  and add gatherRadiance(scene, x, s.wi, v.beta * s.weight, v.bounces, rng,
     //                  maps.global, opt);
     //            and end the walk.
+    //          The gather visitor (opt.visitor): the emission counts only where it says so
+    //          (countsEmission), the light sample likewise (countsLightSample; drawn either way),
+    //          its caustic estimate, if it has one, replaces the caustic map's, and the walk goes
+    //          on through a specular vertex, or from x to (c), only where it says so
+    //          (continuesPast).
     (void)scene; (void)ray; (void)rng; (void)maps; (void)opt;
     return PS_TODO("lesson 08: LiPhotonMap", Color(0.0f));
 }

@@ -143,6 +143,12 @@ void randomWalk(const Scene& scene, const WalkStart& start, BSDFSampling scatter
 // BSDF sampling in Transport::Radiance (Eq. 3.3-3.5). Lesson 7's camera subpath is this walk too.
 void cameraWalk(const Scene& scene, const Ray& ray, Rng& rng, const WalkOptions& opt, const WalkVisitor& visit);
 
+// The camera walk resumed in the middle of a camera path (plumbing, walks.cpp): randomWalk from
+// `start` (its ray, beta, bounces, ...) with the camera walk's BSDF sampling. For an algorithm
+// that follows a ray of its own from a camera vertex with the walk's rules (lesson 8's final
+// gather: start.bounces is the gather ray's first vertex's k, start.beta the weight it carries).
+void cameraWalk(const Scene& scene, const WalkStart& start, Rng& rng, const WalkOptions& opt, const WalkVisitor& visit);
+
 // The solid-angle density with which the walk leaves the non-delta vertex v towards wi: its
 // direction sampler's pdf, or pdfBSDF (plumbing, walks.cpp).
 float pdfWalk(const Scene& scene, const WalkVertex& v, const Vec3& wi);

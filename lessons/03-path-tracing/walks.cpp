@@ -1,6 +1,6 @@
 // Lesson 3 — the walks built on randomWalk (plumbing: read it, nothing to write here): the camera
-// walk, no roulette, and the density with which a walk leaves a vertex. Interface:
-// lessons/03-path-tracing/walk.h.
+// walk (from a camera ray, or resumed from a WalkStart), no roulette of its own, and the density
+// with which a walk leaves a vertex. Interface: lessons/03-path-tracing/walk.h.
 #include "03-path-tracing/walk.h"
 
 namespace ps {
@@ -15,6 +15,11 @@ bool sampleRadianceBSDF(const Material& m, const Vec3& n, const Vec3& wo, const 
 void cameraWalk(const Scene& scene, const Ray& ray, Rng& rng, const WalkOptions& opt, const WalkVisitor& visit) {
     WalkStart start;
     start.ray = ray;
+    randomWalk(scene, start, sampleRadianceBSDF, rng, opt, visit);
+}
+
+void cameraWalk(const Scene& scene, const WalkStart& start, Rng& rng, const WalkOptions& opt,
+                const WalkVisitor& visit) {
     randomWalk(scene, start, sampleRadianceBSDF, rng, opt, visit);
 }
 

@@ -195,6 +195,12 @@ struct BptOptions {
     // it). The random numbers of s = 1 are drawn before the test, so every technique meets the
     // same numbers either way. An extra technique asks it too, with its own (s, t).
     std::function<bool(const Subpath& light, const Subpath& camera, int s, int t)> techniqueFilter;
+    // More techniques than (s, t) for the same paths (a caller whose estimator also samples them
+    // another way): if set, each connection's weight w_{s,t} (Eq. 7.8) becomes
+    // techniqueWeight(w_{s,t}, y, s, z, t, rev), the weight among all of the caller's techniques;
+    // the arguments are those of misWeightRecursive.
+    std::function<float(float w, const PathVertex* y, int s, const PathVertex* z, int t, const ReversePdfs& rev)>
+        techniqueWeight;
 };
 
 // What one pixel sample's techniques gave, for per-technique images (Veach's pyramid).
@@ -219,6 +225,12 @@ using ExtraTechnique = void (*)(const Scene& scene, const Subpath& light, Rng& r
 // and so do the extra techniques' (t = 0). recorder may be null.
 Color bptSample(const Scene& scene, const Vec2& raster, Rng& rng, const BptOptions& opt, const SplatTarget& splat,
                 TechniqueRecorder* recorder);
+
+// bptSample's techniques (s, t), t >= 1, for two subpaths traced elsewhere (the camera subpath
+// through `raster`): the same connections, random numbers and weights, for a caller that keeps
+// its subpaths (bptSample is cameraSubpath, lightSubpath, then this).
+Color connectSubpaths(const Scene& scene, const Subpath& camera, const Subpath& light, const Vec2& raster, Rng& rng,
+                      const BptOptions& opt, const SplatTarget& splat, TechniqueRecorder* recorder);
 
 // The pruning decisions of Eq. 7.12 for this scene, one line each (empty if !opt.prune).
 std::vector<std::string> bptLeftOut(const Scene& scene, const BptOptions& opt);

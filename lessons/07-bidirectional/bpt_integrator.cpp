@@ -53,6 +53,14 @@ Color bptSample(const Scene& scene, const Vec2& raster, Rng& rng, const BptOptio
     const int maxDepth = scene.settings.maxDepth;
     cameraSubpath(scene, rng, raster, maxDepth, opt.heuristic, camera);
     lightSubpath(scene, rng, maxDepth, opt.heuristic, light);
+    const Color L = connectSubpaths(scene, camera, light, raster, rng, opt, splat, recorder);
+    for (const auto& extra : Registry<ExtraTechnique>::inOrder()) extra.value(scene, light, rng, opt, splat, recorder);
+    return L;
+}
+
+Color connectSubpaths(const Scene& scene, const Subpath& camera, const Subpath& light, const Vec2& raster, Rng& rng,
+                      const BptOptions& opt, const SplatTarget& splat, TechniqueRecorder* recorder) {
+    const int maxDepth = scene.settings.maxDepth;
     const Pruning prune = pruning(scene, opt);
     Color L(0.0f);
     const int nCamera = static_cast<int>(camera.size()), nLight = static_cast<int>(light.size());
@@ -75,8 +83,9 @@ Color bptSample(const Scene& scene, const Vec2& raster, Rng& rng, const BptOptio
             const Connection c = connect(scene, light, camera, s, t, uLight, uPos);
             if (!c.valid) continue;
             const PathVertex* y = s == 1 ? &c.sampledLight : light.data();
-            const float w = opt.recursive ? misWeightRecursive(y, s, camera.data(), t, c.rev, opt.heuristic)
-                                          : misWeightFull(y, s, camera.data(), t, c.rev, opt.heuristic);
+            float w = opt.recursive ? misWeightRecursive(y, s, camera.data(), t, c.rev, opt.heuristic)
+                                    : misWeightFull(y, s, camera.data(), t, c.rev, opt.heuristic);
+            if (opt.techniqueWeight) w = opt.techniqueWeight(w, y, s, camera.data(), t, c.rev);
             const Color weighted = c.value * w;
             if (t == 1) {
                 splat.add(c.raster, weighted);
@@ -87,7 +96,6 @@ Color bptSample(const Scene& scene, const Vec2& raster, Rng& rng, const BptOptio
             }
         }
     }
-    for (const auto& extra : Registry<ExtraTechnique>::inOrder()) extra.value(scene, light, rng, opt, splat, recorder);
     return L;
 }
 

@@ -71,26 +71,41 @@ const char* filterName(Filter f) {
     return "?";
 }
 
-PhotonMap tracePhotonMap(const Scene& scene, MapKind kind, int emitted, int maxDepth, uint64_t seed, uint32_t iteration,
-                         SampleStats& stats, const PhotonRules& rules) {
-    PhotonMap map;
-    map.emitted = emitted;
-    if (emitted <= 0) return map;
+std::vector<PhotonMap> tracePhotonPopulations(const Scene& scene, MapKind kind, int emitted, int maxDepth,
+                                              uint64_t seed, uint32_t iteration, SampleStats& stats,
+                                              const std::function<PhotonVisitor()>& newVisitor,
+                                              const PhotonRules& rules) {
+    std::vector<PhotonMap> maps(1);
+    maps[0].emitted = emitted;
+    if (emitted <= 0) return maps;
     std::vector<std::vector<Photon>> perTask(size_t(taskCount(emitted)));
     runTasks(TaskLoop(emitted, seed, iteration), stats, [&](int, Rng& rng, Task& task) {
-        tracePhoton(scene, rng, maxDepth, kind, emitted, perTask[task.index], rules ? rules() : ContinuationRule());
+        tracePhoton(scene, rng, maxDepth, kind, emitted, perTask[task.index], newVisitor ? newVisitor() : nullptr,
+                    rules ? rules() : ContinuationRule());
     });
-    std::vector<Photon> photons;
-    size_t n = 0;
-    for (const auto& list : perTask) n += list.size();
-    photons.reserve(n);
-    // A photon whose power is NaN or Inf is counted (as a sample would be) and not stored.
+    // The photons of each population in path order. A photon whose power is NaN or Inf is counted
+    // (as a sample would be) and not stored.
+    std::vector<std::vector<Photon>> populations(1);
     for (const auto& list : perTask)
-        for (const Photon& ph : list)
-            if (isFinite(ph.power)) photons.push_back(ph);
-            else checkSample(ph.power, stats);
-    buildPhotonMap(std::move(photons), map);
-    return map;
+        for (const Photon& ph : list) {
+            if (!isFinite(ph.power)) {
+                checkSample(ph.power, stats);
+                continue;
+            }
+            if (ph.population >= populations.size()) populations.resize(size_t(ph.population) + 1);
+            populations[ph.population].push_back(ph);
+        }
+    maps.resize(populations.size());
+    for (size_t p = 0; p < populations.size(); ++p) {
+        maps[p].emitted = emitted;
+        buildPhotonMap(std::move(populations[p]), maps[p]);
+    }
+    return maps;
+}
+
+PhotonMap tracePhotonMap(const Scene& scene, MapKind kind, int emitted, int maxDepth, uint64_t seed, uint32_t iteration,
+                         SampleStats& stats, const PhotonRules& rules) {
+    return std::move(tracePhotonPopulations(scene, kind, emitted, maxDepth, seed, iteration, stats, nullptr, rules)[0]);
 }
 
 }  // namespace ps

@@ -21,12 +21,14 @@ namespace ps {
 
 // ---- the photon (framework of this lesson: photon_map.cpp) ----
 
-// One stored photon: 28 bytes. The direction it arrived from is kept in 2 x 16 bits
+// One stored photon: 32 bytes. The direction it arrived from is kept in 2 x 16 bits
 // (octahedral encoding, error below 1e-4 rad).
 struct Photon {
     Vec3 p;                    // where it landed
     Color power;               // Delta Phi, its power in watts (Eq. 8.2)
     uint16_t dir[2] = {0, 0};  // wLight, unit, back towards where it came from (encodeDirection)
+    uint8_t population = 0;    // the class a photon visitor sorts it into (its path's vertex types,
+                               // say); pm has one: 0
     Vec3 wLight() const;       // decodes dir
     void setWLight(const Vec3& w);
 };
@@ -144,15 +146,23 @@ float photonSurvival(const Color& throughput, int bounces);
 
 enum class MapKind { Caustic, Global };
 
+// The photon visitor: what a later algorithm does at every vertex y_k of one photon's walk (y_0
+// included), after pm's own decision there: `photon` is the photon about to be stored at y_k
+// (nullptr where none is), whose population it may set. Returning false drops that photon and
+// ends the walk (nothing after y_k can matter to the algorithm). One visitor serves one walk (it
+// may keep the path's state).
+using PhotonVisitor = std::function<bool(const WalkVertex& v, Photon* photon)>;
+
 // One photon path (Eq. 8.1-8.3): lesson 5's lightWalk with photonSurvival; at every vertex with
 // bounces >= 1 on a non-specular material, a photon (position, power = the particle's beta / N
 // with N = emitted, wLight). Global map: every such vertex. Caustic map: only a vertex reached
 // from the light through specular bounces alone (L S+ D: bounces >= 2, every earlier surface
-// specular); the walk ends there, and at the first non-specular surface in any case. Appends to
-// out. `continuation` (lesson 3's continuation rule, empty: none) is the walk's: a photon path may
-// split, or end at a vertex, by a rule of the caller's; its photons carry the power it leaves them.
+// specular); the walk ends there, and at the first non-specular surface in any case. With a
+// visitor, each vertex is handed to it last. `continuation` (lesson 3's continuation rule, empty:
+// none) is the walk's: a photon path may split, or end at a vertex, by a rule of the caller's; its
+// photons carry the power it leaves them. Appends to out.
 void tracePhoton(const Scene& scene, Rng& rng, int maxDepth, MapKind kind, int emitted, std::vector<Photon>& out,
-                 const ContinuationRule& continuation = {});
+                 const PhotonVisitor& visit = nullptr, const ContinuationRule& continuation = {});
 
 // Makes the continuation rule of one photon path (it may keep a count of the path's own).
 using PhotonRules = std::function<ContinuationRule()>;
@@ -162,6 +172,12 @@ using PhotonRules = std::function<ContinuationRule()>;
 // number of threads. `rules` (if set) makes every path's continuation rule.
 PhotonMap tracePhotonMap(const Scene& scene, MapKind kind, int emitted, int maxDepth, uint64_t seed, uint32_t iteration,
                          SampleStats& stats, const PhotonRules& rules = {});
+// The same with a photon visitor (a fresh one per photon path, from newVisitor): one map per
+// population, maps[p] holding the photons of population p (in path order; empty where none).
+std::vector<PhotonMap> tracePhotonPopulations(const Scene& scene, MapKind kind, int emitted, int maxDepth,
+                                              uint64_t seed, uint32_t iteration, SampleStats& stats,
+                                              const std::function<PhotonVisitor()>& newVisitor,
+                                              const PhotonRules& rules = {});
 
 // ---- the pm integrator (pm.cpp, Eq. 8.11) ----
 
@@ -170,6 +186,28 @@ struct PhotonMaps {
 };
 
 struct IrradianceCache;
+
+// The gather visitor: a later algorithm's say in pm's camera side (Eq. 8.11), term by term (its
+// own photon maps, sorted by population, say). The camera walk reaches the first non-specular
+// vertex x through specular bounces alone; each hook sees the vertex its term is taken at, whose
+// bounces say how many specular vertices came before. An empty hook leaves pm's term as it is.
+struct GatherVisitor {
+    std::function<bool(const WalkVertex& v)> emission;                     // whether the emission found at v counts
+    std::function<bool(const WalkVertex& x)> lightSample;                  // whether x's light sample counts (its
+                                                                           // numbers are drawn either way)
+    std::function<Color(const WalkVertex& x, const Material& m)> caustic;  // the caustic estimate at x
+    // The estimate at the final gather's non-specular hit y (its bounces yBounces) towards the
+    // gather ray, gathered from x (xBounces): the global map's radiance there.
+    std::function<Color(const SurfacePoint& x, int xBounces, const SurfacePoint& y, const Material& m, const Vec3& wo,
+                        int yBounces)>
+        global;
+    // Whether the walk goes on past v: through a specular v, or from x to its final gather (false
+    // where nothing after v can count for the algorithm).
+    std::function<bool(const WalkVertex& v)> goesOn;
+    bool countsEmission(const WalkVertex& v) const { return !emission || emission(v); }
+    bool countsLightSample(const WalkVertex& x) const { return !lightSample || lightSample(x); }
+    bool continuesPast(const WalkVertex& v) const { return !goesOn || goesOn(v); }
+};
 
 struct PmOptions {
     EstimateOptions causticEstimate;  // the caustic map's (sharp: few photons, small radius)
@@ -181,12 +219,22 @@ struct PmOptions {
     const IrradianceCache* cache = nullptr;
     int gatherSide = 6;                // a new record gathers gatherSide^2 stratified rays (Eq. 8.18)
     float minR = 1.0f, maxR = 100.0f;  // a record's R is clamped to [minR, maxR] (Eq. 8.18)
+    GatherVisitor visitor;             // a later algorithm's terms (empty: pm's own)
 };
 
-// Final gathering's ray (the last term of Eq. 8.11): leaves sp in direction wi with throughput
-// `weight`; at a specular surface it samples the BSDF (sampleBSDF, Transport::Radiance; the
-// sample's weight multiplied into `weight`) and goes on; at the first non-specular surface y it
-// returns weight * radianceEstimate(global, y, y's material, -ray direction, opt.globalEstimate).
+// pm's settings (plumbing, pm_integrator.cpp), for every algorithm that renders as pm does: the
+// estimates' settings in the scene's own length unit (scene.radius), the photon paths per map and
+// iteration (as many as the image has pixels, at least 8192), and each map's seed for a render's
+// seed (the global and the caustic map trace independent paths).
+PmOptions pmOptions(const Scene& scene);
+int photonsPerMap(const Image& out);
+uint64_t photonSeed(uint64_t seed, MapKind kind);
+
+// Final gathering's ray (the last term of Eq. 8.11): lesson 3's camera walk resumed at sp, leaving
+// it in direction wi with throughput `weight`, without Russian roulette; at a specular surface the
+// walk samples the BSDF (Transport::Radiance) and goes on; at the first non-specular surface y it
+// returns the walk's beta there times radianceEstimate(global, y, y's material, -ray direction,
+// opt.globalEstimate) (or the gather visitor's global estimate there, if it has one).
 // Black if the ray leaves the scene, a sample fails, the weight becomes black, or it would hit
 // more than opt.maxDepth - bounces surfaces (bounces: those the path made before sp). Emission met
 // on the way is left out. hitDistance (if not null): the distance from sp to the first surface
@@ -203,7 +251,9 @@ Color gatherRadiance(const Scene& scene, const SurfacePoint& sp, const Vec3& wi,
 // (gatherRadiance; emission met on the way is left out: next-event estimation and the caustic map
 // have it). With opt.cache at a Lambertian x whose point some record covers (interpolateIrradiance
 // with the normal on wo's side), the final gather is albedo / pi * the interpolated irradiance
-// instead. The walk ends at x.
+// instead. The walk ends at x. The gather visitor's hooks (opt.visitor), where set, decide whether
+// the emission and the light sample count, give the caustic estimate instead of the map's, and
+// end the walk at a specular vertex or before x's final gather.
 Color LiPhotonMap(const Scene& scene, const Ray& ray, Rng& rng, const PhotonMaps& maps, const PmOptions& opt);
 
 // ---- irradiance caching (irradiance_cache.cpp, Eq. 8.15-8.18) ----

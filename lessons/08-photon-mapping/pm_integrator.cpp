@@ -15,14 +15,31 @@
 
 namespace ps {
 
-namespace {
-
 // Photon paths emitted per iteration for each map: as many as the image has pixels (as lesson 5's
 // light tracer traces light paths), at least kMinPhotons.
 constexpr int kMinPhotons = 8192;
 int photonsPerMap(const Image& out) { return std::max(kMinPhotons, out.width * out.height); }
-constexpr uint64_t kGlobalSalt = 0x8A1F0C3D5B7E9246ull, kCausticSalt = 0x3C6EF372FE94F82Bull,
-                   kCacheSalt = 0xA54FF53A5F1D36F1ull;
+
+uint64_t photonSeed(uint64_t seed, MapKind kind) {
+    constexpr uint64_t kGlobalSalt = 0x8A1F0C3D5B7E9246ull, kCausticSalt = 0x3C6EF372FE94F82Bull;
+    return seed ^ (kind == MapKind::Global ? kGlobalSalt : kCausticSalt);
+}
+
+PmOptions pmOptions(const Scene& scene) {
+    PmOptions opt;
+    opt.maxDepth = scene.settings.maxDepth;
+    opt.globalEstimate.filter = Filter::Box;
+    opt.globalEstimate.k = 50;
+    opt.globalEstimate.maxRadius = 0.1f * scene.radius;
+    opt.causticEstimate.filter = Filter::Cone;
+    opt.causticEstimate.k = 50;
+    opt.causticEstimate.maxRadius = 0.02f * scene.radius;
+    return opt;
+}
+
+namespace {
+
+constexpr uint64_t kCacheSalt = 0xA54FF53A5F1D36F1ull;
 
 bool needsCausticMap(const Scene& scene) { return !scene.settings.prune || scene.caps.hasDeltaBSDF(); }
 
@@ -32,27 +49,14 @@ struct PhotonMapper : Integrator {
         return {"the caustic map: no specular surface, so no photon path L S+ D (lesson 8, Eq. 8.2)"};
     }
 
-    // The estimates' settings, in the scene's own length unit (scene.radius).
-    static PmOptions options(const Scene& scene) {
-        PmOptions opt;
-        opt.maxDepth = scene.settings.maxDepth;
-        opt.globalEstimate.filter = Filter::Box;
-        opt.globalEstimate.k = 50;
-        opt.globalEstimate.maxRadius = 0.1f * scene.radius;
-        opt.causticEstimate.filter = Filter::Cone;
-        opt.causticEstimate.k = 50;
-        opt.causticEstimate.maxRadius = 0.02f * scene.radius;
-        return opt;
-    }
-
     static PhotonMaps traceMaps(const Scene& scene, uint32_t iteration, uint64_t seed, const Image& out,
                                 const PmOptions& opt, SampleStats& stats) {
         PhotonMaps maps;
-        maps.global = tracePhotonMap(scene, MapKind::Global, photonsPerMap(out), opt.maxDepth, seed ^ kGlobalSalt,
-                                     iteration, stats);
+        maps.global = tracePhotonMap(scene, MapKind::Global, photonsPerMap(out), opt.maxDepth,
+                                     photonSeed(seed, MapKind::Global), iteration, stats);
         if (needsCausticMap(scene))
             maps.caustic = tracePhotonMap(scene, MapKind::Caustic, photonsPerMap(out), opt.maxDepth,
-                                          seed ^ kCausticSalt, iteration, stats);
+                                          photonSeed(seed, MapKind::Caustic), iteration, stats);
         return maps;
     }
 
@@ -70,7 +74,7 @@ struct PhotonMapper : Integrator {
 
     void renderIteration(const Scene& scene, uint32_t iteration, uint64_t seed, Image& out,
                          SampleStats& stats) override {
-        const PmOptions opt = options(scene);
+        const PmOptions opt = pmOptions(scene);
         const PhotonMaps maps = traceMaps(scene, iteration, seed, out, opt, stats);
         renderPixels(scene, iteration, seed, out, maps, opt, stats);
     }
@@ -83,7 +87,7 @@ struct PhotonMapper : Integrator {
 struct PhotonMapperCached : PhotonMapper {
     void renderIteration(const Scene& scene, uint32_t iteration, uint64_t seed, Image& out,
                          SampleStats& stats) override {
-        PmOptions opt = options(scene);
+        PmOptions opt = pmOptions(scene);
         opt.minR = kCacheMinR * scene.radius;
         opt.maxR = kCacheMaxR * scene.radius;
         PhotonMaps maps = traceMaps(scene, iteration, seed, out, opt, stats);

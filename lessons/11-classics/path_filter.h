@@ -19,7 +19,7 @@
 //                            pyramid --paths`) too;
 //   pm   (filtered_pm.cpp)   lesson 8's photon visitor keeps each photon's forward state (the
 //                            string from L to its own vertex) as its population; lesson 8's
-//                            estimate visitor joins each density estimate's populations with the
+//                            gather visitor joins each density estimate's populations with the
 //                            camera side's backward state.
 //
 // Without --paths nothing here runs: every algorithm renders exactly what it did before.

@@ -20,7 +20,7 @@ float photonSurvival(const Color& throughput, int bounces) {
 }
 
 void tracePhoton(const Scene& scene, Rng& rng, int maxDepth, MapKind kind, int emitted, std::vector<Photon>& out,
-                 const ContinuationRule& continuation) {
+                 const PhotonVisitor& visit, const ContinuationRule& continuation) {
     //! TODO(08) Eq. 8.1-8.3: lightWalk(scene, rng, options, visitor), the options {maxDepth,
     //!          photonSurvival} with `continuation` as their continuation rule. The visitor
     //!          goes on at y0 (bounces 0). At a surface (bounces >= 1) with material m:
@@ -29,7 +29,10 @@ void tracePhoton(const Scene& scene, Rng& rng, int maxDepth, MapKind kind, int e
     //!            for the global map always; for the caustic map only if every surface before this
     //!            one was specular and there was at least one (L S+ D). The caustic walk ends at
     //!            its first non-specular surface, the global walk goes on.
-    //! STUB (void)scene; (void)rng; (void)maxDepth; (void)kind; (void)emitted; (void)out; (void)continuation;
+    //!          Last, at every vertex, the photon visitor if there is one (visit(v, the photon to
+    //!          store or nullptr)): its false drops that photon and ends the walk.
+    //! STUB (void)scene; (void)rng; (void)maxDepth; (void)kind; (void)emitted; (void)out; (void)visit;
+    //! STUB (void)continuation;
     //! STUB (void)PS_TODO("lesson 08: tracePhoton", 0);
     //! BEGIN
     bool onlySpecular = true;  // every surface so far was specular
@@ -37,18 +40,22 @@ void tracePhoton(const Scene& scene, Rng& rng, int maxDepth, MapKind kind, int e
     WalkOptions opt(maxDepth, photonSurvival);
     opt.continuation = continuation;
     lightWalk(scene, rng, opt, [&](const WalkVertex& v, const LightPathStart&) {
-        if (v.bounces == 0) return true;
+        if (v.bounces == 0) return !visit || visit(v, nullptr);
         const Material& m = scene.materials[size_t(v.sp.material)];
-        if (m.isDelta()) return true;
+        if (m.isDelta()) return !visit || visit(v, nullptr);
+        bool goOn = kind == MapKind::Global;
         if (kind == MapKind::Global || (onlySpecular && v.bounces >= 2)) {
             Photon ph;
             ph.p = v.sp.p;
             ph.power = v.beta * invN;
             ph.setWLight(v.wo);
-            out.push_back(ph);
+            if (!visit || visit(v, &ph)) out.push_back(ph);
+            else goOn = false;
+        } else if (visit && !visit(v, nullptr)) {
+            goOn = false;
         }
         onlySpecular = false;
-        return kind == MapKind::Global;
+        return goOn;
     });
     //! END
 }

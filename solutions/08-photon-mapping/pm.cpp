@@ -9,35 +9,38 @@ namespace ps {
 
 Color gatherRadiance(const Scene& scene, const SurfacePoint& sp, const Vec3& wi, Color weight, int bounces, Rng& rng,
                      const PhotonMap& global, const PmOptions& opt, float* hitDistance) {
-    //! TODO(08) Eq. 8.11, the last term: the gather ray scene.spawnRay(sp, wi). For bounces + 1,
-    //!          bounces + 2, ... up to opt.maxDepth, while weight is not black: intersect (a miss:
-    //!          black); the first hit's distance goes to *hitDistance (if given; infinity when
-    //!          nothing is hit). At a non-specular surface y: return weight * radianceEstimate(
-    //!          global, y, its material, -ray direction, opt.globalEstimate). At a specular one:
-    //!          sampleBSDF(material, y.n, -ray direction, u, uLobe, Transport::Radiance, s)
-    //!          (u = rng.uniform2() drawn before uLobe = rng.uniform(); a failed sample: black),
-    //!          weight *= s.weight, and go on from y in direction s.wi. Emission met on the way
-    //!          is left out.
+    //! TODO(08) Eq. 8.11, the last term, on lesson 3's camera walk resumed at the gather ray
+    //!          (cameraWalk from a WalkStart: the ray scene.spawnRay(sp, wi), what it carries,
+    //!          the k of its first vertex) with no Russian roulette (alwaysSurvive) and
+    //!          opt.maxDepth. The first vertex's distance goes to *hitDistance (if given; infinity
+    //!          when nothing is hit). At a non-specular surface y: the radiance is the vertex's
+    //!          beta times radianceEstimate(global, y, its material, towards sp, opt.globalEstimate),
+    //!          or the gather visitor's global estimate there if it has one; the walk ends. A
+    //!          specular surface: the walk samples it and goes on.
+    //!          Pitfalls: emission met on the way is left out (next-event estimation and the
+    //!          caustic map have it); the start's k counts the bounces before sp.
     //! STUB (void)scene; (void)sp; (void)wi; (void)weight; (void)bounces; (void)rng; (void)global; (void)opt;
     //! STUB if (hitDistance) *hitDistance = std::numeric_limits<float>::infinity();
     //! STUB return PS_TODO("lesson 08: gatherRadiance", Color(0.0f));
     //! BEGIN
     if (hitDistance) *hitDistance = std::numeric_limits<float>::infinity();
-    Ray gather = scene.spawnRay(sp, wi);
-    for (int b = bounces + 1; b <= opt.maxDepth && !isBlack(weight); ++b) {
-        SurfacePoint y;
-        if (!scene.intersect(gather, y)) break;
-        if (hitDistance && b == bounces + 1) *hitDistance = gather.tMax;
-        const Material& my = scene.materials[size_t(y.material)];
-        if (!my.isDelta()) return weight * radianceEstimate(global, y, my, -gather.d, opt.globalEstimate);
-        BSDFSample t;
-        const Vec2 ut = rng.uniform2();
-        const float uLobeT = rng.uniform();
-        if (!sampleBSDF(my, y.n, -gather.d, ut, uLobeT, Transport::Radiance, t)) break;
-        weight *= t.weight;
-        gather = scene.spawnRay(y, t.wi);
-    }
-    return Color(0.0f);
+    WalkStart gather;
+    gather.ray = scene.spawnRay(sp, wi);
+    gather.beta = weight;
+    gather.bounces = bounces + 1;
+    gather.specular = false;
+    gather.pPrev = sp.p;
+    Color L(0.0f);
+    cameraWalk(scene, gather, rng, {opt.maxDepth, alwaysSurvive}, [&](const WalkVertex& y) {
+        if (hitDistance && y.bounces == bounces + 1) *hitDistance = y.distance;
+        if (!y.hit) return false;
+        const Material& my = scene.materials[size_t(y.sp.material)];
+        if (my.isDelta()) return true;
+        L = y.beta * (opt.visitor.global ? opt.visitor.global(sp, bounces, y.sp, my, y.wo, y.bounces)
+                                         : radianceEstimate(global, y.sp, my, y.wo, opt.globalEstimate));
+        return false;
+    });
+    return L;
     //! END
 }
 
@@ -59,26 +62,33 @@ Color LiPhotonMap(const Scene& scene, const Ray& ray, Rng& rng, const PhotonMaps
     //!                  and add gatherRadiance(scene, x, s.wi, v.beta * s.weight, v.bounces, rng,
     //!                  maps.global, opt);
     //!            and end the walk.
+    //!          The gather visitor (opt.visitor): the emission counts only where it says so
+    //!          (countsEmission), the light sample likewise (countsLightSample; drawn either way),
+    //!          its caustic estimate, if it has one, replaces the caustic map's, and the walk goes
+    //!          on through a specular vertex, or from x to (c), only where it says so
+    //!          (continuesPast).
     //! STUB (void)scene; (void)ray; (void)rng; (void)maps; (void)opt;
     //! STUB return PS_TODO("lesson 08: LiPhotonMap", Color(0.0f));
     //! BEGIN
     Color L(0.0f);
     cameraWalk(scene, ray, rng, {opt.maxDepth}, [&](const WalkVertex& v) {
         if (!v.hit) {
-            if (v.specular) L += v.beta * scene.backgroundRadiance();
+            if (v.specular && opt.visitor.countsEmission(v)) L += v.beta * scene.backgroundRadiance();
             return false;
         }
-        if (v.specular && v.sp.light >= 0)
+        if (v.specular && v.sp.light >= 0 && opt.visitor.countsEmission(v))
             L += v.beta * emittedRadiance(scene.lights[size_t(v.sp.light)], v.sp.n, v.wo);
         const Material& m = scene.materials[size_t(v.sp.material)];
-        if (m.isDelta()) return true;
+        if (m.isDelta()) return opt.visitor.continuesPast(v);
         if (v.bounces < opt.maxDepth) {
             const float uLight = rng.uniform();
             const Vec2 uPoint = rng.uniform2();
-            L += v.beta * sampleDirectLight(scene, v.sp, v.wo, uLight, uPoint).value;
+            if (opt.visitor.countsLightSample(v))
+                L += v.beta * sampleDirectLight(scene, v.sp, v.wo, uLight, uPoint).value;
         }
-        L += v.beta * radianceEstimate(maps.caustic, v.sp, m, v.wo, opt.causticEstimate);
-        if (v.bounces >= opt.maxDepth) return false;
+        L += v.beta * (opt.visitor.caustic ? opt.visitor.caustic(v, m)
+                                           : radianceEstimate(maps.caustic, v.sp, m, v.wo, opt.causticEstimate));
+        if (v.bounces >= opt.maxDepth || !opt.visitor.continuesPast(v)) return false;
         if (opt.cache && m.kind == BSDFKind::Diffuse) {
             const Vec3 n = glm::dot(v.sp.n, v.wo) < 0.0f ? -v.sp.n : v.sp.n;
             Color E;

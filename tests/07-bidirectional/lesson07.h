@@ -122,6 +122,22 @@ inline Split split(const ps::Scene& scene, const JoinedPath& j, int sp, ps::Heur
     return out;
 }
 
+// Every valid connection (s, t) of a light and a camera subpath, as bpt tries them (no pruning; the
+// random numbers of s = 1 from rng): fn(c, s, t) for each.
+template <class Fn>
+void forEachConnection(const ps::Scene& scene, const ps::Subpath& light, const ps::Subpath& camera, ps::Rng& rng,
+                       Fn&& fn) {
+    for (int t = 1; t <= int(camera.size()); ++t)
+        for (int s = 0; s <= std::max(int(light.size()), 1); ++s) {
+            if (s + t < 2 || (t == 1 && s == 0) || s + t - 2 > scene.settings.maxDepth) continue;
+            if (s > int(light.size()) && !(s == 1 && t >= 2)) continue;
+            const float uLight = rng.uniform();  // drawn in this order on every compiler (named variables)
+            const Vec2 uPoint = rng.uniform2();
+            const ps::Connection c = ps::connect(scene, light, camera, s, t, uLight, uPoint);
+            if (c.valid) fn(c, s, t);
+        }
+}
+
 // Every valid connection of nSamples pixel samples of a scene (random pixels), as joined paths.
 inline std::vector<JoinedPath> randomPaths(const ps::Scene& scene, int nSamples, uint64_t seed, ps::Heuristic h) {
     std::vector<JoinedPath> paths;
@@ -132,16 +148,9 @@ inline std::vector<JoinedPath> randomPaths(const ps::Scene& scene, int nSamples,
         const Vec2 raster{rng.uniform() * float(w), rng.uniform() * float(ht)};
         ps::cameraSubpath(scene, rng, raster, scene.settings.maxDepth, h, camera);
         ps::lightSubpath(scene, rng, scene.settings.maxDepth, h, light);
-        for (int t = 1; t <= int(camera.size()); ++t)
-            for (int s = 0; s <= std::max(int(light.size()), 1); ++s) {
-                if (s + t < 2 || (t == 1 && s == 0) || s + t - 2 > scene.settings.maxDepth) continue;
-                if (s > int(light.size()) && !(s == 1 && t >= 2)) continue;
-                const float uLight = rng.uniform();
-                const Vec2 uPoint = rng.uniform2();
-                const ps::Connection c = ps::connect(scene, light, camera, s, t, uLight, uPoint);
-                if (!c.valid) continue;
-                paths.push_back(join(s == 1 ? &c.sampledLight : light.data(), s, camera.data(), t, c.rev));
-            }
+        forEachConnection(scene, light, camera, rng, [&](const ps::Connection& c, int s, int t) {
+            paths.push_back(join(s == 1 ? &c.sampledLight : light.data(), s, camera.data(), t, c.rev));
+        });
     }
     return paths;
 }

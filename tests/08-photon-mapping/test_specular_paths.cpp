@@ -293,6 +293,7 @@ render spp 1 maxdepth 8
     sp.p = Vec3(0, 0, 3);
     sp.n = Vec3(0, 0, -1);
     const Vec3 wi(0, 0, -1);
+    Color throughGlass(0.0f);
     for (float u : {0.5f, 0.01f}) {
         // The test's own trace: the glass, then the white ball (or nothing).
         Color want(0.0f);
@@ -321,7 +322,27 @@ render spp 1 maxdepth 8
                                                                << str(got));
         CHECK_MESSAGE(d == doctest::Approx(firstHit), "gatherRadiance: expected the distance to the first surface hit, "
                                                           << num(firstHit) << ", got " << num(d));
+        if (u == 0.5f) throughGlass = want;
     }
+    // The weight the gather ray carries from x scales what it finds; and the depth: from a vertex
+    // after 0 bounces with maxDepth 1 the glass is the one surface the ray may reach.
+    Constant numbers;
+    numbers.fill = 0.5f;
+    ps::Rng rng;
+    rng.replayFrom(&numbers);
+    const Color weighted = ps::gatherRadiance(scene, sp, wi, Color(0.5f, 0.25f, 1.0f), 0, rng, maps.global, opt);
+    const Color wantWeighted = throughGlass * Color(0.5f, 0.25f, 1.0f);
+    CHECK_MESSAGE(close(weighted, wantWeighted),
+                  "gatherRadiance with weight (0.5, 0.25, 1) (every uniform number 0.5): "
+                      << "expected " << str(wantWeighted) << ", got " << str(weighted));
+    ps::PmOptions shallow = opt;
+    shallow.maxDepth = 1;
+    rng.replayFrom(&numbers);
+    const Color cut = ps::gatherRadiance(scene, sp, wi, Color(1.0f), 0, rng, maps.global, shallow);
+    CHECK_MESSAGE(ps::isBlack(cut), "gatherRadiance from a vertex after 0 bounces with maxDepth 1 into the glass ball: "
+                                        << "expected black (the white ball would be a path's second bounce after "
+                                           "that vertex), got "
+                                        << str(cut));
 }
 
 TEST_CASE("kd-tree: an empty map, and k = 0, find nothing (Eq. 8.5) [1 pt]") {

@@ -123,7 +123,7 @@ TEST_CASE("photons: rouletted and split by visual importance, they store the ana
     for (int i = 0; i < kPaths; ++i) {
         ps::Rng rng = ps::taskRng(ps::testseed::seed(1213), 0, uint32_t(i));
         std::vector<ps::Photon> photons;
-        ps::tracePhoton(scene, rng, D, ps::MapKind::Global, 1, photons, ps::particleRule(scene, pass, counts));
+        ps::tracePhoton(scene, rng, D, ps::MapKind::Global, 1, photons, nullptr, ps::particleRule(scene, pass, counts));
         double total = 0.0;
         for (const ps::Photon& ph : photons) total += ph.power.r;
         w.add(total);

@@ -12,7 +12,7 @@
 namespace ps::testalpha {
 
 constexpr double kSuite = 0.01;  // false failure of the whole graded suite
-// The lesson folders (lessons/NN-name) found at configure time (cmake/lessons.cmake gives it to
+// The number of lesson folders (tests/support/CMakeLists.txt counts cmake/lessons.cmake's list for
 // every test: a new lesson folder changes it; a lesson without statistical tests wastes its share).
 #ifndef PATHSPACE_LESSON_COUNT
 #error "PATHSPACE_LESSON_COUNT (the number of lesson folders) comes from tests/support/CMakeLists.txt"

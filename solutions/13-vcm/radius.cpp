@@ -1,0 +1,30 @@
+// Lesson 13 — the merging radius of each iteration and the factor eta that makes a merge's density
+// comparable with a connection's. Interface: lessons/13-vcm/vcm.h. Equation numbers refer to
+// lessons/13-vcm/README.md.
+#include <cmath>
+#include "13-vcm/vcm.h"
+#include "todo.h"
+
+namespace ps {
+
+double vcmRadius(double r1, int iteration, double alpha) {
+    //! TODO(13) Eq. 13.12: r_i for iteration i >= 1. Pitfall: the exponent belongs to r, not to
+    //!          r^2 (lesson 8's Eq. 8.13 shrinks r^2); alpha = 1 keeps the radius.
+    //! STUB (void)iteration; (void)alpha;
+    //! STUB return PS_TODO("lesson 13: vcmRadius", r1);
+    //! BEGIN
+    return r1 * std::pow(double(iteration), 0.5 * (alpha - 1.0));
+    //! END
+}
+
+double mergeFactor(double radius, int lightPaths) {
+    //! TODO(13) Eq. 13.5: eta, the ratio n_VM p_VM / (n_VC p_VC) at a merge's own vertex without the
+    //!          light vertex's density. Pitfall: the sample count of merging is not 1.
+    //! STUB (void)radius; (void)lightPaths;
+    //! STUB return PS_TODO("lesson 13: mergeFactor", 0.0);
+    //! BEGIN
+    return double(lightPaths) * kPi * radius * radius;
+    //! END
+}
+
+}  // namespace ps
