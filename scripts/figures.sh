@@ -180,6 +180,32 @@ if wanted 10; then
   done_fig "$d/skylight-equal-time.png, skylight-convergence.svg, skylight-convergence.csv, skylight-efficiency.md"
 fi
 
+# Lesson 12: the door and the skylight at equal time (pt, lesson 10's pt-adrrs, pt-guided,
+# pt-guided-adrrs), the light in a side room (lt, lt-adrrs) and the field's memory under budgets
+# (lessons/12-path-guiding README, section 5).
+if wanted 12; then
+  d="$(dest 12-path-guiding)"
+  for c in "door door" "skylight skylight"; do
+    set -- $c
+    s="$(scene "$1" 128)"; r="$(reference pt "$(t 600 2)" "$s")"
+    converge "$s" "$r" "$work/12-$2" --algos pt,pt-adrrs,pt-guided,pt-guided-adrrs --time "$(t 20 0.3)" --seeds "$(t 2 1)"
+    cp "$work/12-$2/equal-time.png" "$d/$2-equal-time.png"; cp "$work/12-$2/convergence.svg" "$d/$2-converge.svg"
+    cp "$work/12-$2/efficiency.md" "$d/$2-efficiency.md"
+    done_fig "$d/$2-equal-time.png, $2-converge.svg, $2-efficiency.md"
+  done
+  s="$(scene side-room 128)"; r="$(reference pt "$(t 600 2)" "$s")"
+  converge "$s" "$r" "$work/12-side" --algos lt,lt-adrrs --time "$(t 20 0.3)" --seeds "$(t 2 1)"
+  cp "$work/12-side/equal-time.png" "$d/side-room-equal-time.png"; cp "$work/12-side/efficiency.md" "$d/side-room-efficiency.md"
+  done_fig "$d/side-room-equal-time.png, side-room-efficiency.md"
+  s="$(scene door 128)"
+  { echo "| --guide-budget (MB) | cells | field (MB) |"; echo "|---:|---:|---:|"
+    for b in 1 4 16 64; do
+      "$ps" render "$s" --algo pt-guided --spp "$(t 255 7)" --guide-budget "$b" --seed 1 --out "$work/12-mem.pfm" \
+        --no-progress 2>/dev/null | sed -n "s/.*field: \([0-9]*\) cells.* records, \([0-9.]*\) MB/| $b | \1 | \2 |/p"
+    done; } > "$d/memory.md"
+  done_fig "$d/memory.md"
+fi
+
 # lesson 11 (paths): pt split by Heckbert's path expressions on the Cornell spheres (LE, LDE, LD+DE
 # and L.*S.*E add up to every path, L.*E; LS+DE, the caustics, is part of the last)
 # (lessons/11-classics README, "Expected output"; tools/strip.cpp labels them).

@@ -826,6 +826,130 @@ Svg weightWindow() {
     return s;
 }
 
+// Lesson 12: the learned field. Left, a room seen from above, cut by the spatial tree (a binary
+// tree that halves a box across x, then y, ...) where the path vertices were many; right, one
+// cell's directional distribution: a quadtree over the square of the cylindrical map, cut where
+// the energy is (Eq. 12.5-12.11), shaded by density.
+struct GuideBox {
+    double x0, y0, x1, y1;
+};
+// The expected number of path vertices in a box: a density over the room, higher near the lit
+// patch under the lamp (a product of two bumps, integrated by a midpoint rule).
+double vertexMass(const GuideBox& b) {
+    double m = 0.0;
+    const int n = 8;
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j) {
+            const double x = b.x0 + (i + 0.5) * (b.x1 - b.x0) / n, y = b.y0 + (j + 0.5) * (b.y1 - b.y0) / n;
+            m += 0.3 + 6.0 * std::exp(-((x - 0.68) * (x - 0.68) + (y - 0.3) * (y - 0.3)) / 0.02);
+        }
+    return m * (b.x1 - b.x0) * (b.y1 - b.y0) / (n * n);
+}
+void spatialCells(const GuideBox& b, int axis, double threshold, std::vector<GuideBox>& out) {
+    if (vertexMass(b) <= threshold) {
+        out.push_back(b);
+        return;
+    }
+    GuideBox lo = b, hi = b;
+    if (axis == 0) lo.x1 = hi.x0 = 0.5 * (b.x0 + b.x1);
+    else lo.y1 = hi.y0 = 0.5 * (b.y0 + b.y1);
+    spatialCells(lo, 1 - axis, threshold, out);
+    spatialCells(hi, 1 - axis, threshold, out);
+}
+// The incident radiance over the square (u = (1 - cos theta) / 2, v = phi / 2 pi) at the chosen
+// cell: a bright small lamp, a dimmer lit wall, a little everywhere.
+double radianceAt(double u, double v) {
+    const auto bump = [](double du, double dv, double w) { return std::exp(-(du * du + dv * dv) / w); };
+    return 0.004 + 8.0 * bump(u - 0.22, v - 0.63, 0.002) + 1.2 * bump(u - 0.55, v - 0.2, 0.02);
+}
+double squareEnergy(double x, double y, double size) {
+    double e = 0.0;
+    const int n = 6;
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j) e += radianceAt(x + (i + 0.5) * size / n, y + (j + 0.5) * size / n);
+    return e * size * size / (n * n);
+}
+struct QuadLeaf {
+    double x, y, size, energy;
+};
+void quadLeaves(double x, double y, double size, double total, double rho, int depth, std::vector<QuadLeaf>& out) {
+    const double e = squareEnergy(x, y, size);
+    if (e <= rho * total || depth >= 7) {
+        out.push_back({x, y, size, e});
+        return;
+    }
+    const double h = 0.5 * size;
+    for (int i = 0; i < 4; ++i) quadLeaves(x + (i & 1) * h, y + (i >> 1) * h, h, total, rho, depth + 1, out);
+}
+Svg guidingField() {
+    Svg s(1000, 660);
+    s.text({40, 38}, "the learned field: a spatial tree over the scene, a directional quadtree in each cell", "start",
+           20);
+    // Left: the room from above, 400 x 400.
+    const P o{40, 110};
+    const double side = 380;
+    auto at = [&](double x, double y) { return P{o.x + side * x, o.y + side * y}; };
+    std::vector<GuideBox> cells;
+    spatialCells({0, 0, 1, 1}, 0, 0.02, cells);
+    const GuideBox* chosen = nullptr;
+    for (const GuideBox& c : cells) {
+        s.rect(at(c.x0, c.y0), at(c.x1, c.y1), "#f7f7f7", kGrey, 1, 1.2);
+        if (c.x0 <= 0.52 && c.x1 > 0.52 && c.y0 <= 0.42 && c.y1 > 0.42) chosen = &c;
+    }
+    s.rect(at(0, 0), at(1, 1), "none", kInk, 1, 3);
+    // The lamp's lit patch on the floor, and a few path vertices (more where the light is).
+    s.circle(at(0.68, 0.3), 0.07 * side, kLight, "none", 2, 0.25);
+    s.text(at(0.68, 0.3) + P{0.1 * side, 0.14 * side}, "lit patch", "start", 18, kLight);
+    Lcg rng;
+    for (int k = 0; k < 140; ++k) {
+        double x = rng.next(), y = rng.next();
+        if (k % 2) {
+            x = 0.68 + 0.16 * (rng.next() - 0.5);
+            y = 0.3 + 0.16 * (rng.next() - 0.5);
+        }
+        s.dot(at(x, y), kCamera, 2.2);
+    }
+    if (chosen) s.rect(at(chosen->x0, chosen->y0), at(chosen->x1, chosen->y1), kBsdf, kBsdf, 0.25, 3);
+    s.text({o.x, o.y + side + 34}, "a leaf is halved (x, then y, ...) when a pass", "start", 18);
+    s.text({o.x, o.y + side + 58}, "recorded more than c √(2^k) vertices in it (12.11)", "start", 18);
+    s.text({o.x, o.y - 40}, "the scene from above, cut by the spatial tree;", "start", 18, kGrey);
+    s.text({o.x, o.y - 16}, "dots: the path vertices of one pass", "start", 18, kGrey);
+    // Right: the chosen cell's quadtree over the square, 360 x 360.
+    const P q{580, 110};
+    const double qs = 360;
+    const double total = squareEnergy(0, 0, 1);
+    std::vector<QuadLeaf> leaves;
+    quadLeaves(0, 0, 1, total, 0.01, 0, leaves);
+    double maxDensity = 0.0;
+    for (const QuadLeaf& l : leaves) maxDensity = std::max(maxDensity, l.energy / (l.size * l.size));
+    for (const QuadLeaf& l : leaves) {
+        const double d = std::pow(l.energy / (l.size * l.size) / maxDensity, 0.45);
+        char fill[16];
+        const int r = int(255 - d * (255 - 0xd9)), g = int(255 - d * (255 - 0x8a)), b = int(255 - d * 255);
+        std::snprintf(fill, sizeof fill, "#%02x%02x%02x", r, g, b);
+        s.rect({q.x + qs * l.x, q.y + qs * l.y}, {q.x + qs * (l.x + l.size), q.y + qs * (l.y + l.size)}, fill, kGrey, 1,
+               0.8);
+    }
+    s.rect(q, {q.x + qs, q.y + qs}, "none", kInk, 1, 3);
+    if (chosen) {
+        const P from = at(chosen->x1, 0.5 * (chosen->y0 + chosen->y1));
+        s.curveArrow(from, {0.5 * (from.x + q.x), q.y + qs + 40}, {q.x - 8, q.y + 0.6 * qs}, kBsdf, 2.5);
+    }
+    s.text({q.x, q.y - 40}, "one cell's directional distribution:", "start", 18, kGrey);
+    s.text({q.x, q.y - 16}, "a quadtree over the cylindrical square", "start", 18, kGrey);
+    s.text({q.x + qs, q.y + qs + 30}, "s_x = (1 − cos θ) / 2 →", "end", 18, kInk, true);
+    s.text({q.x - 10, q.y + 20}, "s_y = φ / 2π", "end", 18, kInk, true);
+    s.text({q.x - 10, q.y + 46}, "↓", "end", 18, kInk, true);
+    s.text({q.x + 0.22 * qs + 24, q.y + 0.63 * qs - 14}, "the lamp", "start", 18, kLight);
+    s.text({q.x + 0.55 * qs, q.y + 0.2 * qs + 48}, "lit wall", "middle", 18, kLight);
+    s.text({q.x, q.y + qs + 58}, "a quadrant is cut while it holds more than", "start", 18);
+    s.text({q.x, q.y + qs + 82}, "ρ = 1 % of the cell's energy (12.9)", "start", 18);
+    s.text({40, 600}, "p(ω) = p_{square}(s) / 4π (12.5); p_{square} is the product, over the levels down to the leaf,",
+           "start", 18);
+    s.text({40, 626}, "of 4 × the quadrant's share of its node's energy (12.6)", "start", 18);
+    return s;
+}
+
 // Lesson 11: the family tree of the classics in Heckbert's notation (11.1): each box carries a
 // subset of the paths of the box it hangs from; the edges say what was taken away.
 struct FamilyNode {
@@ -984,6 +1108,7 @@ int main(int argc, char** argv) {
     figures.push_back({"09-metropolis/pss-chain.svg", metropolisChain()});
     figures.push_back({"10-adrrs/weight-window.svg", weightWindow()});
     figures.push_back({"11-classics/family-tree.svg", familyTree()});
+    figures.push_back({"12-path-guiding/guiding-field.svg", guidingField()});
     figures.push_back({"13-vcm/merge-techniques.svg", mergeTechniques()});
     for (const Figure& f : figures) {
         std::string path = dir + "/" + f.path;

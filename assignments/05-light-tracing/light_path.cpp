@@ -5,11 +5,11 @@
 
 namespace ps {
 
-void traceLightPath(const Scene& scene, Rng& rng, int maxDepth, const SplatTarget& out) {
+void traceLightPath(const Scene& scene, Rng& rng, const WalkOptions& opt, const SplatTarget& out) {
     // The camera point every connection of this path goes to: the pinhole camera.position()
     // (no number drawn), or a point of the camera's model.
     const Vec3 z = scene.camera.samplePoint(rng);
-    lightWalk(scene, rng, {maxDepth}, [&](const WalkVertex& v, const LightPathStart& start) {
+    lightWalk(scene, rng, opt, [&](const WalkVertex& v, const LightPathStart& start) {
         // TODO(05) What vertex v adds to the image (Eq. 5.3, 5.4), through out.add; return true. y0 sends its Le
         //          towards the camera (C_0), a later vertex scatters by the adjoint BSDF (Eq. 5.6); no connection from
         //          the background or a delta material (Eq. 5.9). Pitfalls (README 6): the k = 0 connection left out; a

@@ -22,8 +22,8 @@ float pixelEstimate(const AdjointCache& cache, const Scene& scene, const WalkVer
 
 float adrrsContinuations(const AdjointCache& cache, const Scene& scene, const WalkVertex& v, float pixelEstimate) {
     // TODO(10) Eq. 10.2, 10.5-10.7: where ADRRS cannot decide (pixelEstimate < 0, a delta
-    //          material at v, or an estimate at v's entry that is not reliable) return lesson 3's
-    //          survivalProbability(v.beta, v.bounces). Otherwise, with the cache's estimate
+    //          material at v, or an estimate at v's entry that is not reliable) return
+    //          kNoDecision (lesson 3's roulette then plays). Otherwise, with the cache's estimate
     //          Psi~ at v's entry (cache.entry(v.sp.p, v.sp.n, v.wo)): the path's weight
     //          nu = sum_c beta_c Psi~_c / sum_c Psi~_c (the mean of beta's channels if Psi~ is
     //          black), the adjoint as one number (the mean of Psi~'s channels), and

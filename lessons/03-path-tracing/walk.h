@@ -80,10 +80,14 @@ using BSDFSampling = bool (*)(const Material& m, const Vec3& n, const Vec3& wo, 
 // divided by its q) and the bounces it has made since its start, that one included.
 using SurvivalFunction = float (*)(const Color& throughput, int bounces);
 
-// How a walk goes on from a vertex: n continuations, each with throughput beta (Eq. 3.10).
+// How a walk goes on from a vertex: n continuations, each with throughput beta (Eq. 3.10), and
+// whether the walk's own Russian roulette (WalkOptions::survival) still plays after each of their
+// bounces: false where the rule has decided survival at the vertex itself (roulette and splitting
+// by an estimate of what the path will bring), true where it left the decision to the walk.
 struct Continuations {
     int n = 0;
     Color beta;
+    bool roulette = true;
 };
 
 // The continuation rule: asked at every vertex the walk may go on from (hit, visited with true,
@@ -129,8 +133,9 @@ struct WalkStart {
 // says so, after a miss, or at bounces == opt.maxDepth. Else ask opt.continuation for the
 // continuations (none: one, with beta); each samples a direction at x_k (scatter at a delta
 // material or without opt.sampler, else opt.sampler), multiplies its throughput by the sample's
-// weight (it ends if that fails or is black), plays Russian roulette with opt.survival, and is
-// followed to its very end before the next continuation samples (depth first).
+// weight (it ends if that fails or is black), plays Russian roulette with opt.survival (unless the
+// rule's continuations say roulette = false), and is followed to its very end before the next
+// continuation samples (depth first).
 void randomWalk(const Scene& scene, const WalkStart& start, BSDFSampling scatter, Rng& rng, const WalkOptions& opt,
                 const WalkVisitor& visit);
 

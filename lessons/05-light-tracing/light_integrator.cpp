@@ -18,6 +18,10 @@ CameraConnection connectToCamera(const Scene& scene, const SurfacePoint& y, bool
     return connectToCamera(scene, y, onSurface, scene.camera.position());
 }
 
+void traceLightPath(const Scene& scene, Rng& rng, int maxDepth, const SplatTarget& out) {
+    traceLightPath(scene, rng, WalkOptions(maxDepth), out);
+}
+
 namespace {
 
 struct LightTracer : Integrator {

@@ -80,5 +80,9 @@ void lightWalk(const Scene& scene, Rng& rng, const WalkOptions& opt, const Light
 // out.add(raster, value) (a SplatTarget, framework/film.h). Every connection goes to one camera
 // point z, drawn before the walk: the pinhole (no number drawn), or a point of the camera's model.
 void traceLightPath(const Scene& scene, Rng& rng, int maxDepth, const SplatTarget& out);
+// The same with the light walk's options given (lesson 3's WalkOptions: its maximum depth, and a
+// survival function, direction sampler or continuation rule of the caller's); the form above is
+// this with {maxDepth} (plumbing, light_integrator.cpp).
+void traceLightPath(const Scene& scene, Rng& rng, const WalkOptions& opt, const SplatTarget& out);
 
 }  // namespace ps

@@ -73,13 +73,15 @@ const char* filterName(Filter f) {
 
 std::vector<PhotonMap> tracePhotonPopulations(const Scene& scene, MapKind kind, int emitted, int maxDepth,
                                               uint64_t seed, uint32_t iteration, SampleStats& stats,
-                                              const std::function<PhotonVisitor()>& newVisitor) {
+                                              const std::function<PhotonVisitor()>& newVisitor,
+                                              const PhotonRules& rules) {
     std::vector<PhotonMap> maps(1);
     maps[0].emitted = emitted;
     if (emitted <= 0) return maps;
     std::vector<std::vector<Photon>> perTask(size_t(taskCount(emitted)));
     runTasks(TaskLoop(emitted, seed, iteration), stats, [&](int, Rng& rng, Task& task) {
-        tracePhoton(scene, rng, maxDepth, kind, emitted, perTask[task.index], newVisitor ? newVisitor() : nullptr);
+        tracePhoton(scene, rng, maxDepth, kind, emitted, perTask[task.index], newVisitor ? newVisitor() : nullptr,
+                    rules ? rules() : ContinuationRule());
     });
     // The photons of each population in path order. A photon whose power is NaN or Inf is counted
     // (as a sample would be) and not stored.
@@ -102,8 +104,8 @@ std::vector<PhotonMap> tracePhotonPopulations(const Scene& scene, MapKind kind, 
 }
 
 PhotonMap tracePhotonMap(const Scene& scene, MapKind kind, int emitted, int maxDepth, uint64_t seed, uint32_t iteration,
-                         SampleStats& stats) {
-    return std::move(tracePhotonPopulations(scene, kind, emitted, maxDepth, seed, iteration, stats, nullptr)[0]);
+                         SampleStats& stats, const PhotonRules& rules) {
+    return std::move(tracePhotonPopulations(scene, kind, emitted, maxDepth, seed, iteration, stats, nullptr, rules)[0]);
 }
 
 }  // namespace ps

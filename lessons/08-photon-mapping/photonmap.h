@@ -158,20 +158,26 @@ using PhotonVisitor = std::function<bool(const WalkVertex& v, Photon* photon)>;
 // with N = emitted, wLight). Global map: every such vertex. Caustic map: only a vertex reached
 // from the light through specular bounces alone (L S+ D: bounces >= 2, every earlier surface
 // specular); the walk ends there, and at the first non-specular surface in any case. With a
-// visitor, each vertex is handed to it last. Appends to out.
+// visitor, each vertex is handed to it last. `continuation` (lesson 3's continuation rule, empty:
+// none) is the walk's: a photon path may split, or end at a vertex, by a rule of the caller's; its
+// photons carry the power it leaves them. Appends to out.
 void tracePhoton(const Scene& scene, Rng& rng, int maxDepth, MapKind kind, int emitted, std::vector<Photon>& out,
-                 const PhotonVisitor& visit = nullptr);
+                 const PhotonVisitor& visit = nullptr, const ContinuationRule& continuation = {});
+
+// Makes the continuation rule of one photon path (it may keep a count of the path's own).
+using PhotonRules = std::function<ContinuationRule()>;
 
 // Traces `emitted` photon paths (path i with taskRng(seed, iteration, i), in parallel tasks,
 // photons kept in path order) and builds their map (photon_map.cpp). Bit-identical for any
-// number of threads.
+// number of threads. `rules` (if set) makes every path's continuation rule.
 PhotonMap tracePhotonMap(const Scene& scene, MapKind kind, int emitted, int maxDepth, uint64_t seed, uint32_t iteration,
-                         SampleStats& stats);
+                         SampleStats& stats, const PhotonRules& rules = {});
 // The same with a photon visitor (a fresh one per photon path, from newVisitor): one map per
 // population, maps[p] holding the photons of population p (in path order; empty where none).
 std::vector<PhotonMap> tracePhotonPopulations(const Scene& scene, MapKind kind, int emitted, int maxDepth,
                                               uint64_t seed, uint32_t iteration, SampleStats& stats,
-                                              const std::function<PhotonVisitor()>& newVisitor);
+                                              const std::function<PhotonVisitor()>& newVisitor,
+                                              const PhotonRules& rules = {});
 
 // ---- the pm integrator (pm.cpp, Eq. 8.11) ----
 
@@ -313,6 +319,14 @@ double ppmNextRadius2(double r2, int pass, double alpha = kPpmAlpha);
 // The squared radius of pass i >= 1 from r_1^2: ppmNextRadius2 applied i - 1 times, in double
 // (ppm_integrator.cpp, plumbing).
 double ppmRadius2(double r1sq, int pass, double alpha = kPpmAlpha);
+
+// One pass of the `ppm` integrator (ppm_integrator.cpp, plumbing): iteration k is pass k + 1, a
+// new global map of photon paths (tracePhotonMap, with `rules` if set) and one camera ray per
+// pixel through LiProgressive with the pass's radius (ppmRadius2; the first radius, the photon
+// paths per pass and alpha from the scene's render parameters ppmradius, ppmphotons, ppmalpha, or
+// their defaults), into out.
+void renderPpmPass(const Scene& scene, uint32_t iteration, uint64_t seed, Image& out, SampleStats& stats,
+                   const PhotonRules& rules = {});
 
 // One pass's estimate of the radiance along a camera ray (Eq. 8.14): lesson 3's cameraWalk;
 // emission where the walk sees it directly or through specular bounces alone; specular surfaces

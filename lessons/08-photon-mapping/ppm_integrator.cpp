@@ -49,22 +49,31 @@ int photonsPerPass(const Scene& scene, const Image& out) {
                      return v > 0.0f && v < 1.0f ? std::string() : std::string("must lie between 0 and 1 (exclusive)");
                  }});
 
+}  // namespace
+
+void renderPpmPass(const Scene& scene, uint32_t iteration, uint64_t seed, Image& out, SampleStats& stats,
+                   const PhotonRules& rules) {
+    const RenderSettings& set = scene.settings;
+    // The defaults in double, as before the scenes could set them (the stored renders' bytes).
+    const float r1Set = renderParameter(set, "ppmradius", 0.0f), alphaSet = renderParameter(set, "ppmalpha", 0.0f);
+    const double r1 = r1Set > 0.0f ? double(r1Set) : double(kInitialRadius) * scene.radius;
+    const double alpha = alphaSet > 0.0f ? double(alphaSet) : kPpmAlpha;
+    const float r2 = float(ppmRadius2(r1 * r1, int(iteration) + 1, alpha));
+    const int maxDepth = set.maxDepth;
+    const PhotonMap map = tracePhotonMap(scene, MapKind::Global, photonsPerPass(scene, out), maxDepth, seed ^ kPpmSalt,
+                                         iteration, stats, rules);
+    renderPixelTasks(seed, iteration, out, stats, false, [&](int pixel, Rng& rng, Task&) {
+        const Ray ray = cameraRay(scene.camera, jitteredRaster(pixel, out.width, rng), rng);
+        return LiProgressive(scene, ray, rng, map, r2, maxDepth);
+    });
+}
+
+namespace {
+
 struct ProgressivePhotonMapper : Integrator {
     void renderIteration(const Scene& scene, uint32_t iteration, uint64_t seed, Image& out,
                          SampleStats& stats) override {
-        const RenderSettings& set = scene.settings;
-        // The defaults in double, as before the scenes could set them (the stored renders' bytes).
-        const float r1Set = renderParameter(set, "ppmradius", 0.0f), alphaSet = renderParameter(set, "ppmalpha", 0.0f);
-        const double r1 = r1Set > 0.0f ? double(r1Set) : double(kInitialRadius) * scene.radius;
-        const double alpha = alphaSet > 0.0f ? double(alphaSet) : kPpmAlpha;
-        const float r2 = float(ppmRadius2(r1 * r1, int(iteration) + 1, alpha));
-        const int maxDepth = set.maxDepth;
-        const PhotonMap map = tracePhotonMap(scene, MapKind::Global, photonsPerPass(scene, out), maxDepth,
-                                             seed ^ kPpmSalt, iteration, stats);
-        renderPixelTasks(seed, iteration, out, stats, false, [&](int pixel, Rng& rng, Task&) {
-            const Ray ray = cameraRay(scene.camera, jitteredRaster(pixel, out.width, rng), rng);
-            return LiProgressive(scene, ray, rng, map, r2, maxDepth);
-        });
+        renderPpmPass(scene, iteration, seed, out, stats);
     }
 };
 

@@ -129,8 +129,9 @@ float pixelEstimate(const AdjointCache& cache, const Scene& scene, const WalkVer
 // cache's Psi~ (a colour) for v, the path's weight nu = sum_c beta_c Psi~_c / sum_c Psi~_c (nu Psi~
 // is the path's expected contribution, Eq. 10.2) and Psi~ as one number, the mean of its channels;
 // Psi~ black: nu = the mean of beta's channels. Where ADRRS cannot decide (I~ < 0, a delta
-// material, an entry that is not reliable) lesson 3's roulette decides: survivalProbability(v.beta,
-// v.bounces).
+// material, an entry that is not reliable) it returns kNoDecision: the walk's own roulette, lesson
+// 3's, plays after the bounce, exactly as in pt.
+constexpr float kNoDecision = 0.0f;
 float adrrsContinuations(const AdjointCache& cache, const Scene& scene, const WalkVertex& v, float pixelEstimate);
 
 // ---------------------------------------------------------------------------------------------
@@ -150,11 +151,12 @@ using ExpectedContinuations = std::function<float(const WalkVertex& v)>;
 // before can still start kMaxContinuations - 1 more: at most 31 + 7 = 38 paths (README 1.3).
 constexpr int kMaxPathsPerCameraRay = 32;
 
-// The walk with survival and splitting (Algorithm 10.1): lesson 3's camera walk with a
-// continuation rule (Eq. 3.10) and no roulette of its own after each bounce (alwaysSurvive): at a
-// vertex x_k it may go on from (hit, visited with true, bounces < maxDepth) the rule asks
-// q = expected(v) (then q = min(q, 1) if kMaxPathsPerCameraRay paths have been started) and draws
-// the continuations (continuations(v.beta, q, rng)). The walk follows each continuation to its end
+// The walk with survival and splitting (Algorithm 10.1): lesson 3's camera walk (with lesson 3's
+// roulette) and a continuation rule (Eq. 3.10): at a vertex x_k it may go on from (hit, visited
+// with true, bounces < maxDepth) the rule asks q = expected(v); kNoDecision leaves x_k to the walk
+// (one continuation with v.beta, lesson 3's roulette after its bounce); else (q = min(q, 1) if
+// kMaxPathsPerCameraRay paths have been started) it draws the continuations (continuations(v.beta,
+// q, rng)), without the walk's roulette after their bounces. The walk follows each continuation to its end
 // before the next one samples its BSDF: depth first, so the numbers come from `rng` in one fixed
 // order. Every vertex of the tree is visited (the escapes included), in that order.
 void splittingWalk(const Scene& scene, const Ray& ray, Rng& rng, int maxDepth, const ExpectedContinuations& expected,
@@ -181,7 +183,7 @@ struct ADRRSSettings {
 // adds anything to the image (the ray that reached it, and its light sample, bought nothing).
 struct PathCounts {
     uint64_t cameraRays = 0, vertices = 0, wasted = 0;
-    uint64_t decisions = 0;  // times splittingWalk asked the rule (ADRRS only)
+    uint64_t decisions = 0;  // times the rule decided (ADRRS only; not where it left it to lesson 3's roulette)
     uint64_t roulette = 0;   // ... and the rule said q < 1
     uint64_t splits = 0;     // ... and the rule said q > 1
     PathCounts& operator+=(const PathCounts& o);

@@ -107,6 +107,7 @@ Color ADRRSPathTracer::Li(const Scene& scene, const Ray& ray, Rng& rng, PathCoun
     } else {
         const ExpectedContinuations rule = [&](const WalkVertex& v) {
             const float q = adrrsContinuations(cache_, scene, v, I);
+            if (q == kNoDecision) return q;  // lesson 3's roulette plays: not counted
             ++counts.decisions;
             if (q < 1.0f) ++counts.roulette;
             if (q > 1.0f) ++counts.splits;

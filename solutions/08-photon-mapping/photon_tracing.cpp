@@ -20,8 +20,9 @@ float photonSurvival(const Color& throughput, int bounces) {
 }
 
 void tracePhoton(const Scene& scene, Rng& rng, int maxDepth, MapKind kind, int emitted, std::vector<Photon>& out,
-                 const PhotonVisitor& visit) {
-    //! TODO(08) Eq. 8.1-8.3: lightWalk(scene, rng, {maxDepth, photonSurvival}, visitor). The visitor
+                 const PhotonVisitor& visit, const ContinuationRule& continuation) {
+    //! TODO(08) Eq. 8.1-8.3: lightWalk(scene, rng, options, visitor), the options {maxDepth,
+    //!          photonSurvival} with `continuation` as their continuation rule. The visitor
     //!          goes on at y0 (bounces 0). At a surface (bounces >= 1) with material m:
     //!          - m.isDelta(): a specular bounce, nothing stored; go on.
     //!          - else a photon {p = sp.p, power = beta / emitted, setWLight(v.wo)} goes to out
@@ -31,11 +32,14 @@ void tracePhoton(const Scene& scene, Rng& rng, int maxDepth, MapKind kind, int e
     //!          Last, at every vertex, the photon visitor if there is one (visit(v, the photon to
     //!          store or nullptr)): its false drops that photon and ends the walk.
     //! STUB (void)scene; (void)rng; (void)maxDepth; (void)kind; (void)emitted; (void)out; (void)visit;
+    //! STUB (void)continuation;
     //! STUB (void)PS_TODO("lesson 08: tracePhoton", 0);
     //! BEGIN
     bool onlySpecular = true;  // every surface so far was specular
     const float invN = 1.0f / float(emitted);
-    lightWalk(scene, rng, {maxDepth, photonSurvival}, [&](const WalkVertex& v, const LightPathStart&) {
+    WalkOptions opt(maxDepth, photonSurvival);
+    opt.continuation = continuation;
+    lightWalk(scene, rng, opt, [&](const WalkVertex& v, const LightPathStart&) {
         if (v.bounces == 0) return !visit || visit(v, nullptr);
         const Material& m = scene.materials[size_t(v.sp.material)];
         if (m.isDelta()) return !visit || visit(v, nullptr);

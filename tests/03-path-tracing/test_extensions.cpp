@@ -147,6 +147,47 @@ TEST_CASE(
 }
 
 TEST_CASE(
+    "random walk: a rule that decides survival itself turns the walk's roulette off for its continuations (Eq. 3.5, "
+    "3.10) [1 pt]") {
+    // The cube furnace with albedo 0.5 and a survival function of q = 1/2 after every bounce. A
+    // rule that returns one continuation with roulette = false (it decided at the vertex) must see
+    // every walk reach maxDepth with beta = 0.5^k; one that leaves the decision to the walk
+    // (roulette = true) must see the walk's roulette: some walks end early, the survivors carry
+    // beta / q = 1.
+    const ps::Scene scene = furnace(Enclosure::Cube, 0.5f, 1.0f);
+    constexpr int kDepth = 4;
+    for (const bool roulette : {false, true}) {
+        ps::WalkOptions opt(kDepth, [](const Color&, int) { return 0.5f; });
+        opt.continuation = [roulette](const ps::WalkVertex& v, ps::Rng&) {
+            ps::Continuations c{1, v.beta};
+            c.roulette = roulette;
+            return c;
+        };
+        int full = 0, wrongBeta = 0;
+        for (uint32_t i = 0; i < 16; ++i) {
+            const std::vector<Seen> seen = walkWith(scene, opt, i);
+            if (int(seen.size()) == kDepth + 1) ++full;
+            for (const Seen& v : seen) {
+                const double want = roulette ? 1.0 : std::pow(0.5, v.bounces);
+                if (!(std::abs(double(v.beta.r) - want) <= 1e-5 * want)) ++wrongBeta;
+            }
+        }
+        if (!roulette)
+            CHECK_MESSAGE((full == 16 && wrongBeta == 0),
+                          "a rule whose continuations say roulette = false (it decided survival itself), under a "
+                          "survival function of q = 1/2: expected all 16 walks to reach maxDepth "
+                              << kDepth << " with beta = 0.5^k (no roulette after their bounces), got " << full
+                              << " complete walks and " << wrongBeta << " vertices with another beta");
+        else
+            CHECK_MESSAGE((full < 16 && wrongBeta == 0),
+                          "a rule whose continuations say roulette = true, under a survival function of q = 1/2: "
+                          "expected the walk's roulette after every bounce (some of 16 walks end early, the "
+                          "survivors carry beta / q = 1), got "
+                              << full << " complete walks and " << wrongBeta << " vertices with another beta");
+    }
+}
+
+TEST_CASE(
     "random walk: a direction sampler picks every non-delta direction, never a delta one, and MIS weighs with its "
     "density (Eq. 3.7) [2 pts]") {
     // 1. Who samples: a mirror floor under a diffuse ceiling; the sampler must be asked at every

@@ -123,3 +123,34 @@ TEST_CASE("photons: the power stored on the floor is the irradiance integral I *
                                                   << " W (sd " << num(sd) << "), got " << num(total)
                                                   << " W (z = " << num(z) << ")");
 }
+
+TEST_CASE("photons: a continuation rule given to tracePhoton reaches the photon walk (Eq. 3.10, 8.3) [1 pt]") {
+    // A rule (lesson 3's continuation rule, the test's own) that splits every photon path in two at
+    // its first surface, each half with beta / 2, and leaves every other vertex to photonSurvival:
+    // the floor's second hits (after the mirror, maxdepth 3) then carry Phi / (2N), which no
+    // photon carries without the rule (photonSurvival keeps every power at Phi / N).
+    const ps::Scene scene = mirrorScene();
+    const double Phi = 4.0 * ps::kPi * kIntensity;
+    constexpr int N = 2000;
+    ps::SampleStats stats;
+    const ps::PhotonRules rules = [] {
+        return ps::ContinuationRule([](const ps::WalkVertex& v, ps::Rng&) {
+            return v.bounces == 1 ? ps::Continuations{2, v.beta * 0.5f} : ps::Continuations{1, v.beta};
+        });
+    };
+    const PhotonMap map =
+        ps::tracePhotonMap(scene, ps::MapKind::Global, N, 3, ps::testseed::seed(814), 0, stats, rules);
+    int full = 0, half = 0, other = 0;
+    for (size_t i = 1; i <= map.size(); ++i) {
+        const double p = map.nodes[i].power.r;
+        if (std::abs(p - Phi / N) <= 1e-4 * Phi / N) ++full;
+        else if (std::abs(p - 0.5 * Phi / N) <= 1e-4 * Phi / N) ++half;
+        else ++other;
+    }
+    CHECK_MESSAGE((full > 0 && half > 0 && other == 0),
+                  "tracePhotonMap (global, maxdepth 3) with a rule that splits every photon path in two at its first "
+                  "surface (beta / 2 each): expected photons of Phi / N (the first hits) and of Phi / (2N) (the "
+                  "halves' hits after the mirror), got "
+                      << full << " of Phi / N, " << half << " of Phi / (2N) and " << other
+                      << " of another power (the rule must be the photon walk's continuation rule)");
+}

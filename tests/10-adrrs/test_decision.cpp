@@ -79,39 +79,31 @@ TEST_CASE(
                           << " (looked up where the path came from, where the cache holds 10, q would be above 2)");
     }
 
-    // Where ADRRS cannot decide: lesson 3's roulette, survivalProbability(beta, bounces).
+    // Where ADRRS cannot decide: no decision (lesson 3's roulette then plays after the bounce).
     ps::WalkVertex late = base;
     late.bounces = 5;
     late.beta = Color(0.3f);
-    const float want = ps::survivalProbability(late.beta, late.bounces);
     const float noPixel = ps::adrrsContinuations(cache, scene, late, -1.0f);
-    CHECK_MESSAGE(noPixel == want,
-                  "adrrsContinuations without a pixel estimate (I~ = -1): expected lesson 3's "
-                  "survivalProbability(beta 0.3, 5 bounces) = "
-                      << want << ", got " << noPixel);
+    CHECK_MESSAGE(noPixel == ps::kNoDecision,
+                  "adrrsContinuations without a pixel estimate (I~ = -1): expected kNoDecision (lesson 3's roulette "
+                  "plays), got "
+                      << noPixel);
     ps::WalkVertex lateUnknown = late;
     lateUnknown.sp.p = Vec3(0.9f, 0.0f, 0.9f);
     const float noEntry = ps::adrrsContinuations(cache, scene, lateUnknown, 1.2f);
-    CHECK_MESSAGE(noEntry == want,
-                  "adrrsContinuations at an entry without a sample: expected lesson 3's "
-                  "survivalProbability = "
-                      << want << ", got " << noEntry);
+    CHECK_MESSAGE(noEntry == ps::kNoDecision,
+                  "adrrsContinuations at an entry without a sample: expected kNoDecision, got " << noEntry);
     ps::WalkVertex lateMirror = late;
     lateMirror.sp.material = 1;
     const float atMirror = ps::adrrsContinuations(cache, scene, lateMirror, 1.2f);
-    CHECK_MESSAGE(atMirror == want,
-                  "adrrsContinuations at a mirror (delta: nothing cached): expected lesson 3's "
-                  "survivalProbability = "
-                      << want << ", got " << atMirror);
+    CHECK_MESSAGE(atMirror == ps::kNoDecision,
+                  "adrrsContinuations at a mirror (delta: nothing cached): expected kNoDecision, got " << atMirror);
 
     // Entries the cache cannot vouch for: black (no light seen), or too noisy.
     const auto fallback = [&](const char* what) {
         const float got = ps::adrrsContinuations(cache, scene, late, 1.2f);
-        CHECK_MESSAGE(got == want, "adrrsContinuations where the entry holds "
-                                       << what
-                                       << " (not reliable): expected lesson 3's "
-                                          "survivalProbability = "
-                                       << want << ", got " << got);
+        CHECK_MESSAGE(got == ps::kNoDecision, "adrrsContinuations where the entry holds "
+                                                  << what << " (not reliable): expected kNoDecision, got " << got);
     };
     cache.set(here, Color(0.0f));
     fallback("black");

@@ -22,6 +22,10 @@ struct Visit {
     int material;
 };
 
+Visit visitOf(const ps::WalkVertex& v) {
+    return {v.bounces, v.hit, v.beta, v.sp.p, v.sp.n, v.wo, v.pPrev, v.pdfPrev, v.specular, v.sp.material};
+}
+
 struct Walked {
     std::vector<Visit> visits;
     size_t numbers = 0;
@@ -37,8 +41,7 @@ Walked walk(const ps::Scene& scene, int maxDepth, float q, float u, const std::f
     ps::splittingWalk(
         scene, ray, rng, maxDepth, [&](const ps::WalkVertex&) { return q; },
         [&](const ps::WalkVertex& v) {
-            w.visits.push_back(
-                {v.bounces, v.hit, v.beta, v.sp.p, v.sp.n, v.wo, v.pPrev, v.pdfPrev, v.specular, v.sp.material});
+            w.visits.push_back(visitOf(v));
             return goOn ? goOn(v.bounces) : true;
         });
     w.numbers = replay.read;
@@ -243,6 +246,40 @@ TEST_CASE(
                   "splittingWalk, rule q = 8 with the cap: expected beta = 0.5 / 8 after one bounce, "
                   "(0.5 / 8)^2 below the four splits and 0.5 / 8 * 0.5 below the four vertices whose q was "
                   "cut to 1 (a continuation carries beta divided by the q actually used)");
+}
+
+TEST_CASE(
+    "splitting walk: where the rule cannot decide, the walk is lesson 3's, its roulette included (Algorithm 10.1) [1 pt]") {
+    // A rule that never decides (kNoDecision) must leave exactly lesson 3's camera walk: the same
+    // vertices, throughputs and random numbers as cameraWalk with lesson 3's roulette, over 32
+    // rays of up to 12 bounces in a closed box of albedo 0.5 (the roulette plays from bounce 3).
+    const ps::Scene scene = closedBox(0.5f, 12, false);
+    int differ = 0;
+    std::string first;
+    for (uint32_t i = 0; i < 32; ++i) {
+        const ps::Ray ray(Vec3(0.5f), glm::normalize(Vec3(0.1f + 0.05f * float(i), -0.2f, 1.0f)));
+        std::vector<Visit> mine, pt;
+        ps::Rng a = ps::taskRng(ps::testseed::seed(1031), 0, i), b = a;
+        ps::splittingWalk(
+            scene, ray, a, 12, [](const ps::WalkVertex&) { return ps::kNoDecision; },
+            [&](const ps::WalkVertex& v) {
+                mine.push_back(visitOf(v));
+                return true;
+            });
+        ps::cameraWalk(scene, ray, b, {12}, [&](const ps::WalkVertex& v) {
+            pt.push_back(visitOf(v));
+            return true;
+        });
+        bool same = mine.size() == pt.size() && a.nextU32() == b.nextU32();
+        for (size_t k = 0; same && k < mine.size(); ++k) same = mine[k].beta == pt[k].beta;
+        if (!same && differ++ == 0)
+            first = "ray " + std::to_string(i) + ": lesson 3's walk visits the bounces " + sequence(pt) +
+                    "(roulette from bounce 3), splittingWalk " + sequence(mine);
+    }
+    CHECK_MESSAGE(differ == 0,
+                  "splittingWalk with a rule that never decides (kNoDecision): expected lesson 3's "
+                  "camera walk, its roulette included (same vertices, throughputs and random numbers); "
+                      << differ << " of 32 rays differ, the first: " << first);
 }
 
 TEST_CASE("pt-adrrs: the same image and counts for 1 and 2 threads [1 pt]") {

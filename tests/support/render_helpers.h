@@ -56,6 +56,17 @@ inline Image blocks(const Image& img, int b) {
     return out;
 }
 
+// The pixels of img where mask is true, in a row (for z-tests on a part of an image).
+inline Image select(const Image& img, const std::vector<bool>& mask) {
+    int n = 0;
+    for (bool m : mask) n += m;
+    Image out(n, 1);
+    int k = 0;
+    for (size_t i = 0; i < img.pixels.size(); ++i)
+        if (mask[i]) out.pixels[size_t(k++)] = img.pixels[i];
+    return out;
+}
+
 // Per pixel of the scene's camera, row by row: rays through the 6 x 6 points of a grid over the
 // pixel (its edges included), each tested with pred(hit, sp), sp the first surface the ray meets
 // (hit false: none); true where `some` ray passes (all = false) or where every ray does (all =

@@ -1,0 +1,16 @@
+// Lesson 12 — the pen-and-paper exercise. Interface: lessons/12-path-guiding/exercises.h.
+// Equation numbers refer to lessons/12-path-guiding/README.md ("Exercise (pen and paper)").
+#include <cmath>
+#include "12-path-guiding/exercises.h"
+#include "todo.h"
+
+namespace ps {
+
+double guidedVariance(double alpha) {
+    // TODO(12) Eq. 12.E1: Var[X] / E[X]^2 for the mixture with selection probability alpha, as a
+    //          closed form in alpha (both ends, alpha = 0 and alpha = 1, included).
+    (void)alpha;
+    return PS_TODO("lesson 12: guidedVariance (exercise)", 0.0);
+}
+
+}  // namespace ps

@@ -1,0 +1,46 @@
+// Lesson 12 — roulette and splitting for particles: the importons a camera path leaves, and a
+// particle's decision on their importance. Interface: lessons/12-path-guiding/guiding.h. Equation
+// numbers refer to lessons/12-path-guiding/README.md.
+#include "12-path-guiding/guiding.h"
+#include "todo.h"
+
+namespace ps {
+
+void appendImportons(const std::vector<ImportanceVertex>& path, int pixels, int paths, std::vector<Photon>& out) {
+    //! TODO(12) Eq. 12.16: for every vertex that stores one, a Photon at p whose power is the
+    //!          throughput times pixels / paths, and whose direction (setWLight) is wo.
+    //!          Pitfall: a camera path carries its own pixel's importance; the pass traced
+    //!          paths / pixels of them per pixel.
+    //! STUB (void)path; (void)pixels; (void)paths; (void)out;
+    //! STUB (void)PS_TODO("lesson 12: appendImportons", 0);
+    //! BEGIN
+    const float scale = float(pixels) / float(paths);
+    for (const ImportanceVertex& v : path) {
+        if (!v.store) continue;
+        Photon ph;
+        ph.p = v.p;
+        ph.power = v.beta * scale;
+        ph.setWLight(v.wo);
+        out.push_back(ph);
+    }
+    //! END
+}
+
+Decision particleDecision(const AdjointCache& importance, const Scene& scene, const WalkVertex& y, float imageTotal) {
+    //! TODO(12) Eq. 12.17: no decision at a miss, a delta material or where y's entry of the
+    //!          importance cache (the side y.wo sees) is not reliable; else decided, with q from
+    //!          windowContinuations(y.beta, the albedo times the entry's estimate, imageTotal).
+    //!          Pitfall: the ideal particle brings the whole image's total, not one pixel's value.
+    //! STUB (void)importance; (void)scene; (void)y; (void)imageTotal;
+    //! STUB return PS_TODO("lesson 12: particleDecision", Decision());
+    //! BEGIN
+    if (!y.hit) return Decision();
+    const Material& m = scene.materials[y.sp.material];
+    if (m.isDelta()) return Decision();
+    const int e = importance.entry(y.sp.p, y.sp.n, y.wo);
+    if (!importance.reliable(e)) return Decision();
+    return {true, windowContinuations(y.beta, m.albedo * importance.estimate(e), imageTotal)};
+    //! END
+}
+
+}  // namespace ps
