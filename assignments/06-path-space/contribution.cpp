@@ -6,13 +6,10 @@
 namespace ps {
 
 DColor contribution(const Scene& scene, const Path& x) {
-    // TODO(06) Eq. 6.3: f(x) = Le(x0 -> x1) * prod over edges of G V * prod over inner vertices of
-    //          f_s * W_e^(j)(x_{k-1} -> x_k), W_e^(j) = width * height * camera.We(x_k, direction
-    //          from x_k to x_{k-1}) (Eq. 4.6); 0 if k < 1.
-    //          Pitfalls: in double (DColor); evalBSDF(m, n, towards the camera, towards the light)
-    //          (lesson 3's order); a specular vertex gives deltaLobe's fs, 0 if !lobe.valid (Eq. 6.11).
-    //          Pitfall: pass deltaTolerance(x[i-1], x[i], x[i+1]) to deltaLobe: far from the origin
-    //          the stored positions round the directions past the default 1e-3.
+    // TODO(06) The measurement contribution f(x) of the path for the pixel it lands in (Eq. 6.3, W_e^(j) of Eq. 4.6;
+    //          contribution in paths.h), in double; 0 if k < 1. Pitfalls: evalBSDF in lesson 3's argument order; a
+    //          specular vertex gives its delta's coefficient (Eq. 6.11), found with deltaTolerance of the three
+    //          vertices (paths.h: far from the origin the positions round the directions past the default).
     (void)scene; (void)x;
     return PS_TODO("lesson 06: contribution", DColor(0.0));
 }

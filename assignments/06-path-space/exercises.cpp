@@ -7,8 +7,7 @@
 namespace ps {
 
 double lightTracerPdfK2(double lightArea, const Vec3& x0, const Vec3& n0, const Vec3& x1, const Vec3& n1) {
-    // TODO(06) Eq. 6.E1: p_{2,1} = P(l) p_A(x0) times the cosine-weighted direction pdf at x0
-    //          converted to area at x1 (Eq. 6.6, 6.8); the pinhole x2 has probability 1.
+    // TODO(06) p_{2,1} of Eq. 6.E1 (exercises.h), solved on paper (Eq. 6.6, 6.8).
     (void)lightArea; (void)x0; (void)n0; (void)x1; (void)n1;
     return PS_TODO("lesson 06: lightTracerPdfK2 (exercise)", 0.0);
 }

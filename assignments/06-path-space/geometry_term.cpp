@@ -6,10 +6,8 @@
 namespace ps {
 
 float geometryTerm(const PathVertex& a, const PathVertex& b) {
-    // TODO(06) Eq. 6.4, 6.5: G(a, b) = |cos theta_a| |cos theta_b| / d^2, no visibility.
-    //          Pitfalls: no cosine at a point light (the pinhole has one, to camera.forward()); an
-    //          infinite end has no cosine and no 1/d^2 (sp.n is the direction towards it); both
-    //          infinite or d = 0: 0.
+    // TODO(06) G(a, b) without visibility (Eq. 6.4, 6.5; geometryTerm in paths.h). Pitfalls: no cosine at a point
+    //          light; an infinite end has no cosine and no 1/d^2; both infinite or d = 0 give 0.
     (void)a; (void)b;
     return PS_TODO("lesson 06: geometryTerm", 0.0f);
 }

@@ -6,9 +6,8 @@
 namespace ps {
 
 float pdfSolidAngleToArea(float pdfW, const PathVertex& from, const PathVertex& to) {
-    // TODO(06) Eq. 6.6: pdfW |cos theta_to| / d^2, the density per unit area at `to`.
-    //          Pitfalls: no cosine at a point light or the pinhole; an infinite `to` keeps pdfW
-    //          (its measure is solid angle); d = 0 gives 0.
+    // TODO(06) pdfW as a density per unit area at `to` (Eq. 6.6; paths.h), 0 for d = 0. Pitfalls (README 6): only the
+    //          cosine at `to`, none at a point light or the pinhole; an infinite `to` keeps solid angle.
     (void)pdfW; (void)from; (void)to;
     return PS_TODO("lesson 06: pdfSolidAngleToArea", 0.0f);
 }

@@ -8,59 +8,40 @@
 namespace ps {
 
 ReversePdfs connectionPdfs(const Scene& scene, const PathVertex* y, int s, const PathVertex* z, int t) {
-    // TODO(07) Eq. 7.6: the four densities the connection y_{s-1} -- z_{t-1} creates, with
-    //          pdfLightOrigin / pdfLightToward when z_{t-1} is itself the light (s = 0), else
-    //          pdfScatter continuing each walk across the edge (Importance towards the camera,
-    //          Radiance towards the light). Pitfall: s = 1 starts with pdfLightToward, not
-    //          pdfScatter; leave a field 0 where its vertex does not exist.
+    // TODO(07) The connection's four new reverse densities (Eq. 7.6; ReversePdfs in bpt.h), per unit area. Pitfalls: s
+    //          = 1's edge starts at the light, not with a BSDF; a field stays 0 where its vertex does not exist.
     (void)scene; (void)y; (void)s; (void)z; (void)t;
     return PS_TODO("lesson 07: connectionPdfs", ReversePdfs());
 }
 
 Connection connectEmitter(const Scene& scene, const PathVertex* z, int t) {
-    // TODO(07) Eq. 7.2, 7.4 (s = 0): the camera subpath ends on a light: C* = beta_{t-1} times
-    //          the radiance z_{t-1} sends back along the walk (emittedRadiance of its light, or
-    //          the background's). Not valid if z_{t-1} emits nothing.
-    //          Pitfall: the emitted direction is from z_{t-1} TOWARDS z_{t-2} (the back of an area
-    //          light is black).
+    // TODO(07) C*_{0,t} (Eq. 7.2, 7.4; connectEmitter in bpt.h). Pitfall: the emission leaves z_{t-1} towards z_{t-2}
+    //          (the back of an area light is black).
     (void)scene; (void)z; (void)t;
     return PS_TODO("lesson 07: connectEmitter", Connection());
 }
 
 Connection connectCamera(const Scene& scene, const PathVertex* y, int s, const PathVertex& z0) {
-    // TODO(07) Eq. 7.2, 7.4 (t = 1): y_{s-1} joined to the pinhole z0 (its position z0.p(); a
-    //          camera model's point) with lesson 5's connectToCamera(..., z0.p()):
-    //          C* = beta_{s-1} f importance, f = the BSDF from the camera's
-    //          direction to y_{s-2}'s, or for s = 1 what the light sends towards the camera
-    //          (a point light: its intensity); c.raster where it lands.
-    //          Pitfalls: no cosine at a point light (onSurface); a background y_0 is a direction,
-    //          not a point: it cannot be joined to the pinhole (Eq. 7.12).
+    // TODO(07) C*_{s,1} and where it lands (Eq. 7.2, 7.4; connectCamera in bpt.h), through lesson 5's camera
+    //          connection. Pitfalls: no cosine at a point light; a background y_0 cannot be joined to the camera (Eq.
+    //          7.12).
     (void)scene; (void)y; (void)s; (void)z0;
     return PS_TODO("lesson 07: connectCamera", Connection());
 }
 
 Connection connectLight(const Scene& scene, const PathVertex* z, int t, float uLight, const Vec2& uPos) {
-    // TODO(07) Eq. 7.2, 7.4 (s = 1): next-event estimation from z_{t-1} as in lesson 2: a light
-    //          chosen with scene.selectLight(uLight, ...), a point on it with sampleLight(..., uPos),
-    //          stored as the new light vertex c.sampledLight (lesson 6's lightVertex of the light
-    //          sample; pdfFwd = pdfLightOrigin, beta = 1 / pdfFwd); C* = beta_y Le G f_z beta_z
-    //          with lesson 6's geometryTerm, after the shadow ray. Not valid at a background
-    //          z_{t-1}, nor where the light sample has no density (pdfA and pdfW both 0).
-    //          Pitfalls: y_0's density is the light subpath's (with the light's selection
-    //          probability), not the light sample's; a shadow ray to a point light or the
-    //          background is not spawnRayTo(a surface point).
+    // TODO(07) C*_{1,t} with its own new light vertex (Eq. 7.2, 7.4; connectLight in bpt.h), not valid where the light
+    //          sample has no density. Pitfalls (README 6): that vertex's density is the light subpath's (Eq. 7.3, with
+    //          P(l)), not the light sample's; the shadow ray to a point light or the background is not one to a
+    //          surface point.
     (void)scene; (void)z; (void)t; (void)uLight; (void)uPos;
     return PS_TODO("lesson 07: connectLight", Connection());
 }
 
 Connection connectVertices(const Scene& scene, const PathVertex* y, int s, const PathVertex* z, int t) {
-    // TODO(07) Eq. 7.2, 7.4, 7.6 (s, t >= 2): the two endpoints joined by a shadow ray:
-    //          C* = beta_y f_y G f_z beta_z with lesson 6's geometryTerm, each f and the four
-    //          reverse pdfs (c.rev, as connectionPdfs would give them) from one scatteringAt per
-    //          endpoint; valid = not black and unoccluded.
-    //          Pitfalls: each endpoint's light side and camera side (y_{s-1}'s camera side is
-    //          z_{t-1}); a background end cannot be joined; two coincident points (direction 0)
-    //          give nothing, not NaN.
+    // TODO(07) C*_{s,t} and its reverse densities (Eq. 7.2, 7.4, 7.6; connectVertices in bpt.h), each endpoint's f and
+    //          densities from one scattering event. Pitfalls: each endpoint's light and camera side; a background end
+    //          cannot be joined; two coincident points give nothing, not NaN.
     (void)scene; (void)y; (void)s; (void)z; (void)t;
     return PS_TODO("lesson 07: connectVertices", Connection());
 }

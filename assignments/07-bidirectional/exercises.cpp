@@ -8,8 +8,7 @@
 namespace ps {
 
 double techniqueWeightK2(const double pdf[3], int s, double b) {
-    // TODO(07) Eq. 7.E1: Eq. 7.5 for three techniques. Divide every pdf by the largest one first,
-    //          so that pdf^b neither overflows nor underflows.
+    // TODO(07) Eq. 7.E1 (exercises.h): Eq. 7.5 for three techniques, safe from overflow and underflow of pdf^b.
     (void)pdf; (void)s; (void)b;
     return PS_TODO("lesson 07: techniqueWeightK2 (exercise)", 0.0);
 }

@@ -12,10 +12,8 @@ double heuristicPower(double r, Heuristic h) { return h == Heuristic::Power ? r 
 
 // c_j of Eq. 7.10 for vertex j of a subpath (camera subpaths start with the camera).
 [[maybe_unused]] double connectible(const PathVertex* path, int j) {
-    // TODO(07) Eq. 7.10: c_j = 1 if the connection may sit just before path[j], else 0.
-    //          Pitfalls: a camera subpath (path[0].isCamera()) has c_0 = 0 at the pinhole (1 at
-    //          a camera model's point: t = 0) and c_1 = 0 at the background; a light subpath's
-    //          c_0 = 0 at a point light; no edge at a specular vertex.
+    // TODO(07) c_j of Eq. 7.10 for path[j] (updateMisSum in bpt.h). Pitfall: a subpath's first vertex (pinhole, camera
+    //          model's point, point light) and the background.
     (void)path; (void)j;
     return PS_TODO("lesson 07: connectible", 0.0);
 }
@@ -29,8 +27,7 @@ double heuristicPower(double r, Heuristic h) { return h == Heuristic::Power ? r 
 // The sum over the techniques that move the connection into this subpath (Eq. 7.9), for the
 // endpoint e = path[e] with the connection's reverse pdfs of path[e] and path[e-1].
 [[maybe_unused]] double subpathSum(const PathVertex* path, int e, float revEnd, float revPrev, Heuristic h) {
-    // TODO(07) Eq. 7.9: the endpoint's sum with the connection's two new reverse pdfs,
-    //          r'_e (c_e + r'_{e-1} (c_{e-1} + path[e].misSum)) (e = 0: r'_0 c_0), r' = ratio(...).
+    // TODO(07) The endpoint's partial sum with the connection's two new reverse densities (Eq. 7.9).
     (void)path; (void)e; (void)revEnd; (void)revPrev; (void)h;
     return PS_TODO("lesson 07: subpathSum", 0.0);
 }
@@ -38,16 +35,13 @@ double heuristicPower(double r, Heuristic h) { return h == Heuristic::Power ? r 
 }  // namespace
 
 void updateMisSum(Subpath& path, size_t i, Heuristic h) {
-    // TODO(07) Eq. 7.9: path[i].misSum = B_i = r_{i-2}^b (c_{i-2} + B_{i-1}), B_0 = B_1 = 0.
-    //          Pitfall: call it only once path[i-2].pdfRev is known.
+    // TODO(07) B_i of Eq. 7.9 into path[i].misSum (bpt.h). Pitfall: only once path[i-2].pdfRev is known.
     (void)path; (void)i; (void)h;
     (void)PS_TODO("lesson 07: updateMisSum", 0);
 }
 
 float misWeightRecursive(const PathVertex* y, int s, const PathVertex* z, int t, const ReversePdfs& rev, Heuristic h) {
-    // TODO(07) Eq. 7.8: w = 1 / (1 + light sum + camera sum), each sum from subpathSum at the
-    //          subpath's endpoint. Pitfall: s = 0 has no light sum (and t = 0 no
-    //          camera sum).
+    // TODO(07) w_{s,t} by Eq. 7.8 from the endpoints' sums. Pitfall: s = 0 has no light sum, t = 0 no camera sum.
     (void)y; (void)s; (void)z; (void)t; (void)rev; (void)h;
     return PS_TODO("lesson 07: misWeightRecursive", 0.0f);
 }

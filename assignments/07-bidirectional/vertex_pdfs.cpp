@@ -7,29 +7,24 @@
 namespace ps {
 
 float pdfLightOrigin(const Scene& scene, const PathVertex& v) {
-    // TODO(07) Eq. 7.3: the density of the light vertex itself, as startLightPath samples it:
-    //          P(l) times pdfEmission's pdfA (the background's vertex is a direction: its pdfW).
-    //          Pitfall: forgetting P(l); 0 if v is on no light.
+    // TODO(07) The density of the light vertex v itself (Eq. 7.3; pdfLightOrigin in bpt.h). Pitfall: P(l); 0 on no
+    //          light.
     (void)scene; (void)v;
     return PS_TODO("lesson 07: pdfLightOrigin", 0.0f);
 }
 
 float pdfLightToward(const Scene& scene, const PathVertex& light, const PathVertex& to) {
-    // TODO(07) Eq. 7.3: the area density at `to` of sampleEmission's direction: pdfEmission's
-    //          pdfW through lesson 6's pdfSolidAngleToArea; the background's parallel rays come from
-    //          a disk: its pdfA times |cos theta_to| on a surface. Pitfall: 0 on no light.
+    // TODO(07) The area density of the emitted direction at `to` (Eq. 7.3; pdfLightToward in bpt.h), the background's
+    //          from its disk. Pitfall: 0 on no light.
     (void)scene; (void)light; (void)to;
     return PS_TODO("lesson 07: pdfLightToward", 0.0f);
 }
 
 float pdfScatter(const Scene& scene, const PathVertex* prev, const PathVertex& cur, const PathVertex& next,
                  Transport mode) {
-    // TODO(07) Eq. 7.3, 7.7a: the solid-angle density with which `cur` (the camera: isCamera(),
-    //          camera.pdfDirection(its position, direction); or a surface arrived at from prev)
-    //          samples the direction to `next`, through pdfSolidAngleToArea.
-    //          A specular cur: deltaLobe's coefficient, pdfLight when walking with the light
-    //          (Importance), pdfCamera against it (Radiance). Pitfalls: the delta's coefficient is
-    //          not 0; use it even if lobe.valid is false (rounding on a very short segment).
+    // TODO(07) The area density with which cur samples next (Eq. 7.3, 7.7a; pdfScatter in bpt.h), walking in `mode`.
+    //          Pitfalls (README 6): a specular cur's density is its delta's coefficient, not 0, even when the lobe is
+    //          not valid; the BSDF's arguments in the walk's order.
     (void)scene; (void)prev; (void)cur; (void)next; (void)mode;
     return PS_TODO("lesson 07: pdfScatter", 0.0f);
 }

@@ -7,11 +7,9 @@ namespace ps {
 
 Color radianceEstimate(const PhotonMap& map, const SurfacePoint& sp, const Material& m, const Vec3& wo,
                        const EstimateOptions& opt) {
-    // TODO(08) Eq. 8.6: find the photons around sp.p: opt.k > 0: nearestPhotons(k, maxRadius^2),
-    //          r^2 = found[0].d2 if k were found, else maxRadius^2; opt.k == 0: photonsInRadius
-    //          with r^2 = maxRadius^2. Then L = sum of evalBSDF(m, sp.n, wo, ph.wLight()) * ph.power
-    //          * filterKernel(opt.filter, d2, r^2, opt.coneK). No photon: black.
-    //          (A thread_local std::vector<NearPhoton> saves an allocation per call.)
+    // TODO(08) The radiance leaving sp towards wo from the photons around it (Eq. 8.6), as radianceEstimate in
+    //          photonmap.h states it. Pitfalls (README 6): r is the k-th distance only when k photons were found
+    //          (fewer: the maximum radius); the photon's direction is wLight(); 1/pi appears once.
     (void)map; (void)sp; (void)m; (void)wo; (void)opt;
     return PS_TODO("lesson 08: radianceEstimate", Color(0.0f));
 }

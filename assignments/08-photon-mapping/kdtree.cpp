@@ -8,23 +8,18 @@
 namespace ps {
 
 size_t leftSubtreeSize(size_t n) {
-    // TODO(08) Eq. 8.4: a left-balanced tree of n nodes has h = floor(log2 n) full levels above
-    //          its last one (root at level 0), which holds n - (2^h - 1) nodes packed to the left.
-    //          The left subtree has the 2^(h-1) - 1 nodes of its full levels plus
-    //          min(n - (2^h - 1), 2^(h-1)) of the last level's. n == 1: 0.
+    // TODO(08) n_left(n) of Eq. 8.4: how many of the n nodes of a left-balanced tree lie in the root's left subtree (0
+    //          for n == 1). Pitfall: a last level more than half full spills into the right subtree.
     (void)n;
     return PS_TODO("lesson 08: leftSubtreeSize", size_t(0));
 }
 
 
 void buildKdTree(const std::vector<Vec3>& points, KdTree& tree) {
-    // TODO(08) Eq. 8.4: the tree's arrays get n + 1 entries (index 0 unused), then the tree of all
-    //          points at node 1, recursively, for the points of a node in one range [begin, end)
-    //          of an array of their indices: the axis of largest extent of their bounding box; the
-    //          median index m = begin + leftSubtreeSize(end - begin), found with std::nth_element
-    //          on that coordinate (O(n) per level, O(n log n) in all; do not sort); the median
-    //          point goes to the node with its index and axis, [begin, m) to node 2i, (m, end) to
-    //          node 2i + 1. A node without children keeps axis 0. No points: empty arrays.
+    // TODO(08) The left-balanced kd-tree of the points in tree's arrays, nodes 1..n in heap order (Eq. 8.4; KdTree and
+    //          buildKdTree in photonmap.h); a node without children keeps axis 0. Pitfalls (README 6): index 0 is
+    //          unused; the median's rank is leftSubtreeSize, not n/2; sorting instead of std::nth_element is not O(n
+    //          log n).
     (void)points;
     tree = KdTree();
     (void)PS_TODO("lesson 08: buildKdTree", 0);

@@ -7,17 +7,15 @@
 namespace ps {
 
 double acceptance(double fx, double fy, const Proposal& p) {
-    // TODO(09) Eq. 9.2: a = min(1, f(y) T(y -> x) / (f(x) T(x -> y))).
-    //          Pitfall: min(1, f(y) / f(x)) is right only for a symmetric mutation; near the ends of
-    //          [0, 1] the local one is not.
+    // TODO(09) The Metropolis-Hastings acceptance probability of the move (Eq. 9.2). Pitfall (README 6): dropping the
+    //          densities is right only for a symmetric mutation; the local one is not, near the ends of [0, 1].
     (void)fx; (void)fy; (void)p;
     return PS_TODO("lesson 09: acceptance", 0.0);
 }
 
 Step metropolisStep(const Function1D& f, double x, const Mutations& m, Rng& rng) {
-    // TODO(09) One step: uSelect, u, then the acceptance number, each rng.uniformDouble(), in
-    //          this order (the tests replay them); p = mutate(x, uSelect, u, m),
-    //          a = acceptance(f(x), f(p.y), p); next = p.y if the number is < a, else x.
+    // TODO(09) One step of the chain from x (metropolis1d.h), drawing its three numbers in the order stated there (the
+    //          tests replay them).
     (void)f; (void)m; (void)rng;
     return PS_TODO("lesson 09: metropolisStep", (Step{x, Proposal{x, 1.0, 1.0}, 0.0}));
 }

@@ -10,20 +10,9 @@ namespace ps {
 
 float mmltStep(MultiplexedChain& chain, const MMLTMutations& m, Rng& rng, const SubpathTracer& trace,
                const TechniqueTarget& target, const SplatFunction& splat) {
-    // TODO(09) Eq. 9.13, 9.14: uKind = rng.uniform(); x = chain.current.
-    //          Technique mutation (uKind < m.pTechnique): p = mutateTechnique(chain.s, chain.k,
-    //          rng.uniform()); y = target(chain.paths, s' = int(p.y)): the same subpaths, no stream
-    //          touched; a = acceptance(I(x), I(y), p) (Eq. 9.2 with p's T).
-    //          Else large (uKind < m.pTechnique + m.pLarge) or small: startProposal(large) on both
-    //          streams; s' = selectTechnique(chain.k, rng.uniform()) if large, else chain.s; two
-    //          Rngs replaying chain.camera and chain.light; trace(camera, light, chain.proposed);
-    //          y = target(chain.proposed, s'); a = min(1, I(y) / I(x)) (symmetric: no T).
-    //          Splat x.L (1 - a) / I(x) at x.raster and y.L a / I(y) at y.raster (weights > 0).
-    //          rng.uniform() < a: accept: chain.s = s', chain.current = y, and for a large or
-    //          small step chain.paths takes chain.proposed (std::swap) and both streams accept();
-    //          else both streams reject() (large or small). Return a.
-    //          Pitfall: min(1, I(y) / I(x)) for the technique mutation too: next to the ends its
-    //          T are not equal (Eq. 9.13), and the chain visits the end techniques too rarely.
+    // TODO(09) One MMLT step (Eq. 9.14), as mmltStep in mmlt.h states it, numbers drawn in that order. Pitfalls
+    //          (README 6): the technique mutation's T are not symmetric next to the ends (Eq. 9.13); it traces nothing
+    //          and touches no stream; an accepted large or small step keeps its subpaths.
     (void)chain; (void)m; (void)rng; (void)trace; (void)target; (void)splat;
     return PS_TODO("lesson 09: mmltStep", 0.0f);
 }

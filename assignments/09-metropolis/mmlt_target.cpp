@@ -9,27 +9,23 @@
 namespace ps {
 
 float techniqueProbability(int k) {
-    // TODO(09) Eq. 9.12: p_k(s), uniform over the k + 1 techniques s = 0 .. k of path length k.
+    // TODO(09) p_k(s) of Eq. 9.12 (mmlt.h).
     (void)k;
     return PS_TODO("lesson 09: techniqueProbability", 0.0f);
 }
 
 int selectTechnique(int k, float u) {
-    // TODO(09) Eq. 9.12: s = floor(u (k + 1)), at most k (u close to 1 may round up).
+    // TODO(09) The technique s of probability p_k(s) (Eq. 9.12) for one number u. Pitfall: u close to 1 may round to k
+    //          + 1.
     (void)k; (void)u;
     return PS_TODO("lesson 09: selectTechnique", 0);
 }
 
 PathSample multiplexedTarget(const Scene& scene, const SubpathPair& paths, int k, int s) {
-    // TODO(09) Eq. 9.12: t = k + 1 - s; c = connectTechnique(scene, paths, s, t). Valid: its MIS
-    //          weight w = misWeightRecursive(y, s, paths.camera.data(), t, c.rev, Heuristic::Power)
-    //          with y = &c.sampledLight for s = 1, else paths.light.data() (as lesson 7's
-    //          bptSample); L = c.value w / techniqueProbability(k); t = 1: also divided by
-    //          width * height (scene.camera) and raster = c.raster; t >= 2: raster = paths.raster.
-    //          I = max(0, luminance(L)). Not valid: L = 0, I = 0, raster = paths.raster.
-    //          Pitfalls: without the weight every technique counts the whole path (the image is
-    //          about k + 1 times too bright); without 1 / p_k(s) the bootstrap's b_k is k + 1 times
-    //          too small (the chain still visits the right states: only the brightness is off).
+    // TODO(09) The chain's target at technique s (Eq. 9.12), as multiplexedTarget in mmlt.h states it; the MIS weight
+    //          as in lesson 7's bptSample. Pitfalls (README 6): without the weight the image is about k + 1 times too
+    //          bright; without 1 / p_k(s) the bootstrap's b_k is k + 1 times too small; t = 1 lands at the
+    //          connection's raster.
     (void)scene; (void)paths; (void)k; (void)s;
     return PS_TODO("lesson 09: multiplexedTarget", PathSample{});
 }

@@ -7,22 +7,20 @@
 namespace ps {
 
 Proposal mutateIndependent(double x, double u) {
-    // TODO(09) Eq. 9.1: y = u, and both densities: a uniform proposal on [0, 1] does not depend on x.
+    // TODO(09) The independent proposal of Eq. 9.1 with both densities.
     (void)x; (void)u;
     return PS_TODO("lesson 09: mutateIndependent", (Proposal{x, 1.0, 1.0}));
 }
 
 Proposal mutateLocal(double x, double u, double r) {
-    // TODO(09) Eq. 9.1: x's window [max(0, x - r), min(1, x + r)], y = lo + u (hi - lo);
-    //          Txy = 1 / (x's window length), Tyx = 1 / (y's window length).
-    //          Pitfall: clamping x + r (2u - 1) to [0, 1] instead puts mass on 0 and 1, which has
-    //          no density at all.
+    // TODO(09) The local proposal of Eq. 9.1 with both densities. Pitfall: clamping x + r (2u - 1) to [0, 1] puts mass
+    //          on 0 and 1, which has no density.
     (void)x; (void)u; (void)r;
     return PS_TODO("lesson 09: mutateLocal", (Proposal{x, 1.0, 1.0}));
 }
 
 Proposal mutate(double x, double uSelect, double u, const Mutations& m) {
-    // TODO(09) The mixture: mutateIndependent(x, u) if uSelect < m.pLarge, else mutateLocal(x, u, m.r).
+    // TODO(09) The mixture of metropolis1d.h: the chosen mutation's proposal.
     (void)x; (void)uSelect; (void)u; (void)m;
     return PS_TODO("lesson 09: mutate", (Proposal{x, 1.0, 1.0}));
 }

@@ -9,19 +9,13 @@
 namespace ps {
 
 int AdjointCache::cell(const Vec3& p) const {
-    // TODO(10) The cell of p in the res_ x res_ x res_ grid over bounds_ (Eq. 10.8): per axis
-    //          i = floor(res_ (p - lo) / (hi - lo)) clamped to [0, res_ - 1] (0 along an axis
-    //          where hi = lo), flattened as ix + res_ (iy + res_ iz).
-    //          Pitfall: clamp after the floor (a point a rounding error outside the box, or on
-    //          its far face, must still land in a cell).
+    // TODO(10) The cell of p (Eq. 10.8), as AdjointCache::cell in adrrs.h states it. Pitfall: clamp after the floor.
     (void)p;
     return PS_TODO("lesson 10: AdjointCache::cell", 0);
 }
 
 int AdjointCache::side(const Vec3& n, const Vec3& wo) {
-    // TODO(10) The direction bin (Eq. 10.8): the normal turned to wo's side (-n if
-    //          dot(n, wo) < 0), its dominant axis a (largest |component|, the first of equal
-    //          ones) and sign: 2a if that component is >= 0, 2a + 1 if it is < 0.
+    // TODO(10) The direction bin of a vertex (Eq. 10.8), as AdjointCache::side in adrrs.h states it.
     (void)n; (void)wo;
     return PS_TODO("lesson 10: AdjointCache::side", 0);
 }

@@ -6,12 +6,7 @@
 namespace ps {
 
 void continuationSamples(const std::vector<PrePassVertex>& path, std::vector<CacheSample>& out) {
-    // TODO(10) Eq. 10.8: for every vertex k of the path with an entry (entry >= 0), append
-    //          {entry, value} to out, in the order of the vertices, where value is the sum of
-    //          `added` over the vertices from k on (j >= k), divided by beta_k channel by
-    //          channel (a channel where beta_k is 0 gives 0).
-    //          Pitfall: x_k's own `added` (its light sample) belongs to it: without it, a pixel
-    //          whose first vertex is lit directly gets the estimate of its indirect light only.
+    // TODO(10) The pre-pass samples of one path (Eq. 10.8; adrrs.h). Pitfall: x_k's own light sample belongs to x_k.
     (void)path; (void)out;
     (void)PS_TODO("lesson 10: continuationSamples", 0);
 }

@@ -7,11 +7,8 @@
 namespace ps {
 
 Continuations continuations(const Color& beta, float q, Rng& rng) {
-    // TODO(10) Eq. 10.3, 10.4: n = floor(q), plus one if rng.uniform() < q - floor(q) (draw that
-    //          number only when q - floor(q) > 0), so that E[n] = q; every continuation carries
-    //          beta / q (also when q < 1: that is Russian roulette's survivor weight).
-    //          Pitfall: floor(q) alone loses the fraction (E[n] < q: the image is too dark),
-    //          and weighting by beta / n instead of beta / q is biased.
+    // TODO(10) n continuations with E[n] = q and their throughput (Eq. 10.3, 10.4), drawing as adrrs.h states (the
+    //          tests replay it). Pitfalls (README 6): divide by q, not n; round at random both ways.
     (void)beta; (void)q; (void)rng;
     return PS_TODO("lesson 10: continuations", Continuations());
 }

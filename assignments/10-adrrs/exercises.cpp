@@ -7,8 +7,7 @@
 namespace ps {
 
 double splitVariance(double q) {
-    // TODO(10) Eq. 10.E1: the variance of n beta L / q for beta L = 1 when n is drawn as in
-    //          Eq. 10.4, in terms of q and its fraction f = q - floor(q).
+    // TODO(10) Var[n beta L / q] of Eq. 10.E1 (exercises.h) as a closed form in q.
     (void)q;
     return PS_TODO("lesson 10: splitVariance (exercise)", 0.0);
 }

@@ -10,14 +10,9 @@ namespace ps {
 
 void splittingWalk(const Scene& scene, const Ray& cameraRay, Rng& rng, int maxDepth,
                    const ExpectedContinuations& expected, const WalkVisitor& visit) {
-    // TODO(10) Algorithm 10.1 on lesson 3's cameraWalk (its roulette, survivalProbability, as in
-    //          pt): walk options whose continuation rule (Eq. 3.10) takes q = expected(v); where that
-    //          is kNoDecision, one continuation with v.beta and the walk's roulette after its bounce;
-    //          else q cut to min(q, 1) once kMaxPathsPerCameraRay paths have been started (1 + the
-    //          extra continuations n - 1 of every split so far), and continuations(v.beta, q, rng)
-    //          (Eq. 10.3, 10.4) without the walk's roulette (Continuations::roulette = false): the
-    //          rule has decided survival there.
-    //          Pitfall: a vertex whose rule gives n = 0 starts no path (and ends none either).
+    // TODO(10) Algorithm 10.1 on lesson 3's cameraWalk with a continuation rule (Eq. 3.10), as splittingWalk in
+    //          adrrs.h states it (the cap, kNoDecision). Pitfall (README 6): one roulette per vertex where the rule
+    //          decides.
     (void)scene; (void)cameraRay; (void)rng; (void)maxDepth; (void)expected; (void)visit;
     (void)PS_TODO("lesson 10: splittingWalk", 0);
 }

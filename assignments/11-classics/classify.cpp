@@ -6,27 +6,21 @@
 namespace ps {
 
 VertexType scatteringType(const Material& m) {
-    // TODO(11) Eq. 11.1: S for a delta material (m.isDelta(): mirror, glass); D for a Lambertian
-    //          one: BSDFKind::Diffuse, or BSDFKind::Phong with exponent 0 (its BRDF is albedo / pi);
-    //          G for the other Phong materials.
+    // TODO(11) The Heckbert type of a scattering material (Eq. 11.1; heckbert.h). Pitfall (README 6): Phong of
+    //          exponent 0 is Lambertian.
     (void)m;
     return PS_TODO("lesson 11: scatteringType", VertexType::E);
 }
 
 VertexType vertexType(const Scene& scene, const Path& x, size_t i) {
-    // TODO(11) Eq. 11.1: L for i = 0 and E for i = x.size() - 1 (by their place in the path, not
-    //          by a material: a point light, the background and the pinhole have none, and an
-    //          area light's surface has one); between them scatteringType of
-    //          scene.materials[x[i].sp.material].
-    //          Pitfall: a vertex on an emitting surface in the middle of a path (x[i].onLight)
-    //          scatters light there; only x[0] is the path's light.
+    // TODO(11) The type of vertex i of x (Eq. 11.1; heckbert.h). Pitfalls (README 6): x_0 is L by its place, not its
+    //          material; a lamp in the middle of a path scatters.
     (void)scene; (void)x; (void)i;
     return PS_TODO("lesson 11: vertexType", VertexType::E);
 }
 
 std::string pathString(const Scene& scene, const Path& x) {
-    // TODO(11) Eq. 11.1: one letter per vertex (typeLetter(vertexType(scene, x, i))), from x[0]
-    //          (the light) to x[k] (the eye): Heckbert's expressions read paths that way.
+    // TODO(11) x's string in Heckbert's notation (Eq. 11.1; heckbert.h). Pitfall: it reads from the light to the eye.
     (void)scene; (void)x;
     return PS_TODO("lesson 11: pathString", std::string());
 }

@@ -7,8 +7,7 @@
 namespace ps {
 
 double diskFormFactor(double R, double h) {
-    // TODO(11) Eq. 11.E1: the form factor from a point to a parallel coaxial disk of radius R at
-    //          the distance h, integrated over the disk in rings (both cosines are h / r).
+    // TODO(11) The form factor of Eq. 11.E1 (exercises.h), integrated on paper.
     (void)R;
     (void)h;
     return PS_TODO("lesson 11: diskFormFactor (exercise)", 0.0);

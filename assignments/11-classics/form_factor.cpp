@@ -8,27 +8,16 @@
 namespace ps {
 
 float pointFormFactor(const Vec3& x, const Vec3& nx, const Vec3& y, const Vec3& ny, float areaY) {
-    // TODO(11) Eq. 11.23: g = areaY cos+(theta_x) cos+(theta_y) / (pi r^2) with d = y - x,
-    //          r^2 = d . d, cos(theta_x) = nx . d / r, cos(theta_y) = -ny . d / r, each cosine
-    //          clamped below at 0 (an element faces one way); 0 when r^2 = 0.
-    //          Pitfall: the 1/pi makes the form factors of a closed room sum to 1 (Eq. 11.22);
-    //          and both cosines are needed (the area of each element as the other sees it).
+    // TODO(11) The unoccluded point-to-element form factor g of Eq. 11.23 (radiosity.h). Pitfalls (README 6): the 1/pi
+    //          (Eq. 11.22); both cosines, each clamped at 0.
     (void)x; (void)nx; (void)y; (void)ny; (void)areaY;
     return PS_TODO("lesson 11: pointFormFactor", 0.0f);
 }
 
 float formFactor(const Scene& scene, const ElementMesh& mesh, int i, int j, int samples, Rng& rng) {
-    // TODO(11) Eq. 11.26: for each of `samples` samples:
-    //          - x = mesh.samplePoint(i, rng.uniform2()) (its normal x.n faces the element's front);
-    //          - area technique: y = mesh.samplePoint(j, rng.uniform2()), g = pointFormFactor(x.p,
-    //            x.n, y.p, y.n, A_j); if g > 0 and !scene.occluded(scene.spawnRayTo(x, y)), add g / (1 + g);
-    //          - cosine technique: w = Frame(x.n).toWorld(sampleCosineHemisphere(rng.uniform2())),
-    //            ray = scene.spawnRay(x, w); if scene.intersect(ray, hit) and mesh.elementAt(hit,
-    //            w) == j, add g / (1 + g) with g = pointFormFactor(x.p, x.n, hit.p, hit.n, A_j).
-    //          Return the sum / samples (0 for samples <= 0).
-    //          Pitfall: g / (1 + g) is the balance heuristic's weight times each technique's
-    //          estimate (Eq. 11.26); adding g (area) and 1 (cosine) counts F twice, and area
-    //          sampling alone has infinite variance for elements that share an edge (Eq. 11.25).
+    // TODO(11) F_ij by Eq. 11.26, the two techniques and the numbers drawn per sample in the order formFactor in
+    //          radiosity.h states (the tests replay them). Pitfalls (README 6): the balance heuristic, not the sum of
+    //          both techniques; the cosine technique counts only the first hit, on element j's front.
     (void)scene; (void)mesh; (void)i; (void)j; (void)samples; (void)rng;
     return PS_TODO("lesson 11: formFactor", 0.0f);
 }

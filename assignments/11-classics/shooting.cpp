@@ -7,27 +7,20 @@
 namespace ps {
 
 RadiositySolution startRadiosity(const ElementMesh& mesh) {
-    // TODO(11) Eq. 11.27: B_i = E_i and unshot_i = E_i for every element i (mesh[i].E); shots = 0.
-    //          Pitfall: B without E leaves the lamps black, unshot without E shoots nothing.
+    // TODO(11) The solution before the first shot (Eq. 11.27; radiosity.h). Pitfall: both B and unshot start at E.
     (void)mesh;
     return PS_TODO("lesson 11: startRadiosity", RadiositySolution());
 }
 
 int chooseShooter(const ElementMesh& mesh, const RadiositySolution& s) {
-    // TODO(11) Eq. 11.28: the index i with the largest unshot power (unshot_i.r + unshot_i.g +
-    //          unshot_i.b) * mesh[i].area, the first of equal ones; -1 if every one is 0.
-    //          Pitfall: the largest unshot radiosity (without the area) shoots small bright
-    //          elements first, and the iteration converges more slowly.
+    // TODO(11) The shooter of Eq. 11.28 (radiosity.h). Pitfall (README 6): the most unshot power, not radiosity.
     (void)mesh; (void)s;
     return PS_TODO("lesson 11: chooseShooter", -1);
 }
 
 void shoot(const ElementMesh& mesh, RadiositySolution& s, int i, const std::vector<float>& F) {
-    // TODO(11) Eq. 11.28: dB = s.unshot[i]; s.unshot[i] = 0 (before the loop); then for every
-    //          element j: add = rho_j * dB * F[j] * A_i / A_j, added to s.B[j] and s.unshot[j];
-    //          finally ++s.shots.
-    //          Pitfall: A_i / A_j, not A_j / A_i (reciprocity, Eq. 11.22: F_ji = F_ij A_i / A_j);
-    //          rho once; and unshot_i must be reset, or element i shoots the same power again.
+    // TODO(11) One shooting step from element i (Eq. 11.28; radiosity.h). Pitfalls (README 6): reciprocity's A_i /
+    //          A_j; unshot_i is taken before the loop, or i shoots its power again.
     (void)mesh; (void)s; (void)i; (void)F;
     (void)PS_TODO("lesson 11: shoot", 0);
 }

@@ -9,56 +9,41 @@
 namespace ps {
 
 Vec3 ThinLens::lensPoint(const Vec2& u) const {
-    // TODO(11) Eq. 11.10: a uniform point on the lens, the disk of radius lensRadius_ about eye_
-    //          spanned by right_ and up_: d = sampleConcentricDisk(u) (lesson 1), then
-    //          z = eye_ + lensRadius_ (d.x right_ + d.y up_).
-    //          Pitfall: the unit disk's point scaled by the lens radius.
+    // TODO(11) A uniform point on the lens (Eq. 11.10; thinlens.h). Pitfall (README 6): scale lesson 1's unit disk.
     (void)u;
     return PS_TODO("lesson 11: ThinLens::lensPoint", eye_);
 }
 
 float ThinLens::pdfLens() const {
-    // TODO(11) Eq. 11.11: the density of lensPoint's points per unit area on the lens.
+    // TODO(11) The density of lensPoint's points per unit area on the lens (Eq. 11.11).
     return PS_TODO("lesson 11: ThinLens::pdfLens", 0.0f);
 }
 
 Ray ThinLens::lensRay(const Vec2& raster, const Vec3& z) const {
-    // TODO(11) Eq. 11.12: the pinhole's ray through raster (pinhole_.generateRay, lesson 0) meets the
-    //          plane of focus, at DEPTH focus_ along forward_, in the point of focus
-    //          p = eye_ + d focus_ / dot(d, forward_); the lens ray leaves z towards p
-    //          (direction normalised).
-    //          Pitfall: the plane of focus is a plane, not a sphere: eye_ + focus_ d (focus_
-    //          along the ray) is sharp only in the image's centre.
+    // TODO(11) The lens ray from z through raster (Eq. 11.12; thinlens.h), unit direction. Pitfall (README 6): the
+    //          plane of focus is a plane at depth focus_ along forward_, not a sphere.
     (void)raster; (void)z;
     return PS_TODO("lesson 11: ThinLens::lensRay", Ray(eye_, forward_));
 }
 
 bool ThinLens::lensRasterOfDirection(const Vec3& z, const Vec3& dir, Vec2& raster) const {
-    // TODO(11) Eq. 11.13: the ray (z, dir) (dir of any length) meets the plane of focus in
-    //          p = z + dir focus_ / dot(dir, forward_) (z lies in the lens plane, at depth 0);
-    //          its raster position is the pinhole's of p: pinhole_.rasterOfDirection(p - eye_, raster).
-    //          False if dir does not point in front of the lens (dot(dir, forward_) <= 0).
-    //          Pitfall: rasterOfDirection(p - eye_), not rasterPosition(p): eye_ + ... rounds far
-    //          from the origin.
+    // TODO(11) The raster position of the ray (z, dir) (Eq. 11.13; thinlens.h). Pitfalls: the pinhole's test of the
+    //          same direction is wrong near the borders (README 6); a point far from the origin loses precision unless
+    //          taken relative to eye_.
     (void)z; (void)dir; (void)raster;
     return PS_TODO("lesson 11: ThinLens::lensRasterOfDirection", false);
 }
 
 float ThinLens::lensWe(const Vec3& z, const Vec3& dir) const {
-    // TODO(11) Eq. 11.14: W_e(z, dir) = 1 / (pi r^2 A cos^4 theta) when the ray (z, dir) lands in
-    //          the image (lensRasterOfDirection), else 0; A = pinhole_.imagePlaneArea(), cos(theta) =
-    //          dot(dir, forward_) (dir unit). Then W_e cos(theta) integrates to 1 over the lens
-    //          and the image's directions from each of its points.
-    //          Pitfalls: the 1 / (pi r^2) of the lens (pdfLens()); cos^4: one cosine for the
-    //          lens's projected area, three for the solid angle of an image element.
+    // TODO(11) W_e(z, dir), normalised over the lens and the image (Eq. 11.14); 0 outside the image by the lens's own
+    //          raster test. Pitfalls (README 6): the lens's 1 / (pi r^2); the powers of cos theta.
     (void)z; (void)dir;
     return PS_TODO("lesson 11: ThinLens::lensWe", 0.0f);
 }
 
 float ThinLens::lensPdfDirection(const Vec3& z, const Vec3& dir) const {
-    // TODO(11) Eq. 11.15: the solid-angle density of lensRay's direction at z when raster is
-    //          uniform on the image: 1 / (A cos^3 theta) where the ray (z, dir) lands in the
-    //          image, else 0 (as the pinhole's pdfDirection, but with the lens's raster position).
+    // TODO(11) The solid-angle density of lensRay's direction at z for a uniform raster position (Eq. 11.15); 0
+    //          outside the image by the lens's raster test.
     (void)z; (void)dir;
     return PS_TODO("lesson 11: ThinLens::lensPdfDirection", 0.0f);
 }

@@ -7,16 +7,8 @@
 namespace ps {
 
 Color LiWhitted(const Scene& scene, const Ray& ray, int bounces, const WhittedOptions& opt) {
-    // TODO(11) Eq. 11.9: intersect a copy of ray (scene.intersect(r, sp)); a miss returns
-    //          scene.backgroundRadiance(). At a hit, wo = -ray.d: start from what sp emits
-    //          (emittedRadiance(scene.lights[sp.light], sp.n, wo) if sp.light >= 0); stop there
-    //          if bounces == opt.maxDepth. Else, by the material m:
-    //          - mirror: + m.albedo * LiWhitted(scene.spawnRay(sp, reflect(wo, ns)), bounces + 1)
-    //            with ns the normal on wo's side;
-    //          - glass: g = glassSplit(m, sp.n, wo): + g.reflectance * L(g.reflected) and, if
-    //            g.transmission > 0, + g.transmission * L(g.refracted), both with bounces + 1;
-    //          - otherwise: + whittedDirect(scene, sp, wo) + opt.ambient * m.albedo.
-    //          Pitfall: the ambient term is light that no path carries: only what opt asks.
+    // TODO(11) Whitted's recursion, Eq. 11.9, as LiWhitted in whitted.h states it. Pitfalls (README 6): a surface
+    //          reached after maxDepth bounces only emits; the ambient term only where shaded and only what opt asks.
     (void)scene; (void)ray; (void)bounces; (void)opt;
     return PS_TODO("lesson 11: LiWhitted", Color(0.0f));
 }

@@ -6,11 +6,8 @@
 namespace ps {
 
 Color whittedDirect(const Scene& scene, const SurfacePoint& sp, const Vec3& wo) {
-    // TODO(11) Eq. 11.7: for every light of kind LightKind::Point (position, intensity Le):
-    //          d = its distance from sp.p, w = the unit direction towards it,
-    //          f = evalBSDF(scene.materials[sp.material], sp.n, wo, w); if f is not black and
-    //          scene.occluded(scene.spawnRayTo(sp, position)) is false, add
-    //          f * Le * |dot(sp.n, w)| / d^2. Skip a light at distance 0.
+    // TODO(11) The light of the point lights at sp towards wo (Eq. 11.7; whitted.h). Pitfalls (README 6): the cosine
+    //          at the surface and 1/d^2; the shadow ray ends at the light. Skip a light at distance 0.
     (void)scene; (void)sp; (void)wo;
     return PS_TODO("lesson 11: whittedDirect", Color(0.0f));
 }
