@@ -8,8 +8,8 @@ namespace ps {
 
 Bootstrap bootstrapChains(const std::vector<float>& I, int chains, Rng& rng) {
     //! TODO(09) b and the chains' stratified starts of Eq. 9.10, as bootstrapChains in pssmlt.h states them (one number
-    //!          per chain, in chain order). Pitfall: a point past the CDF's end by rounding still starts at a seed with
-    //!          I > 0.
+    //!          per chain, in chain order). Pitfall: a point past the CDF's end by rounding starts at the last seed
+    //!          with I > 0.
     //! STUB (void)I; (void)chains; (void)rng;
     //! STUB return PS_TODO("lesson 09: bootstrapChains", Bootstrap{});
     //! BEGIN
