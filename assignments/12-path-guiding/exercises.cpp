@@ -7,8 +7,7 @@
 namespace ps {
 
 double guidedVariance(double alpha) {
-    // TODO(12) Eq. 12.E1: Var[X] / E[X]^2 for the mixture with selection probability alpha, as a
-    //          closed form in alpha (both ends, alpha = 0 and alpha = 1, included).
+    // TODO(12) Var[X] / E[X]^2 of Eq. 12.E1 (exercises.h) as a closed form in alpha, both ends included.
     (void)alpha;
     return PS_TODO("lesson 12: guidedVariance (exercise)", 0.0);
 }

@@ -7,27 +7,21 @@
 namespace ps {
 
 Color fieldAdjoint(const GuideCell& cell, const Material& m, const Vec3& n, const Vec3& wo) {
-    // TODO(12) Eq. 12.14: the albedo over pi times the irradiance of the cell's side that wo sees
-    //          (cell.side[AdjointCache::side(n, wo)]).
-    //          Pitfall: the side is that of the normal turned towards wo: the two faces of a wall
-    //          see different rooms.
+    // TODO(12) The adjoint of Eq. 12.14 at a vertex, as guiding.h states it. Pitfall (README 6): the side is
+    //          the one wo sees (AdjointCache::side); the two faces of a wall see different rooms.
     (void)cell; (void)m; (void)n; (void)wo;
     return PS_TODO("lesson 12: fieldAdjoint", Color(0.0f));
 }
 
 float fieldPixelEstimate(const GuideField& field, const Scene& scene, const WalkVertex& x0) {
-    // TODO(12) Eq. 10.9 on the field: -1 at a miss, a delta material, or where the side of x0's
-    //          cell (field.cellOf(x0.sp.p)) that x0.wo sees is not reliable; else the mean of the
-    //          channels of fieldAdjoint there.
+    // TODO(12) The pixel estimate of Eq. 10.9 from the field, or -1 where it cannot say (guiding.h).
     (void)field; (void)scene; (void)x0;
     return PS_TODO("lesson 12: fieldPixelEstimate", -1.0f);
 }
 
 Decision fieldDecision(const GuideField& field, const Scene& scene, const WalkVertex& v, float pixelEstimate) {
-    // TODO(12) Eq. 12.14, 12.15: no decision where pixelEstimate < 0, at a miss, at a delta
-    //          material or where the side of v's cell that v.wo sees is not reliable; else decided,
-    //          with q from windowContinuations(v.beta, fieldAdjoint at v, pixelEstimate).
-    //          Pitfall: look the field up where the path is (v.sp.p), not where it came from.
+    // TODO(12) The decision at v (Eq. 12.14, 12.15; guiding.h), none where the field cannot say.
+    //          Pitfall (README 6): look the field up where the path is, on the side v.wo sees.
     (void)field; (void)scene; (void)v; (void)pixelEstimate;
     return PS_TODO("lesson 12: fieldDecision", Decision());
 }

@@ -9,23 +9,17 @@ namespace ps {
 
 float guidedPdf(const Material& m, const Vec3& n, const Vec3& wo, const DirectionalTree& guide, float alpha,
                 const Vec3& wi) {
-    // TODO(12) Eq. 12.3: the mixture's density of wi, per unit solid angle: alpha times the
-    //          guide's, plus 1 - alpha times the BSDF's (pdfBSDF).
-    //          Pitfall: both terms carry their selection probability; the guide's density is
-    //          already per steradian.
+    // TODO(12) The mixture's density of wi per unit solid angle (Eq. 12.3; guiding.h). Pitfall (README 6):
+    //          both terms carry their selection probability; the guide's density is already per steradian.
     (void)m; (void)n; (void)wo; (void)guide; (void)alpha; (void)wi;
     return PS_TODO("lesson 12: guidedPdf", 0.0f);
 }
 
 bool sampleGuided(const Material& m, const Vec3& n, const Vec3& wo, const DirectionalTree& guide, float alpha, Rng& rng,
                   BSDFSample& s) {
-    // TODO(12) Eq. 12.3, 12.4: a delta material is sampled by sampleBSDF alone (its numbers as
-    //          lesson 3 draws them: rng.uniform2(), then rng.uniform()). Otherwise one
-    //          rng.uniform() picks the guide (below alpha: guide.sample(rng.uniform2())) or the
-    //          BSDF (sampleBSDF as above; false if it fails); whichever picked wi, s.pdf is the
-    //          mixture's density (guidedPdf) and s.weight = f |cos theta_i| / s.pdf (f =
-    //          evalBSDF(m, n, wo, wi)); s.delta is false. False if f is black at wi.
-    //          Pitfall: a BSDF-sampled direction keeps the mixture's pdf too, not sampleBSDF's.
+    // TODO(12) One direction from the mixture and its weight (Eq. 12.3, 12.4), the random numbers drawn in the
+    //          order guiding.h states (the tests replay it). Pitfalls (README 6): a BSDF-sampled direction is
+    //          divided by the mixture's density too; a delta lobe is never guided.
     (void)m; (void)n; (void)wo; (void)guide; (void)alpha; (void)rng; (void)s;
     return PS_TODO("lesson 12: sampleGuided", false);
 }

@@ -7,19 +7,15 @@
 namespace ps {
 
 void appendImportons(const std::vector<ImportanceVertex>& path, int pixels, int paths, std::vector<Photon>& out) {
-    // TODO(12) Eq. 12.16: for every vertex that stores one, a Photon at p whose power is the
-    //          throughput times pixels / paths, and whose direction (setWLight) is wo.
-    //          Pitfall: a camera path carries its own pixel's importance; the pass traced
-    //          paths / pixels of them per pixel.
+    // TODO(12) The importons of one camera path (Eq. 12.16; guiding.h). Pitfall: each camera path carries
+    //          its own pixel's importance, and the pass traced paths / pixels of them per pixel.
     (void)path; (void)pixels; (void)paths; (void)out;
     (void)PS_TODO("lesson 12: appendImportons", 0);
 }
 
 Decision particleDecision(const AdjointCache& importance, const Scene& scene, const WalkVertex& y, float imageTotal) {
-    // TODO(12) Eq. 12.17: no decision at a miss, a delta material or where y's entry of the
-    //          importance cache (the side y.wo sees) is not reliable; else decided, with q from
-    //          windowContinuations(y.beta, the albedo times the entry's estimate, imageTotal).
-    //          Pitfall: the ideal particle brings the whole image's total, not one pixel's value.
+    // TODO(12) The decision at particle vertex y (Eq. 12.17; guiding.h), none where the importance cache
+    //          cannot say. Pitfall (README 6): the ideal particle brings the whole image's total, not one pixel's.
     (void)importance; (void)scene; (void)y; (void)imageTotal;
     return PS_TODO("lesson 12: particleDecision", Decision());
 }

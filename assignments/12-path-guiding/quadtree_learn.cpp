@@ -8,24 +8,16 @@
 namespace ps {
 
 void DirectionalTree::record(const Vec3& w, float value) {
-    // TODO(12) Eq. 12.8: add value to the energy of the quadrant that contains w's point of the
-    //          square (invertUniformSphere) at every level, from the root down to the leaf, the
-    //          point rescaled to the quadrant at every step.
-    //          Pitfall: every level, not only the leaf: a quadrant's energy is the sum of the
-    //          four below it, and pdf and sample read every level.
+    // TODO(12) One record into the tree (Eq. 12.8; guiding.h). Pitfall (README 6): every level, not only the
+    //          leaf; w's point of the square is rescaled to the quadrant at each step.
     (void)w; (void)value;
     (void)PS_TODO("lesson 12: DirectionalTree::record", 0);
 }
 
 
 DirectionalTree DirectionalTree::refined(float rho, int maxDepth) const {
-    // TODO(12) Eq. 12.9: a new tree with the same total: a quadrant whose energy is above rho
-    //          times the total (and which is not at maxDepth: the root's quadrants are at depth
-    //          1) becomes a node — the old node's quadrants if it had one, else four quadrants of
-    //          a quarter of its energy each —, looked at in turn; a quadrant at or below the
-    //          threshold is a leaf with its energy. Nodes are appended to `nodes` as they are
-    //          made (the root first). A tree with total 0 is returned as it is.
-    //          Pitfall: the threshold is a share of the whole tree's total, not of the node's.
+    // TODO(12) The refined tree of Eq. 12.9 (guiding.h), its nodes appended as they are made, the root first.
+    //          Pitfall (README 6): the threshold is a share of the whole tree's total, not of the node's.
     (void)rho; (void)maxDepth;
     return PS_TODO("lesson 12: DirectionalTree::refined", *this);
 }

@@ -7,14 +7,9 @@
 namespace ps {
 
 void radianceRecords(const std::vector<GuideVertex>& path, std::vector<RadianceRecord>& out) {
-    // TODO(12) Eq. 12.12, 12.13: for every vertex j with a cell (cell >= 0), in order: the sum of
-    //          `added` over x_j's branch (x_j and every vertex whose `from` chain reaches j), with
-    //          x_j's `emitted` replaced by its `emittedFull`, divided channel by channel by x_j's
-    //          throughput (0 in a channel where that is 0); the record's value is the mean of the
-    //          three channels divided by x_j's pdf; the record goes to x_j's cell and side.
-    //          Pitfalls: the vertex the sample left (x_from) added its light sample along another
-    //          direction: it is not part of the radiance along wi; a vertex's branch ends where
-    //          the next vertex comes from an earlier one (a split).
+    // TODO(12) The records of one camera sample, in vertex order (Eq. 12.12, 12.13; guiding.h). Pitfalls
+    //          (README 6): divide by the throughput and by the pdf; x_j's emission counts in full, x_from's light
+    //          sample does not (another direction); a branch ends where a vertex comes from an earlier one (a split).
     (void)path; (void)out;
     (void)PS_TODO("lesson 12: radianceRecords", 0);
 }

@@ -7,24 +7,16 @@
 namespace ps {
 
 uint32_t SpatialTree::cellOf(const Vec3& p) const {
-    // TODO(12) Eq. 12.10: from the root (nodes[0], whose box is bounds_) down to a leaf: at a
-    //          node cutting `axis`, the middle of its box along that axis decides — the upper
-    //          half (child[1]) where p's coordinate is at or above it, else the lower (child[0])
-    //          —, and the chosen half is the next node's box. Return the leaf's cell.
-    //          Pitfall: the box halves along one axis per level; keep both corners up to date.
+    // TODO(12) The cell of p (Eq. 12.10; guiding.h). Pitfall: the box halves along one axis per level; keep
+    //          both corners up to date.
     (void)p;
     return PS_TODO("lesson 12: SpatialTree::cellOf", 0u);
 }
 
 void SpatialTree::subdivide(std::vector<GuideCell>& cells, uint32_t threshold, size_t maxCells) {
-    // TODO(12) Eq. 12.11: for every node, in index order (the nodes made here included, so that
-    //          a half with too many records is cut again): a leaf whose cell has more than
-    //          `threshold` samples becomes a node with two new leaf children appended to `nodes`
-    //          (lower half first), each cutting the next axis ((axis + 1) mod 3); the lower keeps
-    //          the cell, the upper gets a copy of it appended to `cells`; both cells then have
-    //          half the samples (rounded down). Stop cutting once cells.size() == maxCells.
-    //          Pitfall: take what you need from nodes[i] before appending (push_back may move
-    //          the vector).
+    // TODO(12) Eq. 12.11 over the nodes in index order, new ones included (guiding.h); a cut appends the lower
+    //          child first, each child cutting the next axis. Pitfall: take what you need from nodes[i] before
+    //          appending (push_back may move the vector).
     (void)cells; (void)threshold; (void)maxCells;
     (void)PS_TODO("lesson 12: SpatialTree::subdivide", 0);
 }

@@ -7,12 +7,9 @@
 namespace ps {
 
 float windowContinuations(const Color& beta, const Color& adjoint, float measurement) {
-    // TODO(12) Eq. 12.15 with lesson 10's Eq. 10.2, 10.5-10.7: the weight nu of beta with the
-    //          adjoint's colour as weights (beta's mean where the adjoint is black), the adjoint as
-    //          one number (its channels' mean), then lesson 10's expectedContinuations and
-    //          weightWindow with the measurement as I~.
-    //          Pitfall: nu times the adjoint's mean is the expected contribution; comparing beta's
-    //          largest channel, or the adjoint's sum, shifts every decision.
+    // TODO(12) q of Eq. 12.15 with lesson 10's window (Eq. 10.2, 10.5-10.7), as guiding.h states it. Pitfall:
+    //          nu times the adjoint's mean is the expected contribution; beta's largest channel or the adjoint's sum
+    //          shifts every decision.
     (void)beta; (void)adjoint; (void)measurement;
     return PS_TODO("lesson 12: windowContinuations", 1.0f);
 }

@@ -8,15 +8,14 @@
 namespace ps {
 
 double vcmRadius(double r1, int iteration, double alpha) {
-    // TODO(13) Eq. 13.12: r_i for iteration i >= 1. Pitfall: the exponent belongs to r, not to
-    //          r^2 (lesson 8's Eq. 8.13 shrinks r^2); alpha = 1 keeps the radius.
+    // TODO(13) r_i of Eq. 13.12 (vcm.h). Pitfall: the schedule shrinks r, not r^2 as lesson 8's Eq. 8.13;
+    //          alpha = 1 keeps the radius.
     (void)iteration; (void)alpha;
     return PS_TODO("lesson 13: vcmRadius", r1);
 }
 
 double mergeFactor(double radius, int lightPaths) {
-    // TODO(13) Eq. 13.5: eta, the ratio n_VM p_VM / (n_VC p_VC) at a merge's own vertex without the
-    //          light vertex's density. Pitfall: the sample count of merging is not 1.
+    // TODO(13) eta of Eq. 13.5 (vcm.h). Pitfall (README 6): merging's sample count is not 1.
     (void)radius; (void)lightPaths;
     return PS_TODO("lesson 13: mergeFactor", 0.0);
 }
