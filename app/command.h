@@ -132,7 +132,8 @@ void checkNotInputs(const std::vector<OutputFile>& files, const std::vector<Inpu
 std::vector<InputFile> sceneInputs(const Scene& scene);
 // Whether paths a and b name the same file: an existing file by identity (device and inode:
 // symbolic and hard links, "./x" and "x"); a file that does not exist yet by its folder's identity
-// and its name (a dangling symbolic link by where it points).
+// and its name (a dangling symbolic link by where it points). Never a device or a pipe: they take
+// any number of outputs.
 bool sameFile(const std::string& a, const std::string& b);
 
 // A reference image (--reference) for a scene: read with the scene's size (refused from its
