@@ -111,8 +111,7 @@ bool sameFile(const std::string& a, const std::string& b) {
     const bool ea = fs::exists(pa, ec), eb = fs::exists(pb, ec);
     // A device or a pipe (/dev/null, /dev/full) takes any number of outputs: only two regular files
     // can be one file (and the standard libraries disagree on equivalent() for devices).
-    if (ea && eb)
-        return fs::is_regular_file(pa, ec) && fs::is_regular_file(pb, ec) && fs::equivalent(pa, pb, ec);
+    if (ea && eb) return fs::is_regular_file(pa, ec) && fs::is_regular_file(pb, ec) && fs::equivalent(pa, pb, ec);
     if (ea != eb) return false;
     if (pa.filename() != pb.filename()) return false;
     const fs::path fa = pa.has_parent_path() ? pa.parent_path() : fs::path(".");
