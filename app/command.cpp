@@ -21,7 +21,11 @@ namespace ps {
 std::vector<Command> commandList() {
     std::vector<Command> list;
     for (const auto& e : Registry<Command>::sorted()) list.push_back(e.value);
-    std::stable_sort(list.begin(), list.end(), [](const Command& a, const Command& b) { return a.order < b.order; });
+    // By order, then by name (std::sort with a total order: libstdc++'s stable_sort trips clang 19's
+    // deprecation warning on get_temporary_buffer).
+    std::sort(list.begin(), list.end(), [](const Command& a, const Command& b) {
+        return a.order != b.order ? a.order < b.order : a.name < b.name;
+    });
     return list;
 }
 

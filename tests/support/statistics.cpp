@@ -170,7 +170,9 @@ std::vector<Term> poolCells(const std::vector<double>& observed, const std::vect
                             double minExpected, const CellName& name, size_t noCell, int& pooledCells) {
     std::vector<size_t> order(expected.size());
     std::iota(order.begin(), order.end(), size_t(0));
-    std::stable_sort(order.begin(), order.end(), [&](size_t i, size_t j) { return expected[i] < expected[j]; });
+    // By expected count, ties in index order (a total order: std::sort gives stable_sort's result).
+    std::sort(order.begin(), order.end(),
+              [&](size_t i, size_t j) { return expected[i] != expected[j] ? expected[i] < expected[j] : i < j; });
     std::vector<Term> terms;
     double pooledObserved = 0.0, pooledExpected = 0.0;
     pooledCells = 0;

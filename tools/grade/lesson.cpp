@@ -93,8 +93,11 @@ std::vector<std::pair<std::string, std::string>> neutralNames(const Grading& g, 
                 out.push_back({p.string(), name});
             }
     }
-    std::stable_sort(out.begin(), out.end(),
-                     [](const auto& a, const auto& b) { return a.first.size() > b.first.size(); });
+    // Longest first; a total order, so that std::sort's result is one (stable_sort trips clang 19's
+    // deprecation warning inside libstdc++ 12).
+    std::sort(out.begin(), out.end(), [](const auto& a, const auto& b) {
+        return a.first.size() != b.first.size() ? a.first.size() > b.first.size() : a < b;
+    });
     return out;
 }
 
