@@ -128,38 +128,39 @@ std::string describe(const ImportancePass& pass, const ParticleCounts& counts) {
 
 int cameraPassPaths(const Image& out) { return std::max(1 << 14, 4 * out.width * out.height); }
 
-struct ADRRSLightTracer : Integrator {
+// What lt-adrrs and ppm-adrrs share: the camera pass's importons, made at a render's first
+// iteration and used by all its passes, and the counts of the particles' decisions.
+struct ParticleIntegrator : Integrator {
     ImportancePass pass;
     ParticleCounts counts;
+    void startRender(const Scene& scene, uint32_t iteration, uint64_t seed, const Image& out, SampleStats& stats) {
+        if (iteration != 0) return;
+        pass = importancePass(scene, cameraPassPaths(out), mix64(seed ^ kImportanceTag), stats);
+        counts.reset();
+    }
+    std::vector<std::string> report() const override { return {describe(pass, counts)}; }
+};
+
+struct ADRRSLightTracer : ParticleIntegrator {
     void renderIteration(const Scene& scene, uint32_t iteration, uint64_t seed, Image& out,
                          SampleStats& stats) override {
-        if (iteration == 0) {
-            pass = importancePass(scene, cameraPassPaths(out), mix64(seed ^ kImportanceTag), stats);
-            counts.reset();
-        }
+        startRender(scene, iteration, seed, out, stats);
         renderLightPathTasks(seed, iteration, out, stats, [&](int, Rng& rng, Task& task) {
             WalkOptions opt(scene.settings.maxDepth);
             opt.continuation = particleRule(scene, pass, counts);
             traceLightPath(scene, rng, opt, task.splat);
         });
     }
-    std::vector<std::string> report() const override { return {describe(pass, counts)}; }
 };
 
 // Progressive photon mapping (lesson 8's ppm) whose photons are rouletted and split by the same
 // rule, one rule (and count of paths) per photon path.
-struct ADRRSPhotonMapper : Integrator {
-    ImportancePass pass;
-    ParticleCounts counts;
+struct ADRRSPhotonMapper : ParticleIntegrator {
     void renderIteration(const Scene& scene, uint32_t iteration, uint64_t seed, Image& out,
                          SampleStats& stats) override {
-        if (iteration == 0) {
-            pass = importancePass(scene, cameraPassPaths(out), mix64(seed ^ kImportanceTag), stats);
-            counts.reset();
-        }
+        startRender(scene, iteration, seed, out, stats);
         renderPpmPass(scene, iteration, seed, out, stats, [&] { return particleRule(scene, pass, counts); });
     }
-    std::vector<std::string> report() const override { return {describe(pass, counts)}; }
 };
 
 }  // namespace
