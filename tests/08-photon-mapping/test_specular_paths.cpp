@@ -27,29 +27,7 @@ struct Constant : ps::UniformSource {
 
 ps::Scene sceneOf(const std::string& text) { return ps::parseScene(text, "(test_specular_paths)"); }
 
-// The radiance the camera sees along `ray` through specular surfaces alone, the test's own trace:
-// the framework's sampleBSDF (Transport::Radiance) with the numbers (u, u), u; at a lamp its
-// emitted radiance, at a miss the background, at the first non-specular surface black (nothing
-// else lights these scenes' surfaces). `hitsLamp` says which it ended on.
-Color specularOracle(const ps::Scene& scene, ps::Ray ray, float u, int maxDepth, bool& hitsLamp) {
-    Color beta(1.0f);
-    hitsLamp = false;
-    for (int bounces = 0; bounces <= maxDepth; ++bounces) {
-        ps::SurfacePoint sp;
-        if (!scene.intersect(ray, sp)) return beta * scene.backgroundRadiance();
-        if (sp.light >= 0) {
-            hitsLamp = true;
-            return beta * ps::emittedRadiance(scene.lights[size_t(sp.light)], sp.n, -ray.d);
-        }
-        const ps::Material& m = scene.materials[size_t(sp.material)];
-        if (!m.isDelta() || bounces == maxDepth) return Color(0.0f);
-        ps::BSDFSample s;
-        if (!ps::sampleBSDF(m, sp.n, -ray.d, Vec2(u, u), u, ps::Transport::Radiance, s)) return Color(0.0f);
-        beta *= s.weight;
-        ray = scene.spawnRay(sp, s.wi);
-    }
-    return Color(0.0f);
-}
+using ps::testrender::specularOracle;  // tests/support/render_helpers.h
 
 bool close(const Color& a, const Color& b, float rel = 1e-4f) {
     return glm::length(a - b) <= rel * (glm::length(b) + 1e-6f);

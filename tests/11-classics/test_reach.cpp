@@ -29,28 +29,7 @@ bool close(const Color& a, const Color& b, double rel = 2e-5) {
     return true;
 }
 
-// The radiance along `ray` through specular surfaces alone, the test's own trace (the framework's
-// sampleBSDF in radiance transport, numbers (u, u), u): a lamp's emission, the background at a
-// miss, black at the first non-specular surface. `lamp`: it ended on a lamp.
-Color specularOracle(const ps::Scene& scene, ps::Ray ray, float u, int maxDepth, bool& lamp) {
-    Color beta(1.0f);
-    lamp = false;
-    for (int bounces = 0; bounces <= maxDepth; ++bounces) {
-        ps::SurfacePoint sp;
-        if (!scene.intersect(ray, sp)) return beta * scene.backgroundRadiance();
-        if (sp.light >= 0) {
-            lamp = true;
-            return beta * ps::emittedRadiance(scene.lights[size_t(sp.light)], sp.n, -ray.d);
-        }
-        const ps::Material& m = scene.materials[size_t(sp.material)];
-        if (!m.isDelta() || bounces == maxDepth) return Color(0.0f);
-        ps::BSDFSample s;
-        if (!ps::sampleBSDF(m, sp.n, -ray.d, Vec2(u, u), u, ps::Transport::Radiance, s)) return Color(0.0f);
-        beta *= s.weight;
-        ray = scene.spawnRay(sp, s.wi);
-    }
-    return Color(0.0f);
-}
+using ps::testrender::specularOracle;  // tests/support/render_helpers.h
 
 }  // namespace
 

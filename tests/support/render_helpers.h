@@ -5,9 +5,11 @@
 #include <memory>
 #include <string>
 #include <vector>
+#include "bsdf.h"
 #include "film.h"
 #include "image.h"
 #include "integrator.h"
+#include "light.h"
 #include "render.h"
 #include "scene.h"
 
@@ -86,6 +88,30 @@ std::vector<bool> pixelsWhere(const Scene& scene, bool all, Pred&& pred) {
                     if (pred(hit, sp) != all) out[size_t(y) * w + x] = !all;
                 }
     return out;
+}
+
+// The radiance the camera sees along `ray` through specular surfaces alone, a test's own trace
+// (an oracle independent of the lessons' walks): the framework's sampleBSDF in radiance transport
+// with the numbers (u, u), u; at a lamp its emitted radiance, at a miss the background, at the
+// first non-specular surface (or after maxDepth bounces) black. `hitsLamp`: it ended on a lamp.
+inline Color specularOracle(const Scene& scene, Ray ray, float u, int maxDepth, bool& hitsLamp) {
+    Color beta(1.0f);
+    hitsLamp = false;
+    for (int bounces = 0; bounces <= maxDepth; ++bounces) {
+        SurfacePoint sp;
+        if (!scene.intersect(ray, sp)) return beta * scene.backgroundRadiance();
+        if (sp.light >= 0) {
+            hitsLamp = true;
+            return beta * emittedRadiance(scene.lights[size_t(sp.light)], sp.n, -ray.d);
+        }
+        const Material& m = scene.materials[size_t(sp.material)];
+        if (!m.isDelta() || bounces == maxDepth) return Color(0.0f);
+        BSDFSample s;
+        if (!sampleBSDF(m, sp.n, -ray.d, Vec2(u, u), u, Transport::Radiance, s)) return Color(0.0f);
+        beta *= s.weight;
+        ray = scene.spawnRay(sp, s.wi);
+    }
+    return Color(0.0f);
 }
 
 }  // namespace ps::testrender
