@@ -194,8 +194,8 @@ void GuidedPathTracer::renderIteration(const Scene& scene, uint32_t iteration, u
     std::vector<SampleTree> trees(lists.size());
     renderPixelTasks(seed, iteration, out, stats, false, [&](int pixel, Rng& rng, Task& task) {
         const Vec2 raster = jitteredRaster(pixel, out.width, rng);
-        return guidedLi(scene, field_, adrrs_, cameraRay(scene.camera, raster, rng), rng, trees[task.index], lists[task.index],
-                        counts[task.index]);
+        return guidedLi(scene, field_, adrrs_, cameraRay(scene.camera, raster, rng), rng, trees[task.index],
+                        lists[task.index], counts[task.index]);
     });
     for (size_t t = 0; t < lists.size(); ++t) {  // in task order
         field_.add(lists[t]);
