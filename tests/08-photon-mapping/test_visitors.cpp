@@ -210,7 +210,8 @@ TEST_CASE("pm: the gather visitor decides each term of the camera side and where
                       "pixel " << pixel << ": pm's own global estimate through the hook gives " << str(seen) << ", pm "
                                << str(full));
     }
-    CHECK_MESSAGE(failures == 0, failures << " of " << w * h + 1 << " camera rays: the terms kept one at a time do not add up");
+    CHECK_MESSAGE(failures == 0,
+                  failures << " of " << w * h + 1 << " camera rays: the terms kept one at a time do not add up");
     CHECK_MESSAGE(specularPixels > 5, "the test needs pixels that see a sphere (" << specularPixels << ")");
     CHECK_MESSAGE(badGlobal == 0, badGlobal << " global estimates asked at y with no bounce after x");
     for (int k = 0; k < 4; ++k)
