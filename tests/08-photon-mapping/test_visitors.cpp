@@ -28,6 +28,17 @@ std::vector<Photon> tracePath(const ps::Scene& scene, ps::MapKind kind, uint32_t
     return out;
 }
 
+// Vertex j of photon path i: 1 if its surface is specular, 2 if not (the test's own look, from a
+// visitor that only records).
+int endKind(const ps::Scene& scene, ps::MapKind kind, uint32_t i, int j) {
+    int k = 2;
+    tracePath(scene, kind, i, [&](const ps::WalkVertex& v, Photon*) {
+        if (v.bounces == j) k = scene.materials[size_t(v.sp.material)].isDelta() ? 1 : 2;
+        return true;
+    });
+    return k;
+}
+
 }  // namespace
 
 TEST_CASE("photons: the photon visitor sees every vertex, sorts the photons and ends the walk [1 pt]") {
@@ -38,6 +49,8 @@ TEST_CASE("photons: the photon visitor sees every vertex, sorts the photons and 
     // ends the walk there: nothing stored, no vertex after it.
     const ps::Scene scene = spheres();
     int stored = 0, ended = 0;
+    // Where the walks were ended: y_0, a specular vertex, a surface without a photon, one with.
+    int endedAt[4] = {0, 0, 0, 0};
     for (ps::MapKind kind : {ps::MapKind::Global, ps::MapKind::Caustic}) {
         const char* name = kind == ps::MapKind::Global ? "global" : "caustic";
         for (uint32_t i = 0; i < 300; ++i) {
@@ -72,6 +85,25 @@ TEST_CASE("photons: the photon visitor sees every vertex, sorts the photons and 
                                    << int(sorted[k].population) << ", the visitor set " << photonBounces[k]);
             }
             stored += int(plain.size());
+            // A visitor that ends the walk at vertex j, whatever is there (y_0, a mirror or glass, a
+            // surface where this map stores nothing, one where it stores a photon): no vertex after
+            // j, and exactly the photons stored before j.
+            const size_t vertices = calls.size();
+            for (size_t j = 0; j < vertices; ++j) {
+                int seen = 0;
+                const std::vector<Photon> cut = tracePath(scene, kind, i, [&](const ps::WalkVertex& v, Photon*) {
+                    ++seen;
+                    return v.bounces != int(j);
+                });
+                size_t before = 0;
+                while (before < photonBounces.size() && photonBounces[before] < int(j)) ++before;
+                endedAt[j == 0 ? 0 : calls[j].photon ? 3 : endKind(scene, kind, i, int(j))]++;
+                CHECK_MESSAGE((seen == int(j) + 1 && cut.size() == before),
+                              name << " path " << i << ": a visitor that ends the walk at vertex " << j << " of "
+                                   << vertices << ": expected " << j + 1 << " vertices seen and the " << before
+                                   << " photons stored before it, got " << seen << " vertices and " << cut.size()
+                                   << " photons");
+            }
             if (plain.empty()) continue;
             calls.clear();
             const std::vector<Photon> refused = tracePath(scene, kind, i, [&](const ps::WalkVertex& v, Photon* ph) {
@@ -90,6 +122,10 @@ TEST_CASE("photons: the photon visitor sees every vertex, sorts the photons and 
     }
     REQUIRE_MESSAGE((stored > 100 && ended > 20),
                     "the test's paths store " << stored << " photons (" << ended << " paths with one)");
+    CHECK_MESSAGE((endedAt[0] > 0 && endedAt[1] > 0 && endedAt[2] > 0 && endedAt[3] > 0),
+                  "the test ended walks at y_0 " << endedAt[0] << ", at specular vertices " << endedAt[1]
+                                                 << ", at surfaces without a photon " << endedAt[2] << ", with one "
+                                                 << endedAt[3] << " times (it needs each)");
 }
 
 namespace {
