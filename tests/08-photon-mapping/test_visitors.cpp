@@ -246,6 +246,29 @@ TEST_CASE("pm: the gather visitor decides each term of the camera side and where
                       "pixel " << pixel << ": pm's own global estimate through the hook gives " << str(seen) << ", pm "
                                << str(full));
     }
+    // At the maximum depth: with no bounce allowed (maxDepth 0) the walk ends at its first
+    // surface, which takes no light sample and gathers nothing; what stays is the light seen there
+    // and, off mirrors and glass, that surface's caustic estimate (the test's own first hit).
+    ps::PmOptions shallow = pm;
+    shallow.maxDepth = 0;
+    int shallowBad = 0;
+    for (int pixel = 0; pixel <= w * h; ++pixel) {
+        ps::Rng rng;
+        ps::Ray ray = cameraRay(pixel, rng);
+        ps::SurfacePoint x;
+        Color want(0.0f);
+        if (scene.intersect(ray, x)) {
+            const ps::Material& m = scene.materials[size_t(x.material)];
+            if (x.light >= 0) want += ps::emittedRadiance(scene.lights[size_t(x.light)], x.n, -ray.d);
+            if (!m.isDelta()) want += ps::radianceEstimate(maps.caustic, x, m, -ray.d, pm.causticEstimate);
+        }
+        const Color got = radiance(pixel, shallow);
+        const double tol = 1e-5 * (ps::testrender::sum(want) + 1e-6);
+        if (std::abs(ps::testrender::sum(got - want)) > 3 * tol && shallowBad++ < 3)
+            FAIL_CHECK("pixel " << pixel << ", maxdepth 0: expected the light seen at the first surface plus its "
+                                << "caustic estimate " << str(want) << " (no light sample, no final gather), got "
+                                << str(got));
+    }
     CHECK_MESSAGE(failures == 0,
                   failures << " of " << w * h + 1 << " camera rays: the terms kept one at a time do not add up");
     CHECK_MESSAGE(specularPixels > 5, "the test needs pixels that see a sphere (" << specularPixels << ")");
