@@ -118,24 +118,36 @@ int stripFactor(int width) { return width <= 0 ? 1 : std::min(8, (kStripWidth + 
 
 namespace {
 
-// The label in lines of at most `width` pixels at font scale `scale`, broken at spaces; empty if a
-// word alone is wider.
+// The label in lines of at most `width` pixels at font scale `scale`, broken at spaces; a word wider
+// than a line is broken after its hyphens ("direct-" / "onesample"); empty if a piece is still wider.
 std::vector<std::string> wrapLabel(const std::string& label, int width, int scale) {
     std::vector<std::string> lines;
     std::string line;
+    const auto add = [&](const std::string& piece, const std::string& sep) {
+        const std::string joined = line.empty() ? piece : line + sep + piece;
+        if (textWidth(joined, scale) <= width) {
+            line = joined;
+        } else {
+            lines.push_back(line);
+            line = piece;
+        }
+    };
     size_t i = 0;
     while (i <= label.size()) {
         const size_t j = std::min(label.find(' ', i), label.size());
         const std::string word = label.substr(i, j - i);
         i = j + 1;
         if (word.empty()) continue;
-        if (textWidth(word, scale) > width) return {};
-        const std::string joined = line.empty() ? word : line + " " + word;
-        if (textWidth(joined, scale) <= width) {
-            line = joined;
-        } else {
-            lines.push_back(line);
-            line = word;
+        if (textWidth(word, scale) <= width) {
+            add(word, " ");
+            continue;
+        }
+        for (size_t a = 0; a < word.size();) {  // too wide: its pieces up to and including each '-'
+            const size_t b = std::min(word.find('-', a), word.size() - 1) + 1;
+            const std::string piece = word.substr(a, b - a);
+            if (textWidth(piece, scale) > width) return {};
+            add(piece, a == 0 ? " " : "");
+            a = b;
         }
     }
     if (!line.empty()) lines.push_back(line);
@@ -153,7 +165,8 @@ Image labelledStrip(const std::vector<Image>& images, const std::vector<std::str
     const int k = stripFactor(w0);
     const int cell = images.empty() ? 0 : narrowest * k;
     // The largest font scale at which every label fits its cell in at most two lines (its glyphs at
-    // most a seventh of the cell's width high), or in one line if that is not much smaller.
+    // most a seventh of the cell's width high), or in one line if that is not much smaller, or in
+    // three if that is much larger (seven cells with labels like "direct-onesample 16 spp").
     const auto largestScale = [&](size_t maxLines) {
         for (int scale = std::max(1, cell / (7 * kGlyphHeight)); scale > 1; --scale) {
             bool fits = true;
@@ -165,8 +178,8 @@ Image labelledStrip(const std::vector<Image>& images, const std::vector<std::str
         }
         return 1;
     };
-    const int twoLines = largestScale(2), oneLine = largestScale(1);
-    const int scale = 5 * oneLine >= 4 * twoLines ? oneLine : twoLines;
+    const int twoLines = largestScale(2), oneLine = largestScale(1), threeLines = largestScale(3);
+    const int scale = 5 * oneLine >= 4 * twoLines ? oneLine : 4 * threeLines >= 5 * twoLines ? threeLines : twoLines;
     std::vector<std::vector<std::string>> lines(labels.size());
     for (size_t i = 0; i < labels.size(); ++i) lines[i] = wrapLabel(labels[i], cell - 4 * scale, scale);
     size_t rows = 1;

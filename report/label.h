@@ -26,7 +26,8 @@ int labelScale(int imageWidth);
 // The strip is made at slide resolution, so that its labels read on a lecture slide: images
 // narrower together than kStripWidth are enlarged by a whole factor (each pixel a square of
 // pixels, no filtering), and the labels take the largest font that fits their cell (a label may
-// wrap at spaces onto a second line), up to a glyph height of a seventh of the cell's width.
+// wrap at spaces, or a word too wide for the cell after its hyphens, onto a second line, or a third
+// if that makes the font much larger), up to a glyph height of a seventh of the cell's width.
 constexpr int kStripWidth = 1200;
 Image labelledStrip(const std::vector<Image>& images, const std::vector<std::string>& labels, const Color& ink);
 // The whole factor labelledStrip enlarges images of total width `width` by.

@@ -10,7 +10,8 @@ set -euo pipefail
 PACKAGES=(cmake make g++ libglm-dev libstb-dev libtinyobjloader-dev doctest-dev libtinyexr-dev ccache bubblewrap binutils
           clang libomp-dev libc++-dev libc++abi-dev)
 # clang 19 only, not its libc++ or libomp: Debian's libc++-19-dev and libomp-19-dev conflict with
-# (and replace) the version-14 packages above, which clang 14 and the fuzzers need.
+# (and replace) the version-14 packages above, which clang 14 and the fuzzers need; portability.sh
+# unpacks libomp 19's two packages into its build folder instead (apt-get download, dpkg -x).
 if [ "${1:-}" = --portability ]; then
   PACKAGES+=(clang-19 clang-tools)  # clang 19 (Debian 12: 1:19.1.7-3~deb12u1); clang-query (check-order.sh)
 elif [ $# -gt 0 ]; then

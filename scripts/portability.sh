@@ -10,8 +10,12 @@
 # Configurations (build folder build-NAME/, each with its own ccache entries):
 #   clang14-libc++   Debian's clang 14 with LLVM's libc++ 14: the closest to Apple clang we can run
 #   clang14          clang 14 with GCC's libstdc++
-#   clang19          clang 19 with libstdc++, and libomp 14's runtime and omp.h (Debian's libc++ 19
-#                    and libomp 19 conflict with the 14 packages that clang 14 needs: not installed)
+#   clang19          clang 19 with libstdc++ and LLVM's OpenMP 19 (libomp): clang 19's OpenMP code
+#                    calls __kmpc_dispatch_deinit, which libomp 14 lacks, and Debian 12's libomp 19
+#                    packages conflict with the 14 packages that clang 14 needs. So libomp5-19 and
+#                    libomp-19-dev (the version of the installed clang-19) are fetched with
+#                    `apt-get download` and unpacked with `dpkg -x` into build-clang19/libomp19/,
+#                    never installed; the build takes omp.h and libomp.so from there (rpath).
 # Installs what is missing first (scripts/deps.sh --portability). A test that fails is run again
 # once, alone (on a shared machine a test can run out of its time limit); the table at the end
 # says which tests failed twice. Exit status 1 if a build or a test failed.
@@ -25,6 +29,16 @@ for c in "${configs[@]}"; do
 done
 bash scripts/deps.sh --portability || exit 1
 export CCACHE_BASEDIR="$PWD"
+# libomp5-19 and libomp-19-dev of the installed clang-19's version, unpacked into $1/root (not installed).
+fetch_libomp19() {
+  local dir=$1 ver d
+  ver=$(dpkg-query -W -f='${Version}' clang-19) || return 1
+  [ "$(cat "$dir/version" 2>/dev/null)" = "$ver" ] && return 0
+  rm -rf "$dir" && mkdir -p "$dir/debs" || return 1
+  (cd "$dir/debs" && apt-get download -q "libomp5-19=$ver" "libomp-19-dev=$ver") || return 1
+  for d in "$dir"/debs/*.deb; do dpkg -x "$d" "$dir/root" || return 1; done
+  echo "$ver" > "$dir/version"
+}
 jobs=$(nproc)
 rows=() status=0
 for c in "${configs[@]}"; do
@@ -37,12 +51,16 @@ for c in "${configs[@]}"; do
   flags=()
   [[ "$c" == *-libc++ ]] && flags=(-DCMAKE_CXX_FLAGS=-stdlib=libc++ -DCMAKE_EXE_LINKER_FLAGS=-stdlib=libc++
                                     -DCMAKE_SHARED_LINKER_FLAGS=-stdlib=libc++)
-  if [ "$c" = clang19 ]; then  # OpenMP from libomp 14: its omp.h alone on the include path, its library
-    omp=$(ls /usr/lib/llvm-14/lib/clang/*/include/omp.h | head -1)
-    mkdir -p "$bld/omp14" && ln -sf "$omp" "$bld/omp14/omp.h"
-    link="-L/usr/lib/llvm-14/lib -Wl,-rpath,/usr/lib/llvm-14/lib"
-    flags=("-DOpenMP_CXX_FLAGS=-fopenmp=libomp -isystem $PWD/$bld/omp14" -DOpenMP_CXX_LIB_NAMES=omp
-           -DOpenMP_omp_LIBRARY=/usr/lib/llvm-14/lib/libomp.so "-DCMAKE_EXE_LINKER_FLAGS=$link"
+  if [ "$c" = clang19 ]; then  # OpenMP from Debian's libomp 19, unpacked into $bld/libomp19 (above)
+    omp="$PWD/$bld/libomp19"
+    if ! fetch_libomp19 "$omp" > "$bld/libomp19.log" 2>&1; then
+      echo "portability: $c: could not fetch Debian's libomp 19 ($bld/libomp19.log):" >&2; cat "$bld/libomp19.log" >&2
+      rows+=("| $c | $($cxx --version | head -1 | sed 's/ (.*//') | libomp 19 not fetched | | |"); status=1; continue
+    fi
+    lib="$omp/root/usr/lib/llvm-19/lib"
+    link="-L$lib -Wl,-rpath,$lib"
+    flags=("-DOpenMP_CXX_FLAGS=-fopenmp=libomp -isystem $lib/clang/19/include" -DOpenMP_CXX_LIB_NAMES=omp
+           "-DOpenMP_omp_LIBRARY=$lib/libomp.so" "-DCMAKE_EXE_LINKER_FLAGS=$link"
            "-DCMAKE_SHARED_LINKER_FLAGS=$link")
   fi
   echo "portability: $c: $($cxx --version | head -1) in $bld/"

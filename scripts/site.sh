@@ -116,11 +116,11 @@ fi
     readme="lessons/$l/README.md"
     t=$(time_of "$readme"); p=$(points_of "$l")
     if [ -z "$t" ]; then
-      echo "site: warning: $readme has no line '*Time: about N hours — R to read, W to write and test ...*'" >&2
-      tcell="—"
-    else
-      total=$((total + t)); tcell="about $t h ($(detail_of "$readme"))"
+      echo "site: $readme has no line '*Time: about N hours — R to read, W to write and test ...*'" \
+        "under its title (the schedule gives every lesson's time estimate)" >&2
+      exit 1
     fi
+    total=$((total + t)); tcell="about $t h ($(detail_of "$readme"))"
     points=$((points + p))
     name=$(title_of "$readme" | sed 's/^Lesson [0-9]* — //')
     deck=""

@@ -65,7 +65,7 @@ TEST_CASE("thin lens: lensPoint fills the lens disk evenly, and pdfLens is its d
         constexpr int n = 64;
         const double R = c.radius;
         const double scale = std::max(1.0, double(ps::maxAbsComponent(c.eye)));
-        int inner = 0, bad = 0;
+        int bad = 0;
         std::vector<int> ring(4, 0), sector(8, 0);
         double farthest = 0.0;
         for (int j = 0; j < n; ++j)
@@ -86,7 +86,6 @@ TEST_CASE("thin lens: lensPoint fills the lens disk evenly, and pdfLens is its d
                     continue;
                 }
                 ++ring[std::min(3, int(rho * 4.0))];
-                if (rho < 0.5) ++inner;
                 const double phi = std::atan2(glm::dot(inPlane, c.u()), glm::dot(inPlane, c.r()));
                 ++sector[std::min(7, int((phi + kPi) / (2.0 * kPi) * 8.0))];
             }

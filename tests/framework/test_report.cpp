@@ -126,4 +126,24 @@ TEST_CASE("report: labels are drawn with the 5 x 7 font, scaled, clipped and abo
     CHECK(family.width == 1536);
     CHECK(family.height == 256 + 2 * 9 * 3 - 2 * 3 + 4 * 3);  // two lines at scale 3
     CHECK(ink > 0);
+    // Seven cells of 256 pixels (lesson 2's plates): "direct-onesample", 16 characters, fits one
+    // line only at scale 2; broken after its hyphen, every label fits three lines at scale 4
+    // ("direct-" / "onesample 16" does not fit 240 pixels, so "direct-" / "onesample" / "16 spp"):
+    // twice the font, so three lines it is.
+    std::vector<Image> seven(7, Image(128, 128));
+    const Image plates =
+        labelledStrip(seven,
+                      {"direct-light 16 spp", "direct-bsdf 16 spp", "direct-balance 16 spp", "direct-power 16 spp",
+                       "direct-max 16 spp", "direct-onesample 16 spp", "reference"},
+                      Color(1.0f));
+    CHECK(plates.width == 1792);
+    CHECK(plates.height == 256 + 3 * 9 * 4 - 2 * 4 + 4 * 4);
+    const auto inkInRow = [&](int cell, int line) {  // ink in that text line of that cell
+        int n = 0;
+        for (int y = 8 + line * 36; y < 8 + line * 36 + 28; ++y)
+            for (int x = cell * 256; x < cell * 256 + 256; ++x) n += plates.at(x, y).r == 1.0f;
+        return n;
+    };
+    CHECK(inkInRow(5, 2) > 0);   // "16 spp" on the third line
+    CHECK(inkInRow(6, 1) == 0);  // "reference" on one
 }

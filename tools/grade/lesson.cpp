@@ -152,8 +152,10 @@ View treeView(const Grading& g, const std::string& lesson) {
     View v;
     for (const char* p : {"include", "rules", "lib/framework.a", "lib/test_support.a", "lib/main"})
         v.readOnly.push_back((g.tree / p).string());
+    // Shared libraries from outside /usr (cmake/grader_tree.cmake), linked and loaded from there.
+    if (fs::is_directory(g.tree / "lib" / "runtime")) v.readOnly.push_back((g.tree / "lib" / "runtime").string());
     for (const auto& e : fs::directory_iterator(g.tree / "lib")) {
-        if (!e.is_directory() || e.path().filename() == "main") continue;
+        if (!e.is_directory() || e.path().filename() == "main" || e.path().filename() == "runtime") continue;
         if (fs::is_directory(e.path() / "plumbing")) v.readOnly.push_back((e.path() / "plumbing").string());
         if (e.path().filename() != nn) v.readOnly.push_back((e.path() / "reference").string());
     }
