@@ -228,6 +228,15 @@ void printLeftOut(const std::string& algo, const Integrator& integrator, const S
         std::cerr << "pathspace: " << algo << " leaves out " << line << "\n";
 }
 
+namespace {
+// A render parameter's value names as the command line writes them: "N M" in a scene file is N,M.
+std::string commandLineValueNames(const RenderParameter& p) {
+    std::string names = p.valueNames;
+    std::replace(names.begin(), names.end(), ' ', ',');
+    return names;
+}
+}  // namespace
+
 void listAlgorithms(std::ostream& os) {
     const std::vector<IntegratorInfo> list = integratorList();
     size_t width = 0;
@@ -248,9 +257,7 @@ void listAlgorithms(std::ostream& os) {
     os << "\nrender parameters (render, converge, pyramid): the scene's 'render NAME V1 .. Vn' sets them,\n"
           "--NAME V1,..,Vn overrides it (one value stands for all n; 'x' separates too: 16x8):\n";
     for (const auto& e : parameters) {
-        std::string names = e.value.valueNames;  // "N M" in a scene file is N,M here
-        std::replace(names.begin(), names.end(), ' ', ',');
-        std::string left = "  --" + e.name + " " + names;
+        std::string left = "  --" + e.name + " " + commandLineValueNames(e.value);
         left.resize(std::max<size_t>(left.size() + 2, 21), ' ');
         os << left << e.value.help << "\n";
     }
@@ -288,6 +295,7 @@ bool parseRenderParameterOption(const std::vector<std::string>& args, size_t& i,
     const RenderParameter* p = Registry<RenderParameter>::find(name);
     if (!p) return false;
     const std::string text = optionValue(args, i);
+    const std::string names = commandLineValueNames(*p);
     std::vector<float> v;
     std::string part;
     for (size_t k = 0; k <= text.size(); ++k) {
@@ -297,8 +305,8 @@ bool parseRenderParameterOption(const std::vector<std::string>& args, size_t& i,
         }
         float x = 0.0f;
         if (parseWhole(part, x) != std::errc())
-            throw UsageError("option " + a + " needs numbers (" + p->valueNames + ", separated by commas), got '" +
-                             text + "'");
+            throw UsageError("option " + a + " needs " + (p->count > 1 ? "numbers (" + names + ")" : "a number") +
+                             ", got '" + text + "'");
         v.push_back(x);
         part.clear();
     }
@@ -306,7 +314,7 @@ bool parseRenderParameterOption(const std::vector<std::string>& args, size_t& i,
     std::string problem = renderParameterProblem(*p, v);
     if (v.size() != size_t(p->count))
         problem = "needs " + std::string(p->count > 1 ? "1 or " + std::to_string(p->count) + " numbers" : "1 number") +
-                  " (" + p->valueNames + ")";
+                  " (" + names + ")";
     if (!problem.empty()) throw UsageError("option " + a + " " + problem + ", got '" + text + "'");
     values[name] = v;
     return true;
