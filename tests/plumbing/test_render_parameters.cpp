@@ -81,7 +81,8 @@ TEST_CASE("render parameters: a bad value of lesson 11's is one error naming the
     expectRenderError("ambient 1e31 0 0", {"'ambient' must not be negative nor above 1e30", "got 1e31 0 0"});
 }
 
-TEST_CASE("render parameters: a bad value of lesson 8's ppm is one error naming the line, the parameter and the problem") {
+TEST_CASE(
+    "render parameters: a bad value of lesson 8's ppm is one error naming the line, the parameter and the problem") {
     expectRenderError("ppmradius 0", {"'ppmradius' must be a positive number", "got 0"});
     expectRenderError("ppmradius nan", {"'nan' for 'ppmradius' is not a finite number"});
     expectRenderError("ppmphotons 2.5", {"'ppmphotons' must be a whole number of photon paths", "got 2.5"});
