@@ -3,16 +3,17 @@
 # as a programming assignment's autograder. At its root: setup.sh and run_autograder
 # (tools/gradescope/), config.sh (the options below) and pathspace/ (this repository's files,
 # solutions/ included: setup.sh builds the prepared tree from them, then deletes them).
-#   bash scripts/gradescope.sh [--lessons all|3|3,5] [--timeout S] [--build-timeout S] [--no-sandbox] [--out FILE]
+#   bash scripts/gradescope.sh [--lessons all|3|3,5] [--timeout S] [--build-timeout S] [--sandbox auto|yes|no] [--out FILE]
 # --lessons: what one Gradescope assignment grades (default all: every lesson in the upload).
 # --timeout, --build-timeout: the grader's limits per test and per lesson build (120, 300 s).
-# --no-sandbox: grade without bubblewrap, for a Gradescope image where it cannot run (the README
-# says what that gives up). --out: the zip (default build/gradescope-autograder.zip, or
+# --sandbox: auto (the default) grades in bubblewrap where the container lets it make namespaces
+# and otherwise without it, saying so in the output; yes refuses to grade without it; no never uses
+# it (the README says what grading without it gives up). --no-sandbox is --sandbox no. --out: the zip (default build/gradescope-autograder.zip, or
 # build/gradescope-lesson-NN.zip for one lesson). Zipped with zip, else python3's zipfile, else
 # cmake -E tar.
 set -euo pipefail
 src="$(cd "$(dirname "$0")/.." && pwd)"
-lessons=all timeout=120 build_timeout=300 sandbox=yes out=""
+lessons=all timeout=120 build_timeout=300 sandbox=auto out=""
 usage() { echo "gradescope: $1 (see the top of scripts/gradescope.sh)" >&2; exit 2; }
 while [ $# -gt 0 ]; do
   [ $# -ge 2 ] || [ "$1" = --no-sandbox ] || usage "$1 needs a value"
@@ -20,12 +21,14 @@ while [ $# -gt 0 ]; do
     --lessons) lessons="$2"; shift 2 ;;
     --timeout) timeout="$2"; shift 2 ;;
     --build-timeout) build_timeout="$2"; shift 2 ;;
+    --sandbox) sandbox="$2"; shift 2 ;;
     --no-sandbox) sandbox=no; shift ;;
     --out) out="$2"; shift 2 ;;
     *) usage "unknown option $1" ;;
   esac
 done
 [[ "$lessons" =~ ^(all|[0-9]{1,2}(,[0-9]{1,2})*)$ ]] || usage "--lessons takes all or lesson numbers such as 3,5, got '$lessons'"
+[[ "$sandbox" =~ ^(auto|yes|no)$ ]] || usage "--sandbox takes auto, yes or no, got '$sandbox'"
 [[ "$timeout" =~ ^[1-9][0-9]*$ ]] || usage "--timeout takes a whole number of seconds, got '$timeout'"
 [[ "$build_timeout" =~ ^[1-9][0-9]*$ ]] || usage "--build-timeout takes a whole number of seconds, got '$build_timeout'"
 # Lesson numbers without leading zeros (run_autograder compares them so).

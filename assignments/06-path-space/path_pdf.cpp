@@ -6,6 +6,9 @@
 namespace ps {
 
 double pdfTechnique(const Scene& scene, const Path& x, int s) {
+    // Given: a technique of this path at all (s from 0 to k + 1, k >= 1). Not the student's: a
+    // missing check would read before the path (x[-1]), which no test can observe reliably.
+    if (x.size() < 2 || s < 0 || s > int(x.size())) return 0.0;
     // TODO(06) p_{s,t}(x) per unit area (Eq. 6.7-6.10), in double, 0 for what technique s cannot sample (Eq. 6.12), as
     //          pdfTechnique in paths.h states it; x0 and x1 as startLightPath samples them, specular vertices as in
     //          contribution. Pitfalls (README 6): the BSDF's argument order in each subpath; P(l) p_A(x0) counts even

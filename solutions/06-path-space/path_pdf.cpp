@@ -6,6 +6,9 @@
 namespace ps {
 
 double pdfTechnique(const Scene& scene, const Path& x, int s) {
+    // Given: a technique of this path at all (s from 0 to k + 1, k >= 1). Not the student's: a
+    // missing check would read before the path (x[-1]), which no test can observe reliably.
+    if (x.size() < 2 || s < 0 || s > int(x.size())) return 0.0;
     //! TODO(06) p_{s,t}(x) per unit area (Eq. 6.7-6.10), in double, 0 for what technique s cannot sample (Eq. 6.12), as
     //!          pdfTechnique in paths.h states it; x0 and x1 as startLightPath samples them, specular vertices as in
     //!          contribution. Pitfalls (README 6): the BSDF's argument order in each subpath; P(l) p_A(x0) counts even
@@ -14,7 +17,7 @@ double pdfTechnique(const Scene& scene, const Path& x, int s) {
     //! STUB return PS_TODO("lesson 06: pdfTechnique", 0.0);
     //! BEGIN
     const int k = int(x.size()) - 1, t = k + 1 - s;
-    if (k < 1 || s < 0 || t < 0 || (t == 0 && !x[size_t(k)].onCamera)) return 0.0;
+    if (t == 0 && !x[size_t(k)].onCamera) return 0.0;
     if (s == 0 && (!x[0].onLight || x[0].pointLight)) return 0.0;
     if (s >= 1 && t >= 1 && (x[size_t(s) - 1].specular || x[size_t(s)].specular)) return 0.0;
     if (t == 1 && x[size_t(k) - 1].infinite) return 0.0;  // the background joined straight to the pinhole

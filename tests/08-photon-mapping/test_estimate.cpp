@@ -146,13 +146,19 @@ TEST_CASE(
             while (n < d.size() && d[n].first <= maxD2 && (k == 0 || n < size_t(k))) ++n;
             const float r2 = (k > 0 && n == size_t(k)) ? d[n - 1].first : maxD2;
             Color expected(0.0f);
+            float scale = 0.0f;  // the estimate's size with a box kernel: what float rounding is relative to
             for (size_t j = 0; j < n; ++j) {
                 const Photon& ph = map.nodes[d[j].second];
-                expected += ps::evalBSDF(glossy, sp.n, wo, ph.wLight()) * ph.power *
-                            float(ownKernel(f, d[j].first, r2, opt.coneK));
+                const Color fPower = ps::evalBSDF(glossy, sp.n, wo, ph.wLight()) * ph.power;
+                expected += fPower * float(ownKernel(f, d[j].first, r2, opt.coneK));
+                scale += glm::length(fPower) / (3.14159265f * r2);
             }
             const Color got = ps::radianceEstimate(map, sp, glossy, wo, opt);
-            const bool ok = glm::length(got - expected) <= 1e-4f * (glm::length(expected) + 1e-6f);
+            // Relative 1e-4 of the estimate, plus 5e-6 of its box-kernel size for where the kernel
+            // itself is about 0 (k = 1: the one photon sits at r, where the cone and the Gaussian
+            // vanish and float rounding leaves a few 1e-7 of the kernel's peak, of either sign:
+            // PATHSPACE_TEST_SEED 1 found -1.4e-7 against an exact 0).
+            const bool ok = glm::length(got - expected) <= 1e-4f * (glm::length(expected) + 0.05f * scale + 1e-6f);
             CHECK_MESSAGE(ok, ps::filterName(f)
                                   << " filter, " << (k ? "k = " + std::to_string(k) : std::string("fixed radius"))
                                   << ", maxRadius 0.2, at " << str(sp.p) << ": expected " << str(expected) << " (" << n

@@ -117,8 +117,12 @@ TEST_CASE(
         }
     }
     CHECK_MESSAGE(bad == 0, bad << " technique targets differ");
-    CHECK_MESSAGE((checked[0] >= 20 && checked[1] >= 20 && checked[2] >= 20),
-                  "expected at least 20 lit paths of each kind (t = 1, s = 0, other), got "
+    // Every kind must have been compared. Measured over PATHSPACE_TEST_SEED 0-99: t = 1 185 on average
+    // (sd 10, fewest 158), s = 0 26.8 (sd 5.3, fewest 14: the camera path must hit a light), the
+    // others 223 (sd 16, fewest 177); the bounds 100, 5 and 100 are 4 sd or more below (20 for
+    // s = 0 failed at seed 5 of 20).
+    CHECK_MESSAGE((checked[0] >= 100 && checked[1] >= 5 && checked[2] >= 100),
+                  "expected at least 100, 5 and 100 lit paths of each kind (t = 1, s = 0, other), got "
                       << checked[0] << ", " << checked[1] << ", " << checked[2]);
 }
 

@@ -30,14 +30,15 @@ package() {
 # upload PACKAGE NAME: runs the package on the upload in $work/uploads/NAME; its results (in
 # $work/PACKAGE/results) are copied to $work/results-PACKAGE-NAME, which the checks below read.
 last=""
+broken_bwrap=()  # upload_without_sandbox sets it: PATHSPACE_GRADE_BWRAP=/bin/false, a bubblewrap that never works
 upload() {
   local root="$work/$1" name="$2"
   last="$1-$2"
   rm -rf "$root/submission" "$root/results"
   cp -R "$work/uploads/$name" "$root/submission"
-  (cd "$root" && GRADESCOPE_ROOT="$root" PATHSPACE_GRADE="$grade" PATHSPACE_TREE="$tree" ./run_autograder) >"$work/$last.txt" 2>&1
+  (cd "$root" && env "${broken_bwrap[@]}" GRADESCOPE_ROOT="$root" PATHSPACE_GRADE="$grade" PATHSPACE_TREE="$tree" ./run_autograder) >"$work/$last.txt" 2>&1
   local status=$?
-  if grep -q "no working sandbox" "$work/$last.txt"; then
+  if [ ${#broken_bwrap[@]} -eq 0 ] && grep -q "no working sandbox" "$work/$last.txt"; then
     echo "gradescope: SKIP: the grader has no working sandbox here:"
     sed 's/^/  /' "$work/$last.txt"
     exit 77
@@ -124,6 +125,25 @@ expect_in "not graded: 04-measurement (this assignment grades lesson(s) 0)"
 upload lesson0 nothing
 expect_score 0 "$max0"
 expect_in "no folder 00-rays in the submission"
+
+# A container where bubblewrap cannot run (PATHSPACE_GRADE_BWRAP=/bin/false stands for it): the
+# default package (--sandbox auto) grades without the sandbox and says so in what the student and
+# the staff see; one made with --sandbox yes refuses to grade and says why.
+broken_bwrap=(PATHSPACE_GRADE_BWRAP=/bin/false)
+upload all folders
+expect_score full
+expect_in "graded without a sandbox"
+grep -q "grading WITHOUT a sandbox" "$work/$last.txt" || fail "$last: the staff's log does not say the sandbox was off"
+package strict --sandbox yes
+root="$work/strict"
+rm -rf "$root/submission" "$root/results" && cp -R "$work/uploads/folders" "$root/submission"
+if (cd "$root" && env "${broken_bwrap[@]}" GRADESCOPE_ROOT="$root" PATHSPACE_GRADE="$grade" PATHSPACE_TREE="$tree" ./run_autograder) >"$work/strict.txt" 2>&1; then
+  fail "strict: a package made with --sandbox yes graded without a working sandbox"
+else
+  grep -q "no working sandbox" "$work/strict.txt" || fail "strict: run_autograder failed without saying why: $(tail -2 "$work/strict.txt")"
+  [ ! -e "$root/results/results.json" ] || fail "strict: results.json written although nothing was graded"
+fi
+broken_bwrap=()
 
 if [ $failures -gt 0 ]; then
   echo "gradescope: $failures checks failed (run_autograder's output: $work/*.txt, results: $work/results-*/)"

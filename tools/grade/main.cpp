@@ -4,8 +4,8 @@
 //
 //   grade --prepare DIR [--source SRC] [--jobs N]
 //   grade [--tree DIR] [--submission DIR] [--lessons 0,1|all] [--out OUT] [--timeout S]
-//         [--build-timeout S] [--jobs N] [--no-sandbox] [--no-object-check] [--keep-work]
-//         [--expect zero|full] [--note TEXT]
+//         [--build-timeout S] [--jobs N] [--no-sandbox|--sandbox-or-none] [--no-object-check]
+//         [--keep-work] [--expect zero|full] [--note TEXT]
 //   grade --junit FILE [--source SRC] [--lessons ...] [--out OUT] [--expect zero|full]
 //   grade --check-reference [--tree DIR] [--lessons ...]
 //   grade --check-objects LESSON FILE.o... [--tree DIR]
@@ -22,7 +22,8 @@
 // (CI proves this way that the reference scores full marks and the skeleton zero).
 // Writes OUT/results.json (Gradescope), OUT/junit.xml and OUT/logs/ (every step's output), and
 // prints a score table. Exit status: 0; 1 when --expect is not met; 2 for a bad command line;
-// 3 when there is no working sandbox and --no-sandbox was not given, or no objdump and
+// 3 when there is no working sandbox and neither --no-sandbox nor --sandbox-or-none was given, or
+// no objdump and
 // --no-object-check was not given; 128 + N when signal N stopped it.
 #include <sys/prctl.h>
 #include <sys/wait.h>
@@ -79,8 +80,8 @@ std::string quote(const std::string& s) {
 const char* kHelp =
     "usage: grade --prepare DIR [--source SRC] [--jobs N]\n"
     "       grade [--tree DIR] [--submission DIR] [--lessons 0,1|all] [--out OUT] [--timeout S]\n"
-    "             [--build-timeout S] [--jobs N] [--no-sandbox] [--no-object-check] [--keep-work]\n"
-    "             [--expect zero|full] [--note TEXT]\n"
+    "             [--build-timeout S] [--jobs N] [--no-sandbox|--sandbox-or-none] [--no-object-check]\n"
+    "             [--keep-work] [--expect zero|full] [--note TEXT]\n"
     "       grade --junit FILE [--source SRC] [--lessons 0,1|all] [--out OUT] [--expect zero|full]\n"
     "       grade --check-reference [--tree DIR] [--lessons 0,1|all]\n"
     "       grade --check-objects LESSON FILE.o... [--tree DIR]\n"
@@ -89,7 +90,10 @@ const char* kHelp =
     "folders like assignments/, the default), every other lesson from the prepared tree (--tree,\n"
     "default: this build's grader/). Only the submission's files are compiled; the build and each\n"
     "test run in a sandbox (bubblewrap: no network, nothing but the submission's copy and the tree;\n"
-    "as nobody when root). --no-sandbox runs them unprotected, as you (for trusted code only).\n"
+    "as nobody when root). --no-sandbox runs them unprotected, as you (for trusted code only);\n"
+    "--sandbox-or-none uses the sandbox where bubblewrap works and otherwise grades without it, saying\n"
+    "so on stderr and in results.json (a throw-away container that cannot make namespaces).\n"
+    "PATHSPACE_GRADE_BWRAP=PROGRAM: the bubblewrap to use (default: bwrap on PATH).\n"
     "Before linking, the object check refuses a lesson whose objects use what graded code may not\n"
     "(files, system calls, process control, the test framework...) or hold a system-call\n"
     "instruction; --no-object-check skips it (the scores then rest on the result channel alone).\n"
@@ -268,7 +272,7 @@ int main(int argc, char** argv) {
     fs::path submission = source / "assignments", out = "grade", junitIn, prepareDir;
     std::string lessonsArg = "all", expect, note;
     int timeout = 120, buildTimeout = 300, jobs = 2;
-    bool noSandbox = false, keepWork = false, noObjectCheck = false, checkRef = false;
+    bool noSandbox = false, sandboxOrNone = false, keepWork = false, noObjectCheck = false, checkRef = false;
     std::string checkLesson;
     std::vector<fs::path> checkFiles;
     for (int i = 1; i < argc; ++i) {
@@ -288,6 +292,7 @@ int main(int argc, char** argv) {
         else if (a == "--prepare") prepareDir = fs::absolute(value());
         else if (a == "--junit") junitIn = fs::absolute(value());
         else if (a == "--no-sandbox") noSandbox = true;
+        else if (a == "--sandbox-or-none") sandboxOrNone = true;
         else if (a == "--keep-work") keepWork = true;
         else if (a == "--no-object-check") noObjectCheck = true;
         else if (a == "--check-reference") checkRef = true;
@@ -387,13 +392,19 @@ int main(int argc, char** argv) {
     if (!noSandbox) {
         std::string why;
         g.sandbox = Sandbox::probe(treeView(g, lessons.front()), why);
-        if (!g.sandbox.on()) {
+        if (!g.sandbox.on() && sandboxOrNone) {
+            std::cerr << "grade: no sandbox: " << why
+                      << ".\ngrade: --sandbox-or-none: grading WITHOUT a sandbox; the submission runs as this user\n";
+            notes[""] += std::string(notes[""].empty() ? "" : "\n") +
+                         "graded without a sandbox (bubblewrap cannot run in this container)";
+        } else if (!g.sandbox.on()) {
             std::cerr << "grade: no sandbox: " << why
                       << ".\ngrade: install it (apt-get install bubblewrap), or give --no-sandbox to run the "
                          "submission unprotected, as you (trusted code only)\n";
             return 3;
         }
-        std::cerr << "grade: sandbox: bwrap" << (g.sandbox.unprivileged() ? ", as nobody" : "") << "\n";
+        if (g.sandbox.on())
+            std::cerr << "grade: sandbox: bwrap" << (g.sandbox.unprivileged() ? ", as nobody" : "") << "\n";
     } else std::cerr << "grade: --no-sandbox: the submission runs as you and can read and change your files\n";
     if (g.objectCheck && findProgram("objdump").empty()) {
         std::cerr << "grade: no objdump (Debian package binutils) for the object check: install it, or give "

@@ -57,7 +57,8 @@ Step Sandbox::wrap(Step step, const View& view) const {
 
 Sandbox Sandbox::probe(const View& view, std::string& why) {
     Sandbox box;
-    box.bwrap_ = findProgram("bwrap");
+    const char* chosen = std::getenv("PATHSPACE_GRADE_BWRAP");  // the operator's choice (and the tests')
+    box.bwrap_ = chosen && *chosen ? std::string(chosen) : findProgram("bwrap");
     if (box.bwrap_.empty()) {
         why = "bwrap (Debian package bubblewrap) is not installed";
         return Sandbox();
