@@ -273,6 +273,47 @@ Svg cosineWarp() {
     return s;
 }
 
+// Lesson 1: 64 points three ways: independent random, jittered (one per cell of 8 x 8), and the
+// first 64 Halton points (bases 2 and 3, Eq. 1.19).
+double digitsMirrored(int i, int base) {  // Eq. 1.15 for the small indices drawn here
+    double value = 0, weight = 1.0 / base;
+    for (; i > 0; i /= base, weight /= base) value += (i % base) * weight;
+    return value;
+}
+
+Svg lowDiscrepancy() {
+    Svg s(1000, 420);
+    const double side = 280, top = 40;
+    const char* titles[] = {"random", "stratified (8 × 8, jittered)", "Halton (bases 2, 3)"};
+    Lcg rng;
+    for (int panel = 0; panel < 3; ++panel) {
+        const P corner{30 + panel * 330.0, top};
+        s.rect(corner, corner + P{side, side}, "#f7f9fc", kInk, 1, 2);
+        for (int k = 1; k < 8 && panel == 1; ++k) {
+            s.line(corner + P{side * k / 8, 0}, corner + P{side * k / 8, side}, "#dddddd", 1);
+            s.line(corner + P{0, side * k / 8}, corner + P{side, side * k / 8}, "#dddddd", 1);
+        }
+        for (int i = 0; i < 64; ++i) {
+            double x, y;
+            if (panel == 0) {
+                x = rng.next();
+                y = rng.next();
+            } else if (panel == 1) {
+                x = (i % 8 + rng.next()) / 8;
+                y = (i / 8 + rng.next()) / 8;
+            } else {
+                x = digitsMirrored(i, 2);
+                y = digitsMirrored(i, 3);
+            }
+            s.dot(corner + P{side * x, side * (1 - y)}, panel == 2 ? kCamera : kInk, 4.5);
+        }
+        s.text(corner + P{side / 2, side + 36}, titles[panel], "middle", 20);
+    }
+    s.text({500, 400}, "the same 64 samples: random points clump and leave holes; Halton fills every gap, with no grid",
+           "middle", 18, kGrey);
+    return s;
+}
+
 // Lesson 2: why Veach's plates need both techniques: the regions each one samples well.
 void platePanel(Svg& s, double x0, double lobeHalf, double lightR, const std::string& title,
                 const std::string& verdict) {
@@ -1094,6 +1135,7 @@ int main(int argc, char** argv) {
     std::vector<Figure> figures;
     figures.push_back({"00-rays/ray-triangle.svg", rayTriangle()});
     figures.push_back({"01-monte-carlo/cosine-warp.svg", cosineWarp()});
+    figures.push_back({"01-monte-carlo/low-discrepancy.svg", lowDiscrepancy()});
     figures.push_back({"02-direct-mis/mis-plates.svg", misPlates()});
     figures.push_back({"03-path-tracing/nee-path.svg", neePath()});
     figures.push_back({"04-measurement/pinhole-we.svg", pinholeWe()});

@@ -6,6 +6,7 @@
 // depends only on the generator's state: same seed, same estimate.
 #pragma once
 #include <functional>
+#include <vector>
 #include "rng.h"
 
 namespace ps {
@@ -16,6 +17,12 @@ struct Estimate {
     double value = 0.0;
     double variance = 0.0;
 };
+
+namespace mc {
+// The sample mean of y_1..y_n (n >= 2) and the estimated variance of that mean (Eq. 1.3): the
+// helper every estimator built on independent samples shares (estimators.cpp).
+Estimate meanOfSamples(const std::vector<double>& y);
+}  // namespace mc
 
 using Function1D = std::function<double(double)>;          // f(x)
 using Function2D = std::function<double(double, double)>;  // f(x, y)

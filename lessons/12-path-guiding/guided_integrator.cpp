@@ -35,6 +35,13 @@ struct SampleTree {
     std::vector<int> depth;     // the bounces of each entry's vertex
     std::vector<char> pending;  // sampled, not reached (yet)
     std::vector<int> onBranch;  // onBranch[b]: the entry of the current branch's vertex with b bounces
+    // Empty again, its storage kept (one tree per task, reused by every camera ray of the task).
+    void clear() {
+        vertices.clear();
+        depth.clear();
+        pending.clear();
+        onBranch.clear();
+    }
     int at(int bounces) const {
         return bounces >= 0 && bounces < int(onBranch.size()) ? onBranch[size_t(bounces)] : -1;
     }
@@ -77,12 +84,21 @@ struct GuidedSampler : DirectionSampler {
         }
         return field->cell(lastCell).side[lastSide];
     }
-    // alpha: the guide's share where the side has learnt something, else BSDF sampling alone.
-    static float alphaOf(const GuideSide& s) { return s.sampling.total() > 0.0f ? kGuideFraction : 0.0f; }
+    // alpha: the guide's share where the side's sampling tree was learnt from enough records
+    // (GuideField::canGuide), else BSDF sampling alone.
+    float alphaOf() const { return field->canGuide(lastCell, lastSide) ? kGuideFraction : 0.0f; }
+
+    // The tree the mixture samples: where alpha is 0, an empty one (a constant density without a
+    // descent: the mixture's density is then the BSDF's, to the last bit, and costs no more).
+    static const DirectionalTree& guideOf(const GuideSide& s, float alpha) {
+        static const DirectionalTree none;
+        return alpha > 0.0f ? s.sampling : none;
+    }
 
     bool sample(const Scene& scene, const WalkVertex& v, Rng& rng, BSDFSample& s) const override {
         const GuideSide& g = where(v);
-        if (!sampleGuided(scene.materials[size_t(v.sp.material)], v.sp.n, v.wo, g.sampling, alphaOf(g), rng, s))
+        const float alpha = alphaOf();
+        if (!sampleGuided(scene.materials[size_t(v.sp.material)], v.sp.n, v.wo, guideOf(g, alpha), alpha, rng, s))
             return false;
         GuideVertex x;
         x.from = tree->at(v.bounces);
@@ -98,7 +114,8 @@ struct GuidedSampler : DirectionSampler {
     }
     float pdf(const Scene& scene, const WalkVertex& v, const Vec3& wi) const override {
         const GuideSide& g = where(v);
-        return guidedPdf(scene.materials[size_t(v.sp.material)], v.sp.n, v.wo, g.sampling, alphaOf(g), wi);
+        const float alpha = alphaOf();
+        return guidedPdf(scene.materials[size_t(v.sp.material)], v.sp.n, v.wo, guideOf(g, alpha), alpha, wi);
     }
 };
 
@@ -119,10 +136,10 @@ int passOf(uint32_t iteration) {
 
 // One camera ray's estimate (lesson 3's MIS visitor on the guided walk) and its records; with
 // adrrs, the field's roulette and splitting as the walk's continuation rule.
-Color guidedLi(const Scene& scene, const GuideField& field, bool adrrs, const Ray& ray, Rng& rng,
+Color guidedLi(const Scene& scene, const GuideField& field, bool adrrs, const Ray& ray, Rng& rng, SampleTree& tree,
                std::vector<RadianceRecord>& records, DecisionCounts& counts) {
     const int maxDepth = scene.settings.maxDepth;
-    SampleTree tree;
+    tree.clear();
     GuidedSampler sampler;
     sampler.field = &field;
     sampler.tree = &tree;
@@ -174,10 +191,11 @@ void GuidedPathTracer::renderIteration(const Scene& scene, uint32_t iteration, u
     if (iteration > 0 && passOf(iteration - 1) != pass) field_.endPass(pass - 1);
     std::vector<std::vector<RadianceRecord>> lists(size_t(taskCount(out.width * out.height)));
     std::vector<DecisionCounts> counts(lists.size());
+    std::vector<SampleTree> trees(lists.size());
     renderPixelTasks(seed, iteration, out, stats, false, [&](int pixel, Rng& rng, Task& task) {
         const Vec2 raster = jitteredRaster(pixel, out.width, rng);
-        return guidedLi(scene, field_, adrrs_, cameraRay(scene.camera, raster, rng), rng, lists[task.index],
-                        counts[task.index]);
+        return guidedLi(scene, field_, adrrs_, cameraRay(scene.camera, raster, rng), rng, trees[task.index],
+                        lists[task.index], counts[task.index]);
     });
     for (size_t t = 0; t < lists.size(); ++t) {  // in task order
         field_.add(lists[t]);

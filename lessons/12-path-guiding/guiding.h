@@ -176,6 +176,11 @@ struct GuideSettings {
     // bytes: no cut and no refinement that would take it above (--guide-budget, in MB).
     size_t budget = size_t(64) << 20;
     float rho = kRefineFraction;
+    // A side guides only once its sampling tree was learnt from this many records: below it the
+    // guide is a fit to a few heavy-tailed radiance estimates and guiding by it loses to BSDF
+    // sampling (measured on the door: 2x pt's relMSE at 64 spp without the gate, pt's with it;
+    // lessons/12-path-guiding/diagnosis.md).
+    uint32_t minRecords = 5000;
     int maxDepth = kMaxQuadDepth;
 };
 
@@ -190,8 +195,12 @@ public:
     uint32_t cellOf(const Vec3& p) const { return tree_.cellOf(p); }
     const GuideCell& cell(uint32_t c) const { return cells_[c]; }
     size_t cells() const { return cells_.size(); }
-    // Whether a side of a cell has anything to guide with (its sampling tree's total > 0).
-    bool canGuide(uint32_t c, int side) const { return cells_[c].side[side].sampling.total() > 0.0f; }
+    // Whether a side of a cell guides: its sampling tree has energy and was learnt from at least
+    // settings.minRecords records (a tree fitted to fewer is mostly noise, README section 5).
+    bool canGuide(uint32_t c, int side) const {
+        const GuideSide& s = cells_[c].side[side];
+        return s.learnt >= settings_.minRecords && s.sampling.total() > 0.0f;
+    }
 
     // Adds one pass's records, in the order given (the same for any number of threads).
     void add(const std::vector<RadianceRecord>& records);

@@ -28,6 +28,17 @@ std::vector<Photon> tracePath(const ps::Scene& scene, ps::MapKind kind, uint32_t
     return out;
 }
 
+// Vertex j of photon path i: 1 if its surface is specular, 2 if not (the test's own look, from a
+// visitor that only records).
+int endKind(const ps::Scene& scene, ps::MapKind kind, uint32_t i, int j) {
+    int k = 2;
+    tracePath(scene, kind, i, [&](const ps::WalkVertex& v, Photon*) {
+        if (v.bounces == j) k = scene.materials[size_t(v.sp.material)].isDelta() ? 1 : 2;
+        return true;
+    });
+    return k;
+}
+
 }  // namespace
 
 TEST_CASE("photons: the photon visitor sees every vertex, sorts the photons and ends the walk [1 pt]") {
@@ -38,6 +49,8 @@ TEST_CASE("photons: the photon visitor sees every vertex, sorts the photons and 
     // ends the walk there: nothing stored, no vertex after it.
     const ps::Scene scene = spheres();
     int stored = 0, ended = 0;
+    // Where the walks were ended: y_0, a specular vertex, a surface without a photon, one with.
+    int endedAt[4] = {0, 0, 0, 0};
     for (ps::MapKind kind : {ps::MapKind::Global, ps::MapKind::Caustic}) {
         const char* name = kind == ps::MapKind::Global ? "global" : "caustic";
         for (uint32_t i = 0; i < 300; ++i) {
@@ -72,6 +85,25 @@ TEST_CASE("photons: the photon visitor sees every vertex, sorts the photons and 
                                    << int(sorted[k].population) << ", the visitor set " << photonBounces[k]);
             }
             stored += int(plain.size());
+            // A visitor that ends the walk at vertex j, whatever is there (y_0, a mirror or glass, a
+            // surface where this map stores nothing, one where it stores a photon): no vertex after
+            // j, and exactly the photons stored before j.
+            const size_t vertices = calls.size();
+            for (size_t j = 0; j < vertices; ++j) {
+                int seen = 0;
+                const std::vector<Photon> cut = tracePath(scene, kind, i, [&](const ps::WalkVertex& v, Photon*) {
+                    ++seen;
+                    return v.bounces != int(j);
+                });
+                size_t before = 0;
+                while (before < photonBounces.size() && photonBounces[before] < int(j)) ++before;
+                endedAt[j == 0 ? 0 : calls[j].photon ? 3 : endKind(scene, kind, i, int(j))]++;
+                CHECK_MESSAGE((seen == int(j) + 1 && cut.size() == before),
+                              name << " path " << i << ": a visitor that ends the walk at vertex " << j << " of "
+                                   << vertices << ": expected " << j + 1 << " vertices seen and the " << before
+                                   << " photons stored before it, got " << seen << " vertices and " << cut.size()
+                                   << " photons");
+            }
             if (plain.empty()) continue;
             calls.clear();
             const std::vector<Photon> refused = tracePath(scene, kind, i, [&](const ps::WalkVertex& v, Photon* ph) {
@@ -90,6 +122,10 @@ TEST_CASE("photons: the photon visitor sees every vertex, sorts the photons and 
     }
     REQUIRE_MESSAGE((stored > 100 && ended > 20),
                     "the test's paths store " << stored << " photons (" << ended << " paths with one)");
+    CHECK_MESSAGE((endedAt[0] > 0 && endedAt[1] > 0 && endedAt[2] > 0 && endedAt[3] > 0),
+                  "the test ended walks at y_0 " << endedAt[0] << ", at specular vertices " << endedAt[1]
+                                                 << ", at surfaces without a photon " << endedAt[2] << ", with one "
+                                                 << endedAt[3] << " times (it needs each)");
 }
 
 namespace {
@@ -129,9 +165,14 @@ TEST_CASE("pm: the gather visitor decides each term of the camera side and where
     maps.caustic = ps::tracePhotonMap(scene, ps::MapKind::Caustic, 8000, 8, ps::testseed::seed(873), 0, stats);
     const ps::PmOptions pm = ps::pmOptions(scene);
     const int w = 16, h = 16;
+    // One ray per pixel, and one more (pixel w * h) through the lamp's centre: at 16 x 16 the lamp is
+    // a sliver of a pixel row, which no jittered ray hit at PATHSPACE_TEST_SEED 16, so the emission
+    // term went unchecked there.
+    ps::Vec2 lampRaster;
+    REQUIRE(scene.camera.rasterPosition(Vec3(278.0f, 548.7f, 279.5f), lampRaster));
     const auto cameraRay = [&](int pixel, ps::Rng& rng) {
         rng = ps::taskRng(ps::testseed::seed(874), 0, uint32_t(pixel));
-        return ps::cameraRay(scene.camera, ps::jitteredRaster(pixel, w, rng), rng);
+        return ps::cameraRay(scene.camera, pixel == w * h ? lampRaster : ps::jitteredRaster(pixel, w, rng), rng);
     };
     const auto radiance = [&](int pixel, const ps::PmOptions& opt) {
         ps::Rng rng;
@@ -161,7 +202,7 @@ TEST_CASE("pm: the gather visitor decides each term of the camera side and where
         return ps::radianceEstimate(maps.global, y, m, wo, pm.globalEstimate);
     };
     int failures = 0, specularPixels = 0;
-    for (int pixel = 0; pixel < w * h; ++pixel) {
+    for (int pixel = 0; pixel <= w * h; ++pixel) {
         const Color full = radiance(pixel, pm);
         Color sum(0.0f), part[4];
         for (int k = 0; k < 4; ++k) {
@@ -205,7 +246,8 @@ TEST_CASE("pm: the gather visitor decides each term of the camera side and where
                       "pixel " << pixel << ": pm's own global estimate through the hook gives " << str(seen) << ", pm "
                                << str(full));
     }
-    CHECK_MESSAGE(failures == 0, failures << " of " << w * h << " pixels: the terms kept one at a time do not add up");
+    CHECK_MESSAGE(failures == 0,
+                  failures << " of " << w * h + 1 << " camera rays: the terms kept one at a time do not add up");
     CHECK_MESSAGE(specularPixels > 5, "the test needs pixels that see a sphere (" << specularPixels << ")");
     CHECK_MESSAGE(badGlobal == 0, badGlobal << " global estimates asked at y with no bounce after x");
     for (int k = 0; k < 4; ++k)

@@ -24,6 +24,13 @@ TEST_CASE(
                                              << (uSign < 0.5f ? "+" : "-") << " " << num(size)
                                              << ", wrapped into [0, 1): " << num(w) << ", got " << num(got));
             }
+    // A step down from just below s2 ends 1.5e-9 below 0: wrapped in float, 1 - 1.5e-9 rounds to
+    // exactly 1, which must become 0 (scripts/coverage.sh found no other test taking that way).
+    const float below = std::nextafter(ps::kSmallStepMax, 0.0f), got = ps::smallStep(below, 0.0f, 0.7f);
+    CHECK_MESSAGE((got >= 0.0f && got < 1.0f && std::min(got, 1.0f - got) <= 1e-7f),
+                  "smallStep(v = the float below s2, uSize 0, uSign 0.7): expected just below 0 wrapped into [0, 1) "
+                  "(a float that rounds to 1 is 0), got "
+                      << num(got));
 }
 
 namespace {

@@ -2,7 +2,7 @@
 // diffuse floor under one small square lamp and nothing else (no walls, a black sky): all the
 // radiance arriving at the floor comes from the lamp, so after a few passes the floor's guide
 // must put most of its mass into the lamp's solid angle as seen from the floor the camera sees
-// (the test's own ray casts from 64 points of that footprint), where BSDF sampling puts 2 %; and
+// (the test's own ray casts from 64 points of that footprint), where BSDF sampling puts 5.6 %; and
 // the field's irradiance of that side (Eq. 12.14) must be the lamp's irradiance on those points
 // (the test's own quadrature over the lamp), within the noise of one pass.
 #include "lesson12.h"
@@ -91,10 +91,12 @@ TEST_CASE(
             }
         }
     const double share = inside / all, bsdfShare = bsdf * 4.0 * kPiD / (double(G) * G);
-    // Measured over seeds 0-19: 0.86-0.93 (leaves that straddle the cone's edge spread some mass
-    // outside it); BSDF sampling: 0.016.
-    CHECK_MESSAGE(share >= 0.75,
-                  "pt-guided after 31 spp on a floor under one small lamp: expected at least 75 % of the floor's guide "
+    // Measured over PATHSPACE_TEST_SEED 0-79 (with GuideSettings::minRecords' gate): mean 0.88, sd
+    // 0.066, smallest 0.67 (leaves that straddle the cone's edge spread some mass outside it; the
+    // distribution has a long lower tail: 0.75 failed at 4 of 80 seeds); BSDF sampling: 0.056.
+    // Bound 0.5: 5.8 sd below the mean, nine times BSDF sampling's share.
+    CHECK_MESSAGE(share >= 0.5,
+                  "pt-guided after 31 spp on a floor under one small lamp: expected at least 50 % of the floor's guide "
                   "mass within the lamp's solid angle seen from the camera's footprint (BSDF sampling puts "
                       << num(100.0 * bsdfShare, 3) << " % there), got " << num(100.0 * share, 3) << " % (of "
                       << floor.sampling.nodes.size() << " nodes, " << floor.learnt << " records)");

@@ -134,4 +134,17 @@ TEST_CASE("the weights of every connection and every merge of a path sum to 1, v
             checkScene(s, h, true, ps::testseed::seed(13201));
             checkScene(s, h, false, ps::testseed::seed(13202));
         }
+    // A merge whose own density and every other technique's are 0 (a light side density of 0, no
+    // connections, M = 0): vcm.h's contract gives weight 0, and 0 / 0 would be NaN (scripts/coverage.sh
+    // found no scene path that makes the denominator 0; this direct call takes that way).
+    for (const ps::Heuristic h : {ps::Heuristic::Balance, ps::Heuristic::Power}) {
+        ps::VcmMis mis;
+        mis.heuristic = h;
+        mis.eta = 2.0;
+        mis.connections = false;
+        const float w = ps::misWeightMerge(1.0f, false, ps::ReversePdfs{}, 0.0, mis);
+        CHECK_MESSAGE(w == 0.0f, "misWeightMerge with every density 0 (light side density 0, M = 0, no connections, "
+                                     << nameOf(h)
+                                     << " heuristic): expected 0 (vcm.h: 0 where the denominator is 0), got " << w);
+    }
 }
