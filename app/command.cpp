@@ -228,6 +228,15 @@ void printLeftOut(const std::string& algo, const Integrator& integrator, const S
         std::cerr << "pathspace: " << algo << " leaves out " << line << "\n";
 }
 
+namespace {
+// A render parameter's value names as the command line writes them: "N M" in a scene file is N,M.
+std::string commandLineValueNames(const RenderParameter& p) {
+    std::string names = p.valueNames;
+    std::replace(names.begin(), names.end(), ' ', ',');
+    return names;
+}
+}  // namespace
+
 void listAlgorithms(std::ostream& os) {
     const std::vector<IntegratorInfo> list = integratorList();
     size_t width = 0;
@@ -237,11 +246,21 @@ void listAlgorithms(std::ostream& os) {
         os << "  " << i.name << std::string(width + 2 - i.name.size(), ' ') << i.description
            << (takesAlgorithmOption(i.name) ? " *" : "") << "\n";
     const std::vector<std::string> options = algorithmOptionNames();
-    if (options.empty()) return;
-    std::string names;
-    for (const std::string& o : options) names += (names.empty() ? "--" : ", --") + o;
-    os << "  (* also takes " << names << ")\n\nalgorithm options (render, converge, pyramid):\n";
-    for (const auto& e : Registry<AlgorithmOption>::sorted()) os << e.value.help;
+    if (!options.empty()) {
+        std::string names;
+        for (const std::string& o : options) names += (names.empty() ? "--" : ", --") + o;
+        os << "  (* also takes " << names << ")\n\nalgorithm options (render, converge, pyramid):\n";
+        for (const auto& e : Registry<AlgorithmOption>::sorted()) os << e.value.help;
+    }
+    const auto parameters = Registry<RenderParameter>::sorted();
+    if (parameters.empty()) return;
+    os << "\nrender parameters (render, converge, pyramid): the scene's 'render NAME V1 .. Vn' sets them,\n"
+          "--NAME V1,..,Vn overrides it (one value stands for all n; 'x' separates too: 16x8):\n";
+    for (const auto& e : parameters) {
+        std::string left = "  --" + e.name + " " + commandLineValueNames(e.value);
+        left.resize(std::max<size_t>(left.size() + 2, 21), ' ');
+        os << left << e.value.help << "\n";
+    }
 }
 
 bool parseAlgorithmOption(const std::vector<std::string>& args, size_t& i, AlgorithmOptions& options) {
@@ -269,17 +288,40 @@ std::string describeOptions(const AlgorithmOptions& options) {
     return s.empty() ? s : " (" + s + ")";
 }
 
-Color parseAmbient(const std::string& opt, const std::string& s) {
-    const std::vector<std::string> parts = splitList(s);
-    if (parts.size() != 1 && parts.size() != 3)
-        throw UsageError("option " + opt + " needs one number or three (R,G,B), got '" + s + "'");
-    float v[3];
-    for (size_t i = 0; i < 3; ++i) {
-        v[i] = parseNumber<float>(opt, parts[parts.size() == 1 ? 0 : i]);
-        if (!(v[i] >= 0.0f && v[i] <= 1e30f))
-            throw UsageError("option " + opt + " must be finite and not negative, got '" + s + "'");
+bool parseRenderParameterOption(const std::vector<std::string>& args, size_t& i, RenderParameterValues& values) {
+    const std::string& a = args[i];
+    if (a.size() < 3 || a.compare(0, 2, "--") != 0) return false;
+    const std::string name = a.substr(2);
+    const RenderParameter* p = Registry<RenderParameter>::find(name);
+    if (!p) return false;
+    const std::string text = optionValue(args, i);
+    const std::string names = commandLineValueNames(*p);
+    std::vector<float> v;
+    std::string part;
+    for (size_t k = 0; k <= text.size(); ++k) {
+        if (k < text.size() && text[k] != ',' && text[k] != 'x') {
+            part += text[k];
+            continue;
+        }
+        float x = 0.0f;
+        if (parseWhole(part, x) != std::errc())
+            throw UsageError("option " + a + " needs " + (p->count > 1 ? "numbers (" + names + ")" : "a number") +
+                             ", got '" + text + "'");
+        v.push_back(x);
+        part.clear();
     }
-    return Color(v[0], v[1], v[2]);
+    if (v.size() == 1) v.resize(size_t(p->count), v[0]);  // one value for all of them
+    std::string problem = renderParameterProblem(*p, v);
+    if (v.size() != size_t(p->count))
+        problem = "needs " + std::string(p->count > 1 ? "1 or " + std::to_string(p->count) + " numbers" : "1 number") +
+                  " (" + names + ")";
+    if (!problem.empty()) throw UsageError("option " + a + " " + problem + ", got '" + text + "'");
+    values[name] = v;
+    return true;
+}
+
+void setRenderParameters(const RenderParameterValues& values, RenderSettings& settings) {
+    for (const auto& [name, v] : values) settings.parameters[name] = v;
 }
 
 bool stderrIsTerminal() {

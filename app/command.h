@@ -5,6 +5,7 @@
 // from the same entries, so a new command is documented as soon as it exists. A command parses
 // its arguments in one function (into a struct of its options) and runs in another.
 #pragma once
+#include <map>
 #include <memory>
 #include <ostream>
 #include <sstream>
@@ -155,14 +156,20 @@ bool parseAlgorithmOption(const std::vector<std::string>& args, size_t& i, Algor
 std::unique_ptr<Integrator> makeAlgorithm(const std::string& algo, const AlgorithmOptions& options);
 // " (--NAME 'VALUE', ...)" for messages, "" without options.
 std::string describeOptions(const AlgorithmOptions& options);
-// --ambient A or R,G,B: Whitted's ambient radiance (lesson 11), each value finite and >= 0.
-Color parseAmbient(const std::string& opt, const std::string& s);
+// A render parameter (framework/scene.h: --NAME V1,..,Vn, registered by a lesson, e.g. --elements)
+// at args[i]: its values, separated by commas or 'x' ("8x4"), one value standing for all n of
+// them; checked now (renderParameterProblem: a bad one is a UsageError naming the option); sets
+// values[NAME], i moved onto the value, and returns true; false if args[i] names no render parameter.
+using RenderParameterValues = std::map<std::string, std::vector<float>>;
+bool parseRenderParameterOption(const std::vector<std::string>& args, size_t& i, RenderParameterValues& values);
+// The command line's render parameters over the scene's (RenderSettings::parameters).
+void setRenderParameters(const RenderParameterValues& values, RenderSettings& settings);
 
 // One line "pathspace: ALGO leaves out ..." on stderr per piece of work the integrator leaves
 // out on this scene (Integrator::leftOut).
 void printLeftOut(const std::string& algo, const Integrator& integrator, const Scene& scene);
 // "algorithms:" and one line per registered integrator: name and description (marked * where it
-// takes an algorithm option), then the algorithm options' help.
+// takes an algorithm option), then the algorithm options' help and the render parameters'.
 void listAlgorithms(std::ostream& os);
 // Whether standard error is a terminal (the default of --progress).
 bool stderrIsTerminal();

@@ -108,7 +108,7 @@ public:
     float imagePlaneArea() const { return 4.0f * tanHalfX_ * tanHalfY_; }
 
     // ---- the camera point z of a path: the pinhole, or a point of the camera model ------------
-    // Lessons 5-7 ask these, so that one piece of code serves every camera; for a pinhole each is
+    // Algorithms that connect to the camera ask these, so one piece of code serves every camera; for a pinhole each is
     // exactly the pinhole's function above (z is position(), u is not used), else the model's.
 
     // The camera point for u, and its density: 1 for the pinhole (a delta position, chosen with

@@ -104,8 +104,8 @@ public:
     TechniqueRenderer techniques;
 
     // The render loop's time budget (--time). render() sets the deadline before each iteration,
-    // or none without a budget. An integrator whose one iteration can outlast the budget (lesson
-    // 11's radiosity: hundreds of shooting steps, each a row of up to a million form factors)
+    // or none without a budget. An integrator whose one iteration can outlast the budget (an
+    // iterative solver whose iteration is hundreds of steps, each of up to a million numbers)
     // asks timeIsUp() between pieces of its work and ends the iteration early, with an image
     // that is a valid estimate. Without a deadline every iteration is whole, and a function of
     // (scene, iteration, seed) as renderIteration says; with one, a cut iteration depends on

@@ -1,6 +1,7 @@
 #include "scene.h"
 #include "errors.h"
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <optional>
 #include <cstdio>
@@ -324,7 +325,22 @@ SurfacePoint Scene::surfacePoint(uint32_t prim, const Vec3& p) const {
 
 float renderParameter(const RenderSettings& settings, const std::string& name, float fallback) {
     const auto it = settings.parameters.find(name);
+    return it == settings.parameters.end() || it->second.empty() ? fallback : it->second[0];
+}
+
+std::vector<float> renderParameterValues(const RenderSettings& settings, const std::string& name,
+                                         const std::vector<float>& fallback) {
+    const auto it = settings.parameters.find(name);
     return it == settings.parameters.end() ? fallback : it->second;
+}
+
+std::string renderParameterProblem(const RenderParameter& p, const std::vector<float>& values) {
+    if (values.size() != size_t(p.count))
+        return "needs " + std::to_string(p.count) + (p.count == 1 ? " number" : " numbers") + " (" + p.valueNames +
+               "), got " + std::to_string(values.size());
+    for (float v : values)
+        if (!std::isfinite(v)) return "needs finite numbers";
+    return p.check ? p.check(values) : std::string();
 }
 
 bool Scene::closestHit(Ray& ray, SurfacePoint& sp) const {

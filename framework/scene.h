@@ -21,18 +21,24 @@ struct Primitive {
     int light = -1;      // into Scene::lights if the primitive emits, else -1
 };
 
-// The most elements radiosity cuts a quad's edge into (RenderSettings::elements).
-constexpr int kMaxElements = 256;
-
-// A number the scene's `render` statement may set for some lesson's algorithm (`render NAME
-// VALUE`), registered by that lesson (Registry<RenderParameter>, keyed by NAME), as camera models
-// are. The loader refuses an unregistered name and a value `check` refuses, naming the line, and
-// keeps the value in RenderSettings::parameters; the algorithm reads it with renderParameter.
+// A setting some lesson's algorithm takes, registered by that lesson (Registry<RenderParameter>,
+// keyed by NAME), as camera models are: one or more numbers, `render NAME V1 .. Vn` in a scene file
+// and `--NAME V1,..,Vn` on the command line (render, converge, pyramid; there one value may stand
+// for all n). The loader and the command line refuse an unregistered name, a wrong count of
+// values, a value that is not a finite number and values `check` refuses, naming the line or the
+// option, before any work; the values go to RenderSettings::parameters, where the algorithm reads
+// them (renderParameter, renderParameterValues).
 struct RenderParameter {
-    std::string help;  // one line: what it sets, for the loader's list of allowed options
-    // Empty if the value is allowed, else what is wrong with it ("must be a positive number").
-    std::string (*check)(float value) = nullptr;
+    std::string help;              // one line: what it sets and its default, for the usage and messages
+    std::string valueNames = "V";  // one word per value, for the usage: "N M", "R G B"
+    int count = 1;                 // how many numbers it takes
+    // Empty if the values (count of them, each finite) are allowed, else what is wrong with them
+    // ("must be a positive number"); nullptr: any finite numbers.
+    std::string (*check)(const std::vector<float>& values) = nullptr;
 };
+// What is wrong with `values` for parameter p, empty if nothing: their count (p.count), a value
+// that is not finite, then p.check. The loader and the command line both ask it.
+std::string renderParameterProblem(const RenderParameter& p, const std::vector<float>& values);
 
 // The largest image a scene may ask for: each side at most kMaxResolution, and at most
 // kMaxPixels pixels in all. A render keeps state per pixel, measured with /usr/bin/time on the
@@ -49,24 +55,19 @@ struct RenderSettings {
     int maxDepth = 8;  // maximum number of bounces; 0 = only emission seen directly
     std::string algo = "eyelight";
     int algoLine = 0;  // the scene file line that set algo (for messages), 0 if none
-    // For radiosity (no other integrator reads these): each quad is cut into
-    // elements[0] x elements[1] elements (along its edges 1-2 and 1-4), and every iteration
-    // makes `shots` shooting steps.
-    int elements[2] = {8, 8};
-    int shots = 256;
-    // The render parameters the scene sets (`render NAME VALUE` for a registered NAME; see
-    // RenderParameter below), by name.
-    std::map<std::string, float> parameters;
+    // The render parameters set (RenderParameter above: the scene's `render NAME V..`, then the
+    // command line's `--NAME V,..`), by name, each with its parameter's count of values.
+    std::map<std::string, std::vector<float>> parameters;
     // Integrators leave out work the capabilities show cannot contribute (Integrator::leftOut);
     // false (`--no-prune`) makes them do all of it, to check that pruning changes nothing.
     bool prune = true;
-    // Whitted's ambient radiance (`whitted` only): light no path carries, added at every
-    // non-specular surface it shades as ambient times the albedo. 0: none.
-    Color ambient = Color(0.0f);
 };
 
-// The value the scene sets for render parameter `name`, or `fallback` if it sets none.
+// The (first) value set for render parameter `name`, or `fallback` if none is set.
 float renderParameter(const RenderSettings& settings, const std::string& name, float fallback);
+// The values set for render parameter `name`, or `fallback` if none are set.
+std::vector<float> renderParameterValues(const RenderSettings& settings, const std::string& name,
+                                         const std::vector<float>& fallback);
 
 // What a scene has, recorded at load time so integrators can leave out what it does not need.
 struct Capabilities {
@@ -86,8 +87,8 @@ struct Capabilities {
 
 // A quad of the scene file as it was written: its corners (counter-clockwise seen from the side
 // its normal points to) and its two triangles, prims[prim] = corners (1, 2, 3) and
-// prims[prim + 1] = (1, 3, 4). Nothing renders from it (the triangles are the geometry); radiosity
-// makes its patches from the quads.
+// prims[prim + 1] = (1, 3, 4). Nothing renders from it (the triangles are the geometry); an
+// algorithm that works on the surfaces as written (patches, say) reads the quads.
 struct Quad {
     Vec3 corners[4];
     uint32_t prim = 0;  // the first of its two primitives

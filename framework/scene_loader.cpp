@@ -617,29 +617,24 @@ private:
     }
 
     void render(Statement& st) {
-        std::map<std::string, int> arity{{"spp", 1},     {"maxdepth", 1}, {"algo", 1},
-                                         {"ambient", 3}, {"elements", 2}, {"shots", 1}};
-        for (const auto& p : Registry<RenderParameter>::sorted()) arity[p.name] = 1;
+        const std::map<std::string, int> own{{"spp", 1}, {"maxdepth", 1}, {"algo", 1}};  // never a lesson's
+        std::map<std::string, int> arity = own;
+        for (const auto& p : Registry<RenderParameter>::sorted())
+            if (!own.count(p.name)) arity[p.name] = p.value.count;
         st.readOptions(arity);
         RenderSettings& s = scene_.settings;
-        if (st.has("ambient")) s.ambient = checkColor(st, "ambient", st.optVec3("ambient", Color(0.0f)), false);
-        if (st.has("elements")) {
-            const auto& e = st.options.at("elements");
-            for (int i = 0; i < 2; ++i) {
-                s.elements[i] = Statement::toInt(st, e[size_t(i)], "'elements'");
-                if (s.elements[i] < 1 || s.elements[i] > kMaxElements)
-                    st.fail("'elements' must be between 1 and " + std::to_string(kMaxElements) +
-                            " along each edge of a quad, got " + e[0] + " " + e[1]);
-            }
-        }
-        s.shots = st.optInt("shots", s.shots);
-        if (s.shots < 1) st.fail("'shots' must be at least 1");
         for (const auto& p : Registry<RenderParameter>::sorted()) {
-            if (!st.has(p.name)) continue;
-            const float v = st.optNumber(p.name, 0.0f);
-            const std::string problem = p.value.check ? p.value.check(v) : std::string();
-            if (!problem.empty()) st.fail("'" + p.name + "' " + problem + ", got " + st.options.at(p.name)[0]);
-            s.parameters[p.name] = v;
+            if (own.count(p.name) || !st.has(p.name)) continue;
+            std::vector<float> values;  // each a finite number (toFloat), their count from arity
+            for (const std::string& v : st.options.at(p.name))
+                values.push_back(Statement::toFloat(st, v, "'" + p.name + "'"));
+            const std::string problem = renderParameterProblem(p.value, values);
+            if (!problem.empty()) {
+                std::string got;
+                for (const std::string& v : st.options.at(p.name)) got += (got.empty() ? "" : " ") + v;
+                st.fail("'" + p.name + "' " + problem + ", got " + got);
+            }
+            s.parameters[p.name] = values;
         }
         s.spp = st.optInt("spp", s.spp);
         s.maxDepth = st.optInt("maxdepth", s.maxDepth);

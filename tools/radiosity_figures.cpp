@@ -84,7 +84,9 @@ void write(const Settings& s, const std::string& name, const Image& img) {
 // The image of a radiosity integrator's current solution (one iteration without shots).
 Image picture(const Scene& scene, RadiosityIntegrator& rad) {
     Scene still = scene;
-    still.settings.shots = 0;
+    RadiositySettings none = radiositySettings(still.settings);
+    none.shots = 0;
+    setRadiositySettings(still.settings, none);
     Image img(scene.camera.width(), scene.camera.height());
     SampleStats stats;
     rad.renderIteration(still, 0, 1, img, stats);
@@ -205,7 +207,9 @@ int figures(const Settings& s) {
     // The shots: 1, 10, 100, 1000 and converged, flat and with the ambient term.
     {
         Scene fine = scene;
-        fine.settings.elements[0] = fine.settings.elements[1] = s.shotElements;
+        RadiositySettings elements;
+        elements.nu = elements.nv = s.shotElements;
+        setRadiositySettings(fine.settings, elements);
         RadiosityIntegrator flat(false), ambient(true);
         checkRadiosityScene(fine);
         flat.prepare(fine);
@@ -238,7 +242,9 @@ int figures(const Settings& s) {
     std::vector<Image> images;
     for (int n = 1; n <= s.maxElements; n *= 2) {
         Scene sc = scene;
-        sc.settings.elements[0] = sc.settings.elements[1] = n;
+        RadiositySettings elements;
+        elements.nu = elements.nv = n;
+        setRadiositySettings(sc.settings, elements);
         RadiosityIntegrator rad;
         const auto t0 = std::chrono::steady_clock::now();
         rad.prepare(sc);

@@ -41,6 +41,7 @@ const char* const kUsage = R"(converge options:
                      the end of the budget, left to right in --algos order, then the reference,
                      each under its label: algorithm and spp)
   --threads T, --maxdepth D, --no-prune, --progress/--no-progress   as for render
+  --NAME V,..        a render parameter (below) as for render, for every algorithm and --ref-algo
   an algorithm option (below, e.g. --paths EXPR) applies to every algorithm and --ref-algo (a
                      given --reference must be rendered with it too)
 A pixel in which a point light is seen directly is left out of every algorithm's error (a path
@@ -55,7 +56,8 @@ struct ConvergeArgs {
     double refSeconds = 0.0;
     int maxDepth = -1;
     bool prune = true;
-    std::vector<std::string> files;  // what it writes into outDir, checked (command.h)
+    RenderParameterValues parameters;  // --elements 16x8 and the like (framework/scene.h)
+    std::vector<std::string> files;    // what it writes into outDir, checked (command.h)
 };
 
 ConvergeArgs parseConverge(const std::vector<std::string>& args) {
@@ -82,6 +84,7 @@ ConvergeArgs parseConverge(const std::vector<std::string>& args) {
         else if (a == "--no-progress") opt.progress = false;
         else if (a == "--no-prune") c.prune = false;
         else if (parseAlgorithmOption(args, i, opt.options)) continue;
+        else if (parseRenderParameterOption(args, i, c.parameters)) continue;
         else if (!a.empty() && a[0] == '-') throw UsageError("unknown option '" + a + "'");
         else if (c.scenePath.empty()) c.scenePath = a;
         else throw UsageError("more than one scene given ('" + c.scenePath + "' and '" + a + "')");
@@ -122,6 +125,7 @@ int runConverge(ConvergeArgs c) {
         checkNotInputs(outputs, sceneInputs(scene));  // its meshes and material libraries
     }
     if (c.maxDepth >= 0) scene.settings.maxDepth = c.maxDepth;
+    setRenderParameters(c.parameters, scene.settings);
     if (!regionNames.empty()) {
         try {
             opt.regions = materialRegions(scene, regionNames);

@@ -23,7 +23,8 @@ const char* const kUsage = R"(pyramid options:
                      (t = k+1-s) from left to right
   --spp N            samples per pixel (default: the scene's)
   --seed S, --threads T, --no-prune   as for render; an algorithm option (e.g. --paths EXPR: each
-                     technique's image holds only the paths EXPR matches) as for render
+                     technique's image holds only the paths EXPR matches) and a render
+                     parameter (--NAME V,..) as for render
   --exposure E       PNG exposure in stops, -100 to 100 (default 0)
   --out PREFIX       writes PREFIX-unweighted.png (each technique alone, its unweighted
                      estimate), PREFIX-weighted.png (the MIS-weighted ones: a row adds up
@@ -43,6 +44,7 @@ struct PyramidArgs {
     float exposure = 0.0f;
     bool prune = true;
     AlgorithmOptions options;
+    RenderParameterValues parameters;  // --NAME V,.. (framework/scene.h)
     std::unique_ptr<Integrator> integrator;
     std::vector<TechniqueRow> layout;
     std::vector<OutputFile> outputs;  // every file it writes, checked (command.h)
@@ -88,6 +90,7 @@ PyramidArgs parsePyramid(const std::vector<std::string>& args) {
         else if (a == "--out") p.out = value();
         else if (a == "--no-prune") p.prune = false;
         else if (parseAlgorithmOption(args, i, p.options)) continue;
+        else if (parseRenderParameterOption(args, i, p.parameters)) continue;
         else if (!a.empty() && a[0] == '-') throw UsageError("unknown option '" + a + "'");
         else if (p.scenePath.empty()) p.scenePath = a;
         else throw UsageError("'pyramid' takes one scene file");
@@ -119,6 +122,7 @@ int runPyramid(PyramidArgs p) {
     Scene scene = loadScene(p.scenePath);
     checkNotInputs(p.outputs, sceneInputs(scene));  // its meshes and material libraries
     scene.settings.prune = p.prune;
+    setRenderParameters(p.parameters, scene.settings);
     if (p.images.spp == 0) p.images.spp = scene.settings.spp;
     checkScene(scene, *p.integrator);
     checkPyramidMemory(p, scene);

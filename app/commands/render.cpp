@@ -32,28 +32,23 @@ const char* const kUsage = R"(render options:
   --variance FILE    also write the per-pixel variance of the mean (FILE ends in .pfm)
   --reference REF    a reference image (.pfm or .hdr): log error against run time
   --csv FILE         where that log goes (default: the output's name + .csv)
-  --elements N[xM]   radiosity only: cut every quad into N x M elements (default: the scene's
-                     'render elements', else 8x8; N, M from 1 to 256)
-  --shots S          radiosity only: shooting steps per iteration (default: the scene's
-                     'render shots', else 256)
   --no-prune         do not leave out work the scene cannot use (integrators print what
                      they leave out; pruning is exact, this switch is there to check it)
   --progress / --no-progress   progress bar on stderr (default: when stderr is a terminal)
-  --ambient A        whitted's ambient radiance, one number or R,G,B (default: the scene's
-                     'render ambient', else 0)
+  --NAME V,..        a render parameter some algorithms read (listed below), over the scene's
 )";
 
 // What the command line asks for (parseRender), before anything is loaded.
 struct RenderArgs {
     std::string scenePath, algo, out, reference, csvPath, variancePath;
-    int spp = 0, threads = 0, maxDepth = -1, shots = 0, elements[2] = {0, 0};
+    int spp = 0, threads = 0, maxDepth = -1;
     double seconds = 0.0;
     TimeClock clock = TimeClock::Wall;
     uint64_t seed = 0;
     bool progress = false, prune = true;
-    AlgorithmOptions options;  // --paths EXPR and the like (integrator.h)
-    std::optional<Color> ambient;
-    std::vector<OutputFile> outputs;  // every file it writes, checked (command.h)
+    AlgorithmOptions options;          // --paths EXPR and the like (integrator.h)
+    RenderParameterValues parameters;  // --elements 16x8 and the like (framework/scene.h)
+    std::vector<OutputFile> outputs;   // every file it writes, checked (command.h)
 };
 
 RenderArgs parseRender(const std::vector<std::string>& args) {
@@ -76,15 +71,8 @@ RenderArgs parseRender(const std::vector<std::string>& args) {
         else if (a == "--progress") r.progress = true;
         else if (a == "--no-progress") r.progress = false;
         else if (a == "--no-prune") r.prune = false;
-        else if (a == "--ambient") r.ambient = parseAmbient(a, value());
-        else if (a == "--shots") r.shots = parseAtLeast<int>(a, value(), 1);
-        else if (a == "--elements") {
-            const std::string v = value();
-            const size_t x = v.find('x');
-            r.elements[0] = parseWithin<int>(a, v.substr(0, x), 1, kMaxElements);
-            r.elements[1] =
-                x == std::string::npos ? r.elements[0] : parseWithin<int>(a, v.substr(x + 1), 1, kMaxElements);
-        } else if (parseAlgorithmOption(args, i, r.options)) continue;
+        else if (parseAlgorithmOption(args, i, r.options)) continue;
+        else if (parseRenderParameterOption(args, i, r.parameters)) continue;
         else if (!a.empty() && a[0] == '-') throw UsageError("unknown option '" + a + "'");
         else if (r.scenePath.empty()) r.scenePath = a;
         else throw UsageError("more than one scene given ('" + r.scenePath + "' and '" + a + "')");
@@ -113,9 +101,7 @@ int runRender(RenderArgs r) {
     checkNotInputs(r.outputs, sceneInputs(scene));  // its meshes and material libraries
     if (r.maxDepth >= 0) scene.settings.maxDepth = r.maxDepth;
     scene.settings.prune = r.prune;
-    if (r.ambient) scene.settings.ambient = *r.ambient;
-    if (r.shots > 0) scene.settings.shots = r.shots;
-    if (r.elements[0] > 0) std::copy(r.elements, r.elements + 2, scene.settings.elements);
+    setRenderParameters(r.parameters, scene.settings);
     std::unique_ptr<Integrator> integrator;
     if (r.algo.empty()) {
         r.algo = scene.settings.algo;

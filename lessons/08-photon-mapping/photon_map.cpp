@@ -59,7 +59,7 @@ int nearestPhotons(const PhotonMap& map, const Vec3& x, int k, float maxD2, std:
 
 int photonsInRadius(const PhotonMap& map, const Vec3& x, float r2, std::vector<NearPhoton>& found) {
     found.clear();
-    return pointsInRadius(map.tree, x, r2, [&](uint32_t node, float d2) { found.push_back({node, d2}); });
+    return pointsInRadius(map.tree, x, r2, [&](uint32_t node, float d2, float&) { found.push_back({node, d2}); });
 }
 
 const char* filterName(Filter f) {

@@ -72,20 +72,24 @@ inline float photonDistance2(const Vec3& p, const Vec3& x) { return glm::dot(p -
 // the farthest point on top, at found[0]).
 inline bool nearerPhoton(const NearPhoton& a, const NearPhoton& b) { return a.d2 < b.d2; }
 
+// One search of the tree serves both queries (Eq. 8.5): it keeps a bound on d2, descends first
+// into the child on x's side of the splitting plane and visits the other child only if the squared
+// distance from x to the plane is <= the bound at that moment, and hands every point it visits
+// with d2 <= the bound to a visitor, which may lower the bound (never raise it) to shrink the rest
+// of the search: a fixed-radius query leaves it, the k-nearest query lowers it to its k-th
+// distance (Jensen's way).
+using PointVisitor = std::function<void(uint32_t node, float d2, float& r2)>;
+// Every point with d2 <= the bound, r2 at first and then whatever visit leaves in its third
+// argument, each handed to visit (in the order the search meets them). Returns the number of nodes
+// visited (whose point's distance was computed).
+int pointsInRadius(const KdTree& tree, const Vec3& x, float r2, const PointVisitor& visit);
+
 // The k nearest points to x with d2 <= maxD2 (Eq. 8.5): found is cleared, then holds
 // min(k, number within maxD2) points as a max-heap under nearerPhoton (found[0] the farthest).
-// Ties (equal distances) may be broken either way. The search descends first into the child on
-// x's side of the splitting plane and visits the other child only if the squared distance from x
-// to the plane is <= the current bound (maxD2 until k points are found, then found[0].d2).
-// Returns the number of nodes visited (whose point's distance was computed).
+// Ties (equal distances) may be broken either way. The search is pointsInRadius from maxD2 whose
+// visitor keeps the heap: once it holds k points, a point found replaces its farthest, and the
+// bound is the farthest one's d2 (found[0].d2). Returns the number of nodes visited.
 int nearestPoints(const KdTree& tree, const Vec3& x, int k, float maxD2, std::vector<NearPhoton>& found);
-
-// The radius query's visitor: called once for every point found, with its node and d2.
-using PointVisitor = std::function<void(uint32_t node, float d2)>;
-// Every point with d2 <= r2, each handed to visit (in the order the search meets them). Same
-// pruning (a subtree is visited only if the squared distance to its splitting plane is <= r2).
-// Returns the number of nodes visited.
-int pointsInRadius(const KdTree& tree, const Vec3& x, float r2, const PointVisitor& visit);
 
 // ---- the photon map (plumbing, photon_map.cpp) ----
 

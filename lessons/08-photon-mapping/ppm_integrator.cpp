@@ -35,18 +35,21 @@ int photonsPerPass(const Scene& scene, const Image& out) {
 }
 
 [[maybe_unused]] const bool radiusRegistered = Registry<RenderParameter>::add(
-    "ppmradius", {"ppm's first radius in scene units (default: 0.03 of the scene's bounding radius)", [](float v) {
-                      return v > 0.0f && std::isfinite(v) ? std::string() : std::string("must be a positive number");
+    "ppmradius", {"ppm's first radius in scene units (default: 0.03 of the scene's bounding radius)", "R", 1,
+                  [](const std::vector<float>& v) {
+                      return v[0] > 0.0f ? std::string() : std::string("must be a positive number");
                   }});
 [[maybe_unused]] const bool photonsRegistered = Registry<RenderParameter>::add(
-    "ppmphotons", {"ppm's photon paths per pass (default: four per pixel, at least 8192)", [](float v) {
-                       return v >= 1.0f && v <= 1e9f && v == std::floor(v)
-                                  ? std::string()
-                                  : std::string("must be a whole number of photon paths between 1 and 1e9");
-                   }});
+    "ppmphotons",
+    {"ppm's photon paths per pass (default: four per pixel, at least 8192)", "N", 1, [](const std::vector<float>& v) {
+         return v[0] >= 1.0f && v[0] <= 1e9f && v[0] == std::floor(v[0])
+                    ? std::string()
+                    : std::string("must be a whole number of photon paths between 1 and 1e9");
+     }});
 [[maybe_unused]] const bool alphaRegistered = Registry<RenderParameter>::add(
-    "ppmalpha", {"ppm's radius reduction alpha, Eq. 8.13 (default 2/3)", [](float v) {
-                     return v > 0.0f && v < 1.0f ? std::string() : std::string("must lie between 0 and 1 (exclusive)");
+    "ppmalpha", {"ppm's radius reduction alpha, Eq. 8.13 (default 2/3)", "A", 1, [](const std::vector<float>& v) {
+                     return v[0] > 0.0f && v[0] < 1.0f ? std::string()
+                                                       : std::string("must lie between 0 and 1 (exclusive)");
                  }});
 
 }  // namespace

@@ -25,6 +25,23 @@
 namespace ps {
 
 // ---------------------------------------------------------------------------------------------
+// The settings radiosity reads: render parameters this lesson registers (radiosity_integrator.cpp;
+// framework/scene.h): `render elements N M shots S` in a scene file, `--elements NxM --shots S`
+// on the command line.
+
+// The most elements radiosity cuts a quad's edge into.
+constexpr int kMaxElements = 256;
+struct RadiositySettings {
+    // Each quad is cut into nu x nv elements (along its edges 1-2 and 1-4), 1 .. kMaxElements each.
+    int nu = 8, nv = 8;
+    int shots = 256;  // shooting steps per iteration, >= 1
+};
+// The scene's (or the command line's) settings, the defaults above where it sets none.
+RadiositySettings radiositySettings(const RenderSettings& settings);
+// Sets them as render parameters (what `render elements nu nv shots S` would), for tests and tools.
+void setRadiositySettings(RenderSettings& settings, const RadiositySettings& radiosity);
+
+// ---------------------------------------------------------------------------------------------
 // Elements (plumbing: radiosity_mesh.cpp).
 
 // One element: the piece (a, b) of a quad cut into nu x nv pieces along its edges 1-2 (a) and
@@ -182,7 +199,7 @@ std::vector<PatchEstimate> patchRadiancePT(const Scene& scene, int samples, int 
 // ---------------------------------------------------------------------------------------------
 // The integrators (radiosity_integrator.cpp): "radiosity" shows each element's radiance B / pi,
 // flat; "radiosity-ambient" adds the ambient term (display only: the solution is the same).
-// Iteration k makes scene.settings.shots shooting steps (until the residual is below
+// Iteration k makes radiositySettings(...).shots shooting steps (until the residual is below
 // kStopResidual) and renders the solution so far; the film keeps only the latest image.
 class RadiosityIntegrator : public Integrator {
 public:

@@ -2,9 +2,10 @@
 // write here): the rows of form factors (formFactor, in the framework's task loop), the
 // shooting loop (chooseShooter, shoot) and the image of the solution.
 //
-//   prepare        the elements (ElementMesh: every quad cut into scene.settings.elements), and
+//   prepare        the elements (ElementMesh: every quad cut into the render parameter
+//                  `elements`, radiositySettings), and
 //                  the solution before the first shot (startRadiosity, Eq. 11.27)
-//   iteration k    scene.settings.shots shooting steps (Eq. 11.28), fewer once the unshot power
+//   iteration k    `shots` shooting steps (Eq. 11.28), fewer once the unshot power
 //                  is below kStopResidual of the emitted power; then the image: each pixel the
 //                  mean of kRadiosityPixelSamples^2 camera rays at fixed positions, each showing
 //                  the radiance B / pi of the element it hits first (Eq. 11.20), flat; with
@@ -17,6 +18,7 @@
 // number of threads.
 #include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <cstdio>
 #include <sstream>
 #include "11-classics/radiosity.h"
@@ -26,6 +28,21 @@
 namespace ps {
 
 namespace {
+[[maybe_unused]] const bool elementsRegistered = Registry<RenderParameter>::add(
+    "elements", {"radiosity: every quad cut into N x M elements, along its edges 1-2 and 1-4 (default 8 8)", "N M", 2,
+                 [](const std::vector<float>& v) {
+                     for (float x : v)
+                         if (!(x >= 1.0f && x <= float(kMaxElements) && x == std::floor(x)))
+                             return "must be whole numbers from 1 to " + std::to_string(kMaxElements) +
+                                    " along each edge of a quad";
+                     return std::string();
+                 }});
+[[maybe_unused]] const bool shotsRegistered = Registry<RenderParameter>::add(
+    "shots", {"radiosity: shooting steps per iteration (default 256)", "S", 1, [](const std::vector<float>& v) {
+                  return v[0] >= 1.0f && v[0] <= 1e9f && v[0] == std::floor(v[0])
+                             ? std::string()
+                             : std::string("must be a whole number of steps from 1 to 1e9");
+              }});
 constexpr uint64_t kRowSalt = 0x726164696f736974ull;   // "radiosit"
 constexpr uint64_t kBackSalt = 0x6261636b2d6c6f73ull;  // "back-los"
 constexpr size_t kKeptFloats = size_t(1) << 26;        // 256 MB of rows at most
@@ -86,8 +103,23 @@ double unshotFraction(const ElementMesh& mesh, const RadiositySolution& s) {
     return emitted > 0.0 ? unshot / emitted : 0.0;
 }
 
+RadiositySettings radiositySettings(const RenderSettings& settings) {
+    RadiositySettings r;
+    const std::vector<float> e = renderParameterValues(settings, "elements", {float(r.nu), float(r.nv)});
+    r.nu = int(e[0]);
+    r.nv = int(e[1]);
+    r.shots = int(renderParameter(settings, "shots", float(r.shots)));
+    return r;
+}
+
+void setRadiositySettings(RenderSettings& settings, const RadiositySettings& radiosity) {
+    settings.parameters["elements"] = {float(radiosity.nu), float(radiosity.nv)};
+    settings.parameters["shots"] = {float(radiosity.shots)};
+}
+
 void RadiosityIntegrator::prepare(const Scene& scene) {
-    mesh_ = ElementMesh(scene, scene.settings.elements[0], scene.settings.elements[1]);
+    const RadiositySettings settings = radiositySettings(scene.settings);
+    mesh_ = ElementMesh(scene, settings.nu, settings.nv);
     solution_ = startRadiosity(mesh_);
     rows_.assign(size_t(mesh_.size()), {});
     keptFloats_ = 0;
@@ -143,7 +175,7 @@ Color RadiosityIntegrator::radiance(int element) const {
 }
 
 void RadiosityIntegrator::renderIteration(const Scene& scene, uint32_t, uint64_t seed, Image& out, SampleStats& stats) {
-    shootSteps(scene, scene.settings.shots, seed, stats);
+    shootSteps(scene, radiositySettings(scene.settings).shots, seed, stats);
     if (ambient_ && solution_.unshot.size() == size_t(mesh_.size())) ambientTerm_ = ambientRadiosity(mesh_, solution_);
     constexpr int m = kRadiosityPixelSamples;
     renderPixelTasks(seed, 0, out, stats, false, [&](int pixel, Rng& rng, Task&) {

@@ -52,4 +52,9 @@ GlassSplit glassSplit(const Material& m, const Vec3& n, const Vec3& wo);
 // Rays leave x through scene.spawnRay.
 Color LiWhitted(const Scene& scene, const Ray& ray, int bounces, const WhittedOptions& opt);
 
+// The ambient radiance a render asks for: the render parameter `ambient` this lesson registers
+// (`render ambient R G B` in a scene file, `--ambient A` or `R,G,B` on the command line; each
+// value finite, not negative, at most 1e30), black where none is set (whitted_integrator.cpp).
+Color whittedAmbient(const RenderSettings& settings);
+
 }  // namespace ps

@@ -42,7 +42,7 @@ void buildLightVertexTree(LightVertices& lights) {
 
 void lightVerticesWithin(const LightVertices& lights, const Vec3& x, float r2, std::vector<LightVertexRef>& found) {
     found.clear();
-    pointsInRadius(lights.tree, x, r2, [&](uint32_t node, float) { found.push_back(lights.refs[node - 1]); });
+    pointsInRadius(lights.tree, x, r2, [&](uint32_t node, float, float&) { found.push_back(lights.refs[node - 1]); });
     lights.searches.fetch_add(1, std::memory_order_relaxed);
     lights.found.fetch_add(found.size(), std::memory_order_relaxed);
     // One number of each vertex found (and of its predecessor) is read here, before the merges

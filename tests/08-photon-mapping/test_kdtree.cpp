@@ -188,7 +188,8 @@ TEST_CASE("kd-tree: the k nearest photons are the brute-force ones, a max-heap (
     CHECK_MESSAGE(found.empty(), "an empty map: expected nothing found (and found cleared), got " << found.size());
 }
 
-TEST_CASE("kd-tree: the radius search finds exactly the photons within the radius (Eq. 8.5) [2 pts]") {
+TEST_CASE(
+    "kd-tree: the radius search finds exactly the photons within the radius, and its visitor may lower it (Eq. 8.5) [2 pts]") {
     const std::vector<Photon> photons = hardPhotonSet(ps::testseed::seed(805));
     PhotonMap map;
     ps::buildPhotonMap(photons, map);
@@ -212,6 +213,44 @@ TEST_CASE("kd-tree: the radius search finds exactly the photons within the radiu
                                               << expected.size()
                                               << " photons with d2 <= r2 (brute force, each once), got " << got.size()
                                               << (got.size() < expected.size() ? " (pruned too much?)" : ""));
+            break;
+        }
+    }
+    // The visitor may lower the bound (the k-nearest search does): one that lowers it to every d2
+    // it is handed must be handed ever nearer points and end at the nearest within r2 (brute force).
+    for (int q = 0; q < 100; ++q) {
+        const Vec3 x =
+            q % 2 == 0 ? map.nodes[1 + size_t(rng.uniform() * float(map.size())) % map.size()].p : uniform3(rng);
+        const float r2 = q % 4 < 2 ? 0.01f : 1e30f;
+        float last = r2, nearest = r2;
+        int handed = 0, farther = 0;
+        bool any = false;
+        ps::pointsInRadius(map.tree, x, r2, [&](uint32_t, float d2, float& bound) {
+            ++handed;
+            if (d2 > last) ++farther;
+            last = d2;
+            bound = d2;
+        });
+        for (size_t i = 1; i <= map.size(); ++i) {
+            const float d2 = ps::photonDistance2(map.nodes[i].p, x);
+            if (d2 <= nearest) {
+                nearest = d2;
+                any = true;
+            }
+        }
+        std::ostringstream why;
+        if (farther > 0)
+            why << farther << " of the " << handed
+                << " points handed to visit were farther than the bound visit had lowered it to before"
+                << " (compare with the bound as it is now)";
+        else if (!any && handed > 0) why << "no point lies within r2, but " << handed << " were handed to visit";
+        else if (any && (handed == 0 || last != nearest))
+            why << "the nearest point within r2 is at d2 = " << num(nearest) << ", the last one handed to visit at "
+                << (handed == 0 ? std::string("(none)") : num(last)) << " (a subtree pruned that could hold it?)";
+        if (!why.str().empty()) {
+            FAIL_CHECK("pointsInRadius(x = " << str(x) << ", r2 = " << num(r2)
+                                             << ") with a visitor that lowers the bound to each d2 it is handed: "
+                                             << why.str());
             break;
         }
     }

@@ -16,8 +16,10 @@ struct Solved {
 };
 
 Solved solve(ps::Scene scene, int n, uint64_t seed, int threads = 1) {
-    scene.settings.elements[0] = scene.settings.elements[1] = n;
-    scene.settings.shots = 1 << 20;
+    ps::RadiositySettings settings;
+    settings.nu = settings.nv = n;
+    settings.shots = 1 << 20;
+    ps::setRadiositySettings(scene.settings, settings);
     ps::RadiosityIntegrator rad;
     ps::RenderOptions opt;
     opt.spp = 1;

@@ -16,7 +16,7 @@ TEST_CASE(
     "Phong (z-test) [3 pts]") {
     const ps::Scene scene = loadSceneAt("scenes/cornell-whitted.scene", 24, 24);
     REQUIRE(scene.settings.maxDepth == 6);
-    REQUIRE(ps::isBlack(scene.settings.ambient));
+    REQUIRE(ps::isBlack(ps::whittedAmbient(scene.settings)));
     const ps::Image ref = ps::readPFM(sourcePath("tests/11-classics/data/cornell-whitted-24.pfm"));
     const ps::Image refVar = ps::readPFM(sourcePath("tests/11-classics/data/cornell-whitted-24-variance.pfm"));
     const ps::testrender::Render w = ps::testrender::render(scene, "whitted", 256, ps::testseed::seed(1111));

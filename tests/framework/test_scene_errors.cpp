@@ -7,6 +7,7 @@
 #include <cmath>
 #include <initializer_list>
 #include <string>
+#include <vector>
 #include "camera.h"
 #include "errors.h"
 #include "scene_loader.h"
@@ -14,11 +15,17 @@
 using namespace ps;
 
 namespace {
-// A render parameter as a lesson registers one (lesson 8's ppm radius schedule, for instance).
+// Render parameters as lessons register them (lesson 8's ppm radius schedule, lesson 11's radiosity
+// elements, for instance): one number, and two.
 [[maybe_unused]] const bool testParameter = Registry<RenderParameter>::add(
-    "testfraction", {"a fraction for the loader's tests", [](float v) {
-                         return v > 0.0f && v < 1.0f ? std::string() : std::string("must lie between 0 and 1");
+    "testfraction", {"a fraction for the loader's tests", "F", 1, [](const std::vector<float>& v) {
+                         return v[0] > 0.0f && v[0] < 1.0f ? std::string() : std::string("must lie between 0 and 1");
                      }});
+[[maybe_unused]] const bool testPair = Registry<RenderParameter>::add(
+    "testpair", {"two counts for the loader's tests", "N M", 2, [](const std::vector<float>& v) {
+                     return v[0] >= 1.0f && v[1] >= 1.0f ? std::string() : std::string("must be at least 1 each");
+                 }});
+[[maybe_unused]] const bool testAny = Registry<RenderParameter>::add("testany", {"any finite number", "X", 1, nullptr});
 }  // namespace
 
 namespace {
@@ -345,16 +352,34 @@ TEST_CASE("scene errors: other values out of their range") {
     expectLine3("mesh x.obj material w scale 0", {"'scale' must be positive"});
     expectLine3("render spp 0", {"'spp' must be at least 1"});
     expectLine3("render maxdepth -1", {"'maxdepth' must not be negative"});
-    expectLine3("render ambient 0.1 -0.1 0", {"'ambient' must not be negative"});
-    expectLine3("render elements 0 4", {"'elements' must be between 1 and 256", "got 0 4"});
-    expectLine3("render elements 4 257", {"'elements' must be between 1 and 256", "got 4 257"});
-    expectLine3("render elements 4", {"'elements' needs 2 value(s)"});
-    expectLine3("render shots 0", {"'shots' must be at least 1"});
-    // A render parameter some lesson registers (this test registers its own, testfraction):
-    // the loader checks its value, and refuses a name no lesson registered.
+    // A render parameter some lesson registers (this test registers its own: testfraction, testpair,
+    // testany): the loader checks the count of its values, that each is a finite number, and its
+    // range, and refuses a name no lesson registered.
     expectLine3("render testfraction 1", {"'testfraction' must lie between 0 and 1", "got 1"});
     expectLine3("render testfraction", {"'testfraction' needs 1 value(s)"});
+    expectLine3("render testfraction nan", {"'nan' for 'testfraction' is not a finite number"});
     expectLine3("render testfractoin 0.5", {"unknown option 'testfractoin' for 'render'", "testfraction"});
+    expectLine3("render testpair 0 4", {"'testpair' must be at least 1 each", "got 0 4"});
+    expectLine3("render testpair 4", {"'testpair' needs 2 value(s), got 1"});
+    expectLine3("render testpair 4 spp 2", {"'testpair' needs 2 value(s), got 1 before 'spp'"});
+    expectLine3("render testpair 4 inf", {"'inf' for 'testpair' is not a finite number"});
+    expectLine3("render testpair 4 1e39", {"'1e39' for 'testpair' is out of range"});
+    expectLine3("render testpair 4 four", {"malformed number 'four' for 'testpair'"});
+    expectLine3("render testany -1e30 spp 0", {"'spp' must be at least 1"});
+}
+
+TEST_CASE("scene errors: a render parameter's values checked in one place (renderParameterProblem)") {
+    // What the loader and the command line both ask: the count, finite values, then the lesson's check.
+    const RenderParameter& pair = *Registry<RenderParameter>::find("testpair");
+    CHECK(renderParameterProblem(pair, {1.0f, 2.0f}).empty());
+    CHECK(renderParameterProblem(pair, {1.0f}) == "needs 2 numbers (N M), got 1");
+    CHECK(renderParameterProblem(pair, {1.0f, 2.0f, 3.0f}) == "needs 2 numbers (N M), got 3");
+    CHECK(renderParameterProblem(pair, {1.0f, std::nanf("")}) == "needs finite numbers");
+    CHECK(renderParameterProblem(pair, {1.0f, INFINITY}) == "needs finite numbers");
+    CHECK(renderParameterProblem(pair, {0.5f, 2.0f}) == "must be at least 1 each");
+    const RenderParameter& any = *Registry<RenderParameter>::find("testany");
+    CHECK(renderParameterProblem(any, {-1e30f}).empty());  // no check: any finite number
+    CHECK(renderParameterProblem(any, {}) == "needs 1 number (X), got 0");
 }
 
 TEST_CASE("scene errors: a quad is kept as written (Scene::quads), its two triangles after it") {
@@ -363,7 +388,7 @@ TEST_CASE("scene errors: a quad is kept as written (Scene::quads), its two trian
         "material w diffuse albedo 0.5 0.5 0.5\n"
         "triangle 0 0 0  1 0 0  0 1 0  material w\n"
         "quad 0 0 1  2 0 1  2 1 1  0 1 1  material w\n"
-        "render elements 3 5 shots 7 testfraction 0.75\n",
+        "render testpair 3 5 testfraction 0.75\n",
         "quads.scene");
     REQUIRE(s.quads.size() == 1);
     CHECK(s.quads[0].line == 4);
@@ -372,11 +397,10 @@ TEST_CASE("scene errors: a quad is kept as written (Scene::quads), its two trian
     CHECK(s.quads[0].corners[3] == Vec3(0, 1, 1));
     CHECK(s.triangles[s.prims[1].index].p2 == Vec3(2, 1, 1));
     CHECK(s.triangles[s.prims[2].index].p1 == Vec3(2, 1, 1));
-    CHECK(s.settings.elements[0] == 3);
-    CHECK(s.settings.elements[1] == 5);
-    CHECK(s.settings.shots == 7);
+    CHECK(renderParameterValues(s.settings, "testpair", {}) == std::vector<float>{3.0f, 5.0f});
     CHECK(renderParameter(s.settings, "testfraction", 0.0f) == 0.75f);
-    CHECK(renderParameter(s.settings, "spp", -1.0f) == -1.0f);  // not a render parameter
+    CHECK(renderParameter(s.settings, "testany", -2.0f) == -2.0f);  // not set: the fallback
+    CHECK(renderParameter(s.settings, "spp", -1.0f) == -1.0f);      // not a render parameter
 }
 
 TEST_CASE("scene errors: values too large for float light transport") {
