@@ -62,6 +62,19 @@ quad 0.4 0.98 0.4  0.6 0.98 0.4  0.6 0.98 0.6  0.4 0.98 0.6  emission 20 20 20
 render maxdepth 5
 )";
 
+// A mirror sphere over a diffuse floor under a lamp, at most one bounce: the floor seen through the
+// mirror may not take a light sample (that path, L D S E, has two bounces), the lamp seen in the
+// mirror (L S E) and the floor's own light sample (L D E) are all there is.
+const char* kMirrorOverFloor = R"(
+camera eye 0 1.2 2.6  target 0 0.5 0  fov 40  resolution 12 8
+material floor diffuse albedo 0.7 0.7 0.7
+material chrome mirror albedo 0.9 0.9 0.9
+quad -3 0 3  3 0 3  3 0 -3  -3 0 -3  material floor
+sphere center 0 0.6 0  radius 0.5  material chrome
+quad -0.3 2.5 -0.3  0.3 2.5 -0.3  0.3 2.5 0.3  -0.3 2.5 0.3  emission 10 10 10
+render maxdepth 1
+)";
+
 // The noise drt's mean is judged with, per pixel channel: drt's own variance of the mean, or the
 // reference's variance per sample at drt's sample count, whichever is larger. Where the lens blurs
 // the lamp's edge, a pixel sees the lamp from a few of its lens points only: a rare event that
@@ -121,18 +134,30 @@ TEST_CASE(
 
 TEST_CASE(
     "drt: no diffuse interreflection: in a closed diffuse box it equals direct light, pt with maxdepth 1 (z-test) [1 pt]") {
+    // Two comparisons, each at sidak(alpha(), 2): the box, and a mirror over a floor at maxdepth 1.
+    const double level = ps::stats::sidak(alpha(), 2);
     const ps::testrender::Render drt = renderAt(kClosedBox, "drt", -1, 256, 1113);
     const ps::testrender::Render direct = renderAt(kClosedBox, "pt", 1, 1024, 1114);
     REQUIRE_MESSAGE(ps::testrender::total(drt.mean) > 0.0,
                     "drt renders the lit box black: LiDistributed returns nothing yet");
     const ps::stats::ZTestResult z =
-        ps::stats::zTestImages(drt.mean, drt.variance, direct.mean, direct.variance, alpha());
+        ps::stats::zTestImages(drt.mean, drt.variance, direct.mean, direct.variance, level);
     CHECK_MESSAGE(z.passed,
                   "drt with maxdepth 5 (a) against pt with maxdepth 1 (b) in a closed box of albedo 0.7 (image "
                   "totals "
                       << num(ps::testrender::total(drt.mean)) << " and " << num(ps::testrender::total(direct.mean))
                       << "):\n  " << z.report
                       << "\n  A diffuse point ends the path: its light sample (weight 1) is all it adds");
+    const ps::testrender::Render drtM = renderAt(kMirrorOverFloor, "drt", -1, 256, 1117);
+    const ps::testrender::Render ptM = renderAt(kMirrorOverFloor, "pt", -1, 1024, 1118);
+    const ps::stats::ZTestResult zM = ps::stats::zTestImages(drtM.mean, drtM.variance, ptM.mean, ptM.variance, level);
+    CHECK_MESSAGE(zM.passed,
+                  "drt (a) against pt (b), both with maxdepth 1, on a floor seen in a mirror sphere (image "
+                  "totals "
+                      << num(ps::testrender::total(drtM.mean)) << " and " << num(ps::testrender::total(ptM.mean))
+                      << "):\n  " << zM.report
+                      << "\n  A diffuse point reached with the scene's maxdepth bounces takes no light "
+                         "sample: that path would have one bounce too many");
 }
 
 TEST_CASE(
