@@ -96,6 +96,20 @@ ps::testrender::Render renderAt(const char* text, const std::string& algo, int m
     return ps::testrender::render(scene, algo, spp, ps::testseed::seed(seed));
 }
 
+// drt (a) against pt (b) on the scene `text`, drt at its own maxdepth and pt at ptMaxDepth (-1:
+// the scene's), seeds `seed` and seed + 1, a z-test at `level`. `what` names the comparison in the
+// message and `hint` the rule it checks; `ifBlack`, if given, is the message for a black drt image.
+void checkDrtAgainstPt(const char* text, int ptMaxDepth, int drtSpp, int ptSpp, uint64_t seed, double level,
+                       const std::string& what, const std::string& hint, const char* ifBlack = nullptr) {
+    const ps::testrender::Render drt = renderAt(text, "drt", -1, drtSpp, seed);
+    const ps::testrender::Render pt = renderAt(text, "pt", ptMaxDepth, ptSpp, seed + 1);
+    if (ifBlack) REQUIRE_MESSAGE(ps::testrender::total(drt.mean) > 0.0, ifBlack);
+    const ps::stats::ZTestResult z = ps::stats::zTestImages(drt.mean, drt.variance, pt.mean, pt.variance, level);
+    CHECK_MESSAGE(z.passed, "drt (a) against pt (b) "
+                                << what << " (image totals " << num(ps::testrender::total(drt.mean)) << " and "
+                                << num(ps::testrender::total(pt.mean)) << "):\n  " << z.report << "\n  " << hint);
+}
+
 }  // namespace
 
 TEST_CASE(
@@ -119,45 +133,24 @@ TEST_CASE(
                "value), weight 1 at a diffuse point and the power heuristic at a glossy one; the glossy "
                "ray's emission the power heuristic too, full after a mirror; the glossy sample's weight is "
                "b.weight = f |cos| / pdf, not the lobe's pdf alone");
-    const ps::testrender::Render drtG = renderAt(kGlossyFloor, "drt", -1, 512, 1115);
-    const ps::testrender::Render ptG = renderAt(kGlossyFloor, "pt", -1, 1024, 1116);
-    const ps::stats::ZTestResult zG = ps::stats::zTestImages(drtG.mean, drtG.variance, ptG.mean, ptG.variance, level);
-    CHECK_MESSAGE(zG.passed,
-                  "drt (a) against pt (b) on a glossy floor (Phong, exponent 8) under a lamp, every path L G E "
-                  "(image totals "
-                      << num(ps::testrender::total(drtG.mean)) << " and " << num(ps::testrender::total(ptG.mean))
-                      << "):\n  " << zG.report
-                      << "\n  The light sample and the glossy ray that hits the lamp sample the same paths: "
-                         "each weighted by the power heuristic against the other (the ray's emission "
-                         "in full only after a delta bounce or from the camera)");
+    checkDrtAgainstPt(kGlossyFloor, -1, 512, 1024, 1115, level,
+                      "on a glossy floor (Phong, exponent 8) under a lamp, every path L G E",
+                      "The light sample and the glossy ray that hits the lamp sample the same paths: each weighted "
+                      "by the power heuristic against the other (the ray's emission in full only after a delta "
+                      "bounce or from the camera)");
 }
 
 TEST_CASE(
     "drt: no diffuse interreflection: in a closed diffuse box it equals direct light, pt with maxdepth 1 (z-test) [1 pt]") {
     // Two comparisons, each at sidak(alpha(), 2): the box, and a mirror over a floor at maxdepth 1.
     const double level = ps::stats::sidak(alpha(), 2);
-    const ps::testrender::Render drt = renderAt(kClosedBox, "drt", -1, 256, 1113);
-    const ps::testrender::Render direct = renderAt(kClosedBox, "pt", 1, 1024, 1114);
-    REQUIRE_MESSAGE(ps::testrender::total(drt.mean) > 0.0,
-                    "drt renders the lit box black: LiDistributed returns nothing yet");
-    const ps::stats::ZTestResult z =
-        ps::stats::zTestImages(drt.mean, drt.variance, direct.mean, direct.variance, level);
-    CHECK_MESSAGE(z.passed,
-                  "drt with maxdepth 5 (a) against pt with maxdepth 1 (b) in a closed box of albedo 0.7 (image "
-                  "totals "
-                      << num(ps::testrender::total(drt.mean)) << " and " << num(ps::testrender::total(direct.mean))
-                      << "):\n  " << z.report
-                      << "\n  A diffuse point ends the path: its light sample (weight 1) is all it adds");
-    const ps::testrender::Render drtM = renderAt(kMirrorOverFloor, "drt", -1, 256, 1117);
-    const ps::testrender::Render ptM = renderAt(kMirrorOverFloor, "pt", -1, 1024, 1118);
-    const ps::stats::ZTestResult zM = ps::stats::zTestImages(drtM.mean, drtM.variance, ptM.mean, ptM.variance, level);
-    CHECK_MESSAGE(zM.passed,
-                  "drt (a) against pt (b), both with maxdepth 1, on a floor seen in a mirror sphere (image "
-                  "totals "
-                      << num(ps::testrender::total(drtM.mean)) << " and " << num(ps::testrender::total(ptM.mean))
-                      << "):\n  " << zM.report
-                      << "\n  A diffuse point reached with the scene's maxdepth bounces takes no light "
-                         "sample: that path would have one bounce too many");
+    checkDrtAgainstPt(kClosedBox, 1, 256, 1024, 1113, level, "with maxdepth 5 and 1 in a closed box of albedo 0.7",
+                      "A diffuse point ends the path: its light sample (weight 1) is all it adds",
+                      "drt renders the lit box black: LiDistributed returns nothing yet");
+    checkDrtAgainstPt(kMirrorOverFloor, -1, 256, 1024, 1117, level,
+                      "both with maxdepth 1, on a floor seen in a mirror sphere",
+                      "A diffuse point reached with the scene's maxdepth bounces takes no light sample: that path "
+                      "would have one bounce too many");
 }
 
 TEST_CASE(
