@@ -4,9 +4,12 @@
 // (Eq. 3.2, 3.3). The statistical tests use the sphere furnace (data/furnace-sphere.scene): in
 // the cube of scenes/furnace.scene next-event estimation has infinite variance (README 1.6),
 // and a t-test needs a finite one. The exact tests use the cube. The tests compare
-// with the TRUNCATED value, with a power check (standard error <= 0.2 % of L): the depths are
+// with the TRUNCATED value, with a power check (standard error <= 0.35 % of L): the depths are
 // chosen so that one bounce more or less changes L by 1.6 % (a = 0.5, D = 5), 2.3 % (a = 0.8,
-// D = 10) and 2.8 % (a = 0.99, D = 30), far beyond the test's resolution.
+// D = 10), 2.8 % (a = 0.99, D = 30) and 4.8 % (a = 1, D = 20), 4.6 standard errors or more even
+// at the bound. Next-event estimation's standard error is heavy-tailed here: over
+// PATHSPACE_TEST_SEED 0-39 at a = 0.5 its mean is 0.071 % of L and its largest 0.29 % (the other
+// estimators': 0.10-0.18 %, steady); the bound was 0.2 % and failed at 2 of 41 seeds (seeds.sh).
 #include "lesson03.h"
 
 using namespace lesson03;
@@ -28,7 +31,7 @@ void checkFurnace(const Estimator& e, uint64_t seed) {
         const Samples s = sampleLi(scene, e, c.D, samples, seed++);
         CHECK_MESSAGE(s.bad == 0, e.name << ", closed furnace albedo " << c.albedo
                                          << ": expected 0 NaN or Inf samples, got " << s.bad);
-        const ps::stats::TTestResult t = ps::stats::tTest(s.w, expected, alpha(), 0.002);
+        const ps::stats::TTestResult t = ps::stats::tTest(s.w, expected, alpha(), 0.0035);
         CHECK_MESSAGE(t.passed, e.name << ", sphere furnace (albedo " << c.albedo << ", Le 1, maxdepth " << c.D << "), "
                                        << samples << " rays: expected L = (1 - a^(D+1)) / (1 - a) = " << expected / 3.0
                                        << " per channel (R + G + B = " << expected << "), got R + G + B = " << t.mean
@@ -68,7 +71,7 @@ TEST_CASE("path tracing: closed furnace with albedo 1 terminates and returns (D 
     for (const Estimator& e : {estimators()[1], estimators()[2]}) {
         const Samples s = sampleLi(sphere, e, D, 20000, seed++);
         CHECK_MESSAGE(s.bad == 0, e.name << ", closed furnace albedo 1: expected 0 NaN or Inf samples, got " << s.bad);
-        const ps::stats::TTestResult t = ps::stats::tTest(s.w, expected, alpha(), 0.002);
+        const ps::stats::TTestResult t = ps::stats::tTest(s.w, expected, alpha(), 0.0035);
         CHECK_MESSAGE(t.passed, e.name << ", sphere furnace (albedo 1, Le 1, maxdepth " << D
                                        << "): expected (D + 1) Le = " << D + 1
                                        << " per channel (R + G + B = " << expected << "), got R + G + B = " << t.mean
