@@ -236,7 +236,7 @@ TEST_CASE(
     const Color beta(0.6f, 1.2f, 0.9f);
     const int area = lightOfKind(ps::LightKind::Area), point = lightOfKind(ps::LightKind::Point),
               bg = lightOfKind(ps::LightKind::Background);
-    int checked = 0, seen[3] = {0, 0, 0}, blocked = 0;
+    int checked = 0, seen[3] = {0, 0, 0}, blocked = 0, wrongValue = 0;  // the first 3 wrong values are shown
     for (const Vec3& target : {Vec3(0.3f, 0.0f, 0.5f), Vec3(-0.8f, 0.0f, 1.6f), Vec3(-2.0f, 0.9f, 1.0f)}) {
         const PathVertex z1 = hit(z0.p(), target, beta);
         const PathVertex z[] = {z0, z1};
@@ -252,9 +252,9 @@ TEST_CASE(
             const int l = scene().selectLight(uLight, P);
             const char* kind = l == area ? "area light" : l == point ? "point light" : "background";
             const Color got = c.valid ? c.value : Color(0.0f);
-            CHECK_MESSAGE(
-                close(got, expected),
-                "z_1 at "
+            if (!close(got, expected) && wrongValue++ < 3)
+                FAIL_CHECK(
+                    "z_1 at "
                     << str(z1.p()) << ", the " << kind << " chosen (P(l) = " << num(P, 4)
                     << "): expected C* = beta_1 times lesson 2's "
                     << "light-sampling estimate = " << str(expected) << ", got valid = " << c.valid << ", "
@@ -294,6 +294,7 @@ TEST_CASE(
         }
         ++checked;
     }
+    CHECK_MESSAGE(wrongValue == 0, wrongValue << " of the light samples' values differ (the first 3 above)");
     // Each kind must have been checked. With 64 samples per point the area light was valid 13.6 times
     // on average (sd 3.7, PATHSPACE_TEST_SEED 0-79) and "at least 10" failed at seed 7; with 256, about
     // 54 (area), 358 (point) and 67 (background): 20 is more than 4.5 sd below each.
