@@ -6,6 +6,9 @@
 namespace ps {
 
 bool techniqueSamples(const PathVertex* x, int n, int sPrime) {
+    // Given: a technique of this path at all (s' from 0 to n). Not the student's: a missing check
+    // would read before the path (x[-1]), which no test can observe reliably.
+    if (sPrime < 0 || sPrime > n) return false;
     // TODO(07) Whether technique s' can make the joined path (Eq. 7.7, 7.12; techniqueSamples in bpt.h). Pitfall
     //          (README 6): the pinhole and a point light cannot be hit, a camera model's point can.
     (void)x; (void)n; (void)sPrime;

@@ -6,13 +6,15 @@
 namespace ps {
 
 bool techniqueSamples(const PathVertex* x, int n, int sPrime) {
+    // Given: a technique of this path at all (s' from 0 to n). Not the student's: a missing check
+    // would read before the path (x[-1]), which no test can observe reliably.
+    if (sPrime < 0 || sPrime > n) return false;
     //! TODO(07) Whether technique s' can make the joined path (Eq. 7.7, 7.12; techniqueSamples in bpt.h). Pitfall
     //!          (README 6): the pinhole and a point light cannot be hit, a camera model's point can.
     //! STUB (void)x; (void)n; (void)sPrime;
     //! STUB return PS_TODO("lesson 07: techniqueSamples", false);
     //! BEGIN
     if (sPrime == n) return x[n - 1].onCamera;
-    if (sPrime < 0 || sPrime > n) return false;
     if (sPrime == 0) return !x[0].pointLight;
     if (x[sPrime - 1].specular || x[sPrime].specular) return false;
     return !(sPrime == 1 && n == 2 && x[0].infinite);
