@@ -37,9 +37,13 @@ struct Whitted : PixelIntegrator {
         return opt;
     }
 
-    Color Li(const Scene& scene, const Ray& ray, Rng&) const override {
-        return LiWhitted(scene, ray, 0, options(scene));
-    }
+    // The scene's options, read once per render (not per camera ray: the ambient term is a
+    // render parameter, looked up by name).
+    void prepare(const Scene& scene) override { options_ = options(scene); }
+
+    Color Li(const Scene& scene, const Ray& ray, Rng&) const override { return LiWhitted(scene, ray, 0, options_); }
+
+    WhittedOptions options_;
 };
 
 // L [DG] S* E from point lights, L S* E from every light (whitted.h); with area lights or a
