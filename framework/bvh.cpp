@@ -64,7 +64,8 @@ void BVH::buildBinary(uint32_t self, std::vector<BinaryNode>& bin, std::vector<A
     // the Cornell box 1.6-2.4 times and the bunny's incoherent rays 1.3 times slower.
     // The three axes are binned in one pass over the items (each item read once, not once per
     // axis); an axis along which all centroids coincide gets scale 0 (all its items in bin 0)
-    // and is not evaluated.
+    // and is not evaluated. With the skipped empty bins and the children's bounds below: the
+    // same tree to the bit, built in 0.75 of the time (bunny 34 -> 25 ms; bench/README.md).
     const float area = box.surfaceArea();
     const Vec3 ext = cbox.extent();
     float scale[3];
