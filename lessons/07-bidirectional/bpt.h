@@ -70,6 +70,7 @@ float pdfScatter(const Scene& scene, const PathVertex* prev, const PathVertex& c
 // One scattering event: vertex `cur` (on a surface) between its neighbour on the light side and
 // its neighbour on the camera side, f and both its densities in one call (plumbing,
 // techniques.cpp; Eq. 7.2, 7.3, 7.6): what a connection at cur needs for its value and its MIS.
+// Where f is 0 the connection adds nothing and the densities are left at 0 (not evaluated).
 struct Scattering {
     Color f = Color(0.0f);          // f_s(light side -> cur -> camera side): evalBSDF(m, n, towards the
                                     // camera side, towards the light side) (0 at a delta BSDF)
