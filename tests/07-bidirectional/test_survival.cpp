@@ -85,15 +85,15 @@ void checkGeometric(const Lengths& l, const char* which) {
     REQUIRE_MESSAGE(recorded >= 0.99 * kSubpaths,
                     "only " << recorded << " of " << kSubpaths << " " << which
                             << "s reached a surface after their first vertex in a closed box: are they done?");
-    CHECK_MESSAGE(l.glassVertices >= kSubpaths / 50,
-                  "only " << l.glassVertices << " glass vertices in " << kSubpaths << " " << which
-                          << "s (the test's scene should make thousands)");
+    CHECK_MESSAGE(l.glassVertices >= kSubpaths / 50, "only " << l.glassVertices << " glass vertices in " << kSubpaths
+                                                             << " " << which
+                                                             << "s (the test's scene should make thousands)");
     CHECK_MESSAGE(l.endedAtGlass == 0, l.endedAtGlass << " of " << kSubpaths << " " << which
                                                       << "s ended at a glass (dielectric) vertex: the walk can "
                                                          "always leave glass, so its q decided it (Eq. 7.1a)");
     CHECK_MESSAGE(l.betaChecked > kSubpaths / 2, "only " << l.betaChecked << " survivors to check in " << which << "s");
-    CHECK_MESSAGE(l.wrongBeta == 0, l.wrongBeta << " of " << l.betaChecked << " survivors carry a wrong throughput; first: "
-                                                << l.firstWrongBeta);
+    CHECK_MESSAGE(l.wrongBeta == 0, l.wrongBeta << " of " << l.betaChecked
+                                                << " survivors carry a wrong throughput; first: " << l.firstWrongBeta);
     // P(N = n) = a^(n-1) (1 - a), the tail n > K in the last cell.
     const size_t cells = std::max<size_t>(l.counts.size(), 12) + 1;
     std::vector<double> observed(cells, 0.0), expected(cells, 0.0);
@@ -117,8 +117,9 @@ void checkGeometric(const Lengths& l, const char* which) {
 
 }  // namespace
 
-TEST_CASE("subpaths survive by the material from the first bounce: geometric lengths in a closed box, light and "
-          "camera (chi-square) [2 pts]") {
+TEST_CASE(
+    "subpaths survive by the material from the first bounce: geometric lengths in a closed box, light and "
+    "camera (chi-square) [2 pts]") {
     const ps::Scene scene = ps::parseScene(kBox, "test_survival.cpp's box");
     Lengths light, camera;
     ps::Subpath path;
