@@ -1,6 +1,7 @@
 // Lesson 11 — plumbing: `lt --paths EXPR`, light tracing restricted to the paths an expression
 // matches (path_filter.h). Each light path is lesson 7's light subpath y_0 .. y_m (lesson 5's
-// light walk, storing its vertices), read forward from L; vertex y_{s-1} is joined to the camera
+// light walk, storing its vertices, surviving by the material: Eq. 7.1a, where lt's own walk
+// survives by Eq. 3.5, so `lt --paths 'L.*E'` is lt in expectation, not bit for bit), read forward from L; vertex y_{s-1} is joined to the camera
 // by lesson 7's connectCamera (lesson 5's connection and estimate, Eq. 5.3-5.5) if the path
 // L y_1 .. y_{s-1} E matches. Where no path through y_{s-1} can match any more (Eq. 11.6) the
 // later vertices are not joined, and when the expression bounds the number of bounces (`LDE`:
