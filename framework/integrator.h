@@ -117,8 +117,9 @@ public:
     // What is left of the render's budget as an iteration starts (render() sets both before each
     // one): the seconds to the deadline on the render's clock (infinity without --time), and the
     // iterations still to render, this one included (-1 without --spp). An integrator that learns
-    // while it renders (lesson 12's guiding field) stops learning where nothing after would use
-    // what it learns; the image stays a function of (scene, iteration, seed) given the budget.
+    // while it renders (a radiance field it samples) stops learning where nothing after would use
+    // what it learns (with --time, what it decides depends on the time, as the number of
+    // iterations of a timed render does).
     double secondsLeft() const { return hasDeadline_ ? deadline_ - clockSeconds(deadlineClock_) : kInf; }
     int iterationsLeft() const { return iterationsLeft_; }
     void setIterationsLeft(int iterations) { iterationsLeft_ = iterations; }
