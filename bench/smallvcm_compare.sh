@@ -9,8 +9,9 @@
 #
 # SECONDS (default 20) per render, THREADS (default 2) for both renderers, SCENE 1 (default:
 # SmallVCM's -s 1, scenes/smallvcm-mirror.scene) or 2 (smallvcm-point.scene); LIST of pt, lt,
-# bpt, ppm, vcm, vcm-balance, vcm-bpm, vcm-ppm (default pt,lt,bpt,ppm), each against SmallVCM's
-# of the same name (vcm and vcm-balance against its vcm, vcm-bpm its bpm, vcm-ppm its ppm). The
+# bpt, bpt-balance, ppm, vcm, vcm-balance, vcm-bpm, vcm-ppm (default pt,lt,bpt,ppm), each against
+# SmallVCM's of the same name (bpt-balance against its bpt, whose MIS is the balance heuristic;
+# vcm and vcm-balance against its vcm, vcm-bpm its bpm, vcm-ppm its ppm). The
 # reference is pathspace's A (default bpt; vcm where no connection samples a scene's caustics)
 # for 8 x SECONDS (kept in $OUT/reference.pfm and reused when present). --clock wall (default):
 # wall-clock seconds of each whole process, measured here; --clock cpu: CPU seconds of the render loop, all threads added
@@ -27,11 +28,11 @@ while [[ $# -gt 0 && $1 == --* ]]; do
              CLOCK=$2; shift 2 ;;
     --algos) ALGOS=${2:?--algos needs a list}; shift 2 ;;
     --ref-algo) REF_ALGO=${2:?--ref-algo needs an algorithm}; shift 2 ;;
-    --help|-h) sed -n '2,21p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    --help|-h) sed -n '2,22p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "smallvcm_compare: unknown option $1" >&2; exit 2 ;;
   esac
 done
-if [[ $# -lt 1 ]]; then sed -n '2,21p' "$0" | sed 's/^# \{0,1\}//'; exit 2; fi
+if [[ $# -lt 1 ]]; then sed -n '2,22p' "$0" | sed 's/^# \{0,1\}//'; exit 2; fi
 SVCM=$(realpath "$1"); SECONDS_EACH=${2:-20}; THREADS=${3:-2}; SID=${4:-1}
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
 BUILD=${BUILD:-$ROOT/build}
@@ -41,9 +42,9 @@ case $SID in
   *) echo "smallvcm_compare: SCENE is 1 or 2, not $SID" >&2; exit 2 ;;
 esac
 # SmallVCM's name of the same algorithm.
-svcm_algo() { case $1 in pt | lt | bpt | ppm) echo "$1" ;; vcm | vcm-balance) echo vcm ;; vcm-bpm) echo bpm ;; vcm-ppm) echo ppm ;; esac; }
+svcm_algo() { case $1 in pt | lt | bpt | ppm) echo "$1" ;; bpt-balance) echo bpt ;; vcm | vcm-balance) echo vcm ;; vcm-bpm) echo bpm ;; vcm-ppm) echo ppm ;; esac; }
 for a in ${ALGOS//,/ }; do
-  [[ -n $(svcm_algo "$a") ]] || { echo "smallvcm_compare: algorithm $a: pt, lt, bpt, ppm, vcm, vcm-balance, vcm-bpm or vcm-ppm" >&2; exit 2; }
+  [[ -n $(svcm_algo "$a") ]] || { echo "smallvcm_compare: algorithm $a: pt, lt, bpt, bpt-balance, ppm, vcm, vcm-balance, vcm-bpm or vcm-ppm" >&2; exit 2; }
 done
 OUT=${OUT:-$ROOT/build/smallvcm-compare-$SID}
 [[ -x $SVCM ]] || { echo "smallvcm_compare: $SVCM is not an executable" >&2; exit 2; }

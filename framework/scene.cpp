@@ -391,7 +391,8 @@ bool Scene::anyHit(const Ray& ray) const {
 
 // The same two functions compiled a second time for AVX2 (x86-64 with GCC or Clang): the box
 // test of bvh.h then takes one 8-wide instruction per line for a node's eight children where the
-// x86-64 baseline (SSE2) takes two 4-wide ones (bench/README.md: 5-15 % more rays per second).
+// x86-64 baseline (SSE2) takes two 4-wide ones (bench/README.md: 2-6 % more rays per second,
+// measured with bvh_bench --tracer avx2).
 // `flatten` inlines the traversal into them, so that it is compiled for AVX2 too. No fused
 // multiply-add (FMA is not in the target, and ISO C++ mode, CMAKE_CXX_EXTENSIONS OFF, contracts
 // nothing), so every operation rounds as in the baseline copy and both give the same bits

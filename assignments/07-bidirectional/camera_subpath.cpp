@@ -8,7 +8,7 @@ namespace ps {
 
 void cameraSubpath(const Scene& scene, Rng& rng, const Vec2& raster, int maxDepth, Heuristic h, Subpath& path,
                    const CameraVertexVisitor& visit) {
-    // TODO(07) The camera subpath through raster (Eq. 7.1, 7.3), as cameraSubpath in bpt.h states it, each vertex's
+    // TODO(07) The camera subpath through raster (Eq. 7.1, 7.1a, 7.3), as cameraSubpath in bpt.h states it, each vertex's
     //          densities by bpt.h's conventions and its misSum (Eq. 7.9). Pitfalls (README 6): pdfFwd evaluated from
     //          the positions, not the walk's sample pdf; pdfRev of z_{i-2}, known once z_i exists.
     (void)scene; (void)rng; (void)raster; (void)maxDepth; (void)h; (void)visit;

@@ -7,8 +7,8 @@
 namespace ps {
 
 void lightSubpath(const Scene& scene, Rng& rng, int maxDepth, Heuristic h, Subpath& path) {
-    // TODO(07) The light subpath (Eq. 7.1, 7.3), as lightSubpath in bpt.h states it, y_0 with the flags of lesson 6's
-    //          vertices and its origin density (0: no subpath). Pitfalls (README 6): pdfFwd evaluated from the
+    // TODO(07) The light subpath (Eq. 7.1, 7.1a, 7.3), as lightSubpath in bpt.h states it, y_0 with the flags of lesson
+    //          6's vertices and its origin density (0: no subpath). Pitfalls (README 6): pdfFwd evaluated from the
     //          positions, not the sample's pdf; a reference into `path` dies at push_back.
     (void)scene; (void)rng; (void)maxDepth; (void)h;
     path.clear();

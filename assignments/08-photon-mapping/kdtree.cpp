@@ -19,7 +19,8 @@ void buildKdTree(const std::vector<Vec3>& points, KdTree& tree) {
     // TODO(08) The left-balanced kd-tree of the points in tree's arrays, nodes 1..n in heap order (Eq. 8.4; KdTree and
     //          buildKdTree in photonmap.h); a node without children keeps axis 0. Pitfalls (README 6): index 0 is
     //          unused; the median's rank is leftSubtreeSize, not n/2; sorting instead of std::nth_element is not O(n
-    //          log n).
+    //          log n); partitioning indices that point into `points` reads every point through the index (ppm
+    //          rebuilds a tree every pass: move each point with its index instead).
     (void)points;
     tree = KdTree();
     (void)PS_TODO("lesson 08: buildKdTree", 0);

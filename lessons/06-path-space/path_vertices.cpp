@@ -65,13 +65,6 @@ PathVertex cameraVertex(const Scene& scene, const Vec3& z) {
     return v;
 }
 
-Vec3 direction(const PathVertex& a, const PathVertex& b) {
-    if (b.infinite) return b.sp.n;
-    if (a.infinite) return -a.sp.n;
-    const Vec3 d = b.sp.p - a.sp.p;
-    return glm::dot(d, d) > 0.0f ? glm::normalize(d) : Vec3(0.0f);
-}
-
 bool visible(const Scene& scene, const PathVertex& a, const PathVertex& b) {
     if (a.infinite && b.infinite) return false;
     if (a.infinite || b.infinite) {

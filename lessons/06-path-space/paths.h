@@ -106,8 +106,13 @@ bool visible(const Scene& scene, const PathVertex& a, const PathVertex& b);
 
 // Unit direction from a towards b (for an infinite b: b.sp.n; for an infinite a: -a.sp.n); the
 // zero vector if the two points coincide (a point light on a surface: every BSDF and pdf of it
-// is then 0, never NaN).
-Vec3 direction(const PathVertex& a, const PathVertex& b);
+// is then 0, never NaN). Inline: every density and connection asks it, several times a vertex.
+inline Vec3 direction(const PathVertex& a, const PathVertex& b) {
+    if (b.infinite) return b.sp.n;
+    if (a.infinite) return -a.sp.n;
+    const Vec3 d = b.sp.p - a.sp.p;
+    return glm::dot(d, d) > 0.0f ? glm::normalize(d) : Vec3(0.0f);
+}
 
 // The Dirac delta of a specular vertex with normal n, for light arriving from wLight and
 // leaving towards wCamera (both unit, pointing away from the surface) (Eq. 6.11). All numbers

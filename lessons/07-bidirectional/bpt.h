@@ -70,6 +70,7 @@ float pdfScatter(const Scene& scene, const PathVertex* prev, const PathVertex& c
 // One scattering event: vertex `cur` (on a surface) between its neighbour on the light side and
 // its neighbour on the camera side, f and both its densities in one call (plumbing,
 // techniques.cpp; Eq. 7.2, 7.3, 7.6): what a connection at cur needs for its value and its MIS.
+// Where f is 0 the connection adds nothing and the densities are left at 0 (not evaluated).
 struct Scattering {
     Color f = Color(0.0f);          // f_s(light side -> cur -> camera side): evalBSDF(m, n, towards the
                                     // camera side, towards the light side) (0 at a delta BSDF)
@@ -81,11 +82,26 @@ struct Scattering {
 Scattering scatteringAt(const Scene& scene, const PathVertex& lightSide, const PathVertex& cur,
                         const PathVertex& cameraSide);
 
+// ---- the subpaths' survival (survival.cpp), Eq. 7.1a ----
+
+// The probability q(x) that a subpath goes on from a surface vertex x of material m (Eq. 7.1a):
+// a number of the material alone, the same for the light and the camera subpath whatever the
+// directions at x (what lets (7.7c) hold it exactly, section 1.6).
+float subpathSurvival(const Material& m);
+
+// The subpaths' continuation rule (lesson 3's WalkOptions::continuation, Eq. 3.10 with Eq. 7.1a):
+// at the walk's vertex v (a surface the walk may leave), one continuation with probability q(v)
+// and none otherwise, drawing its number from rng only when q < 1; Continuations::beta and
+// roulette as Eq. 3.10 asks of a rule that decides survival at the vertex itself (the walk's own
+// Eq. 3.5 no longer plays on a subpath).
+Continuations subpathContinuation(const Scene& scene, const WalkVertex& v, Rng& rng);
+
 // ---- subpaths (light_subpath.cpp, camera_subpath.cpp), Eq. 7.1 ----
 
 // The light subpath: at most maxDepth + 1 vertices (y_0 on a light, then one per bounce): lesson
-// 5's lightWalk, whose visitor stores each vertex. Fills beta, pdfFwd, the pdfRev of y_{i-2}
-// once y_i exists, the flags, and, after each vertex, updateMisSum(path, i, h). Clears path first.
+// 5's lightWalk, whose visitor stores each vertex, surviving by subpathContinuation (Eq. 7.1a) from
+// y_1 on. Fills beta, pdfFwd, the pdfRev of y_{i-2} once y_i exists, the flags, and, after each
+// vertex, updateMisSum(path, i, h). Clears path first.
 void lightSubpath(const Scene& scene, Rng& rng, int maxDepth, Heuristic h, Subpath& path);
 
 // What to do once a camera subpath vertex z_i (i >= 1) is stored, with its pdfFwd and misSum
@@ -95,7 +111,8 @@ using CameraVertexVisitor = std::function<bool(const Subpath& path)>;
 
 // The camera subpath through raster position `raster`: z_0 the camera point (cameraVertex of
 // camera.samplePoint(rng): the pinhole, or a model's point drawn from rng), then lesson 3's
-// cameraWalk, whose visitor stores one vertex per intersection and hands it to `visit` (if set); at
+// cameraWalk (surviving by subpathContinuation, Eq. 7.1a, from z_1 on), whose visitor stores one
+// vertex per intersection and hands it to `visit` (if set); at
 // most maxDepth + 2 vertices; a ray that leaves the scene ends it with a vertex at infinity if
 // there is a background. Clears path first.
 void cameraSubpath(const Scene& scene, Rng& rng, const Vec2& raster, int maxDepth, Heuristic h, Subpath& path,

@@ -29,6 +29,7 @@ Scattering scatteringAt(const Scene& scene, const PathVertex& lightSide, const P
     Scattering e;
     e.f = evalBSDF(scene.materials[size_t(cur.sp.material)], cur.sp.n, direction(cur, cameraSide),
                    direction(cur, lightSide));
+    if (isBlack(e.f)) return e;  // no contribution, nothing to weigh (a Phong lobe's back, a delta BSDF)
     e.pdfTowardsCamera = pdfScatter(scene, &lightSide, cur, cameraSide, Transport::Importance);
     e.pdfTowardsLight = pdfScatter(scene, &cameraSide, cur, lightSide, Transport::Radiance);
     return e;

@@ -8,7 +8,7 @@ namespace ps {
 
 void cameraSubpath(const Scene& scene, Rng& rng, const Vec2& raster, int maxDepth, Heuristic h, Subpath& path,
                    const CameraVertexVisitor& visit) {
-    //! TODO(07) The camera subpath through raster (Eq. 7.1, 7.3), as cameraSubpath in bpt.h states it, each vertex's
+    //! TODO(07) The camera subpath through raster (Eq. 7.1, 7.1a, 7.3), as cameraSubpath in bpt.h states it, each vertex's
     //!          densities by bpt.h's conventions and its misSum (Eq. 7.9). Pitfalls (README 6): pdfFwd evaluated from
     //!          the positions, not the walk's sample pdf; pdfRev of z_{i-2}, known once z_i exists.
     //! STUB (void)scene; (void)rng; (void)raster; (void)maxDepth; (void)h; (void)visit;
@@ -24,7 +24,9 @@ void cameraSubpath(const Scene& scene, Rng& rng, const Vec2& raster, int maxDept
     updateMisSum(path, 0, h);
 
     const Ray ray = camera.generateRay(raster, z0.p());
-    cameraWalk(scene, ray, rng, {maxDepth}, [&](const WalkVertex& w) {
+    WalkOptions opt(maxDepth);
+    opt.continuation = [&scene](const WalkVertex& v, Rng& r) { return subpathContinuation(scene, v, r); };
+    cameraWalk(scene, ray, rng, opt, [&](const WalkVertex& w) {
         if (!w.hit && scene.background < 0) return false;
         PathVertex v = w.hit ? surfaceVertex(scene, w.sp) : backgroundVertex(scene, -w.wo);
         v.beta = w.beta;

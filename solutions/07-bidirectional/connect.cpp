@@ -126,6 +126,7 @@ Connection connectVertices(const Scene& scene, const PathVertex* y, int s, const
     if (zEnd.infinite || yEnd.infinite) return c;
     if (direction(zEnd, yEnd) == Vec3(0.0f)) return c;
     const Scattering atY = scatteringAt(scene, y[s - 2], yEnd, zEnd);
+    if (isBlack(atY.f)) return c;
     const Scattering atZ = scatteringAt(scene, yEnd, zEnd, z[t - 2]);
     c.value = yEnd.beta * atY.f * geometryTerm(yEnd, zEnd) * atZ.f * zEnd.beta;
     if (isBlack(c.value)) return c;

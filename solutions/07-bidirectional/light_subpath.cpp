@@ -7,15 +7,17 @@
 namespace ps {
 
 void lightSubpath(const Scene& scene, Rng& rng, int maxDepth, Heuristic h, Subpath& path) {
-    //! TODO(07) The light subpath (Eq. 7.1, 7.3), as lightSubpath in bpt.h states it, y_0 with the flags of lesson 6's
-    //!          vertices and its origin density (0: no subpath). Pitfalls (README 6): pdfFwd evaluated from the
+    //! TODO(07) The light subpath (Eq. 7.1, 7.1a, 7.3), as lightSubpath in bpt.h states it, y_0 with the flags of lesson
+    //!          6's vertices and its origin density (0: no subpath). Pitfalls (README 6): pdfFwd evaluated from the
     //!          positions, not the sample's pdf; a reference into `path` dies at push_back.
     //! STUB (void)scene; (void)rng; (void)maxDepth; (void)h;
     //! STUB path.clear();
     //! STUB (void)PS_TODO("lesson 07: lightSubpath", 0);
     //! BEGIN
     path.clear();
-    lightWalk(scene, rng, {maxDepth}, [&](const WalkVertex& w, const LightPathStart& start) {
+    WalkOptions opt(maxDepth);
+    opt.continuation = [&scene](const WalkVertex& v, Rng& r) { return subpathContinuation(scene, v, r); };
+    lightWalk(scene, rng, opt, [&](const WalkVertex& w, const LightPathStart& start) {
         if (w.bounces == 0) {
             const Light& light = scene.lights[size_t(start.light)];
             PathVertex y0;

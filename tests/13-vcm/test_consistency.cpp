@@ -18,6 +18,11 @@
 // 0.17 ... 0.33, the mean -3.6 ... +2.8 %; with a fixed radius (alpha = 1): the ratio 0.83 ... 1.35,
 // the final relMSE 1.41 ... 1.77, the mean -8.6 ... -1.5 %; with a growing radius (alpha and
 // 1 - alpha swapped): 0.52 ... 0.79, 0.72 ... 0.96, -41 ... -35 %. The bounds lie between.
+// Measured again once lesson 7's light subpaths survived by the material (Eq. 7.1a), over
+// PATHSPACE_TEST_SEED 0-19 (2026-11-28): the ratio 0.13 ... 0.52 (median 0.27; a late firefly in
+// the caustic lifts the last relMSE of one seed to 0.33), the final relMSE 0.15 ... 0.33, the mean
+// -3.4 ... +3.9 %. The rate bound is 0.65 since (0.5 failed one seed in ten); a growing radius is
+// still caught by the final relMSE and the mean, a fixed one by all three.
 #include <algorithm>
 #include <memory>
 #include "image.h"
@@ -31,7 +36,7 @@ namespace {
 // r_1 = 0.04 R at 32 x 32 pixels (VcmOptions::radiusFactor is that at 512 x 512: 0.04 x 32 / 512).
 constexpr double kRadiusFactor = 0.04 * 32.0 / 512.0;
 constexpr int kIterations = 1024;
-constexpr double kRateBound = 0.5, kFinalBound = 0.5, kBiasBound = 0.06;
+constexpr double kRateBound = 0.65, kFinalBound = 0.5, kBiasBound = 0.06;
 
 // The caustic's pixels: brighter than 0.4 in the reference on the floor (the image's lower half),
 // and their eight neighbours.
