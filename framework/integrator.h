@@ -114,8 +114,18 @@ public:
     bool timeIsUp() const { return hasDeadline_ && clockSeconds(deadlineClock_) >= deadline_; }
     // A budget that is not positive and finite: none.
     void setDeadline(double secondsFromNow, TimeClock clock = TimeClock::Wall);
+    // What is left of the render's budget as an iteration starts (render() sets both before each
+    // one): the seconds to the deadline on the render's clock (infinity without --time), and the
+    // iterations still to render, this one included (-1 without --spp). An integrator that learns
+    // while it renders (a radiance field it samples) stops learning where nothing after would use
+    // what it learns (with --time, what it decides depends on the time, as the number of
+    // iterations of a timed render does).
+    double secondsLeft() const { return hasDeadline_ ? deadline_ - clockSeconds(deadlineClock_) : kInf; }
+    int iterationsLeft() const { return iterationsLeft_; }
+    void setIterationsLeft(int iterations) { iterationsLeft_ = iterations; }
 
 private:
+    int iterationsLeft_ = -1;
     bool hasDeadline_ = false;
     TimeClock deadlineClock_ = TimeClock::Wall;
     double deadline_ = 0.0;  // clockSeconds(deadlineClock_) at the deadline

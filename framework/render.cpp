@@ -61,6 +61,7 @@ RenderResult render(const Scene& scene, Integrator& integrator, const RenderOpti
         if (opt.seconds > 0.0 && elapsed >= opt.seconds) break;
         if (opt.spp <= 0 && opt.seconds <= 0.0) break;
         integrator.setDeadline(opt.seconds > 0.0 ? opt.seconds - elapsed : 0.0, opt.clock);  // none without --time
+        integrator.setIterationsLeft(opt.spp > 0 ? opt.spp - it : -1);
         t0 = clockSeconds(opt.clock);
         std::fill(iterImage.pixels.begin(), iterImage.pixels.end(), Color(0.0f));
         integrator.renderIteration(scene, static_cast<uint32_t>(it), opt.seed, iterImage, res.stats);

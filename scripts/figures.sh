@@ -201,8 +201,8 @@ if wanted 12; then
   done_fig "$d/side-room-equal-time.png, side-room-efficiency.md"
   s="$(scene door 128)"
   { echo "| --guide-budget (MB) | cells | field (MB) |"; echo "|---:|---:|---:|"
-    for b in 1 4 16 64; do
-      "$ps" render "$s" --algo pt-guided --spp "$(t 255 7)" --guide-budget "$b" --seed 1 --out "$work/12-mem.pfm" \
+    for b in 0.1 1 4 64; do
+      "$ps" render "$s" --algo pt-guided --spp "$(t 63 7)" --guide-budget "$b" --seed 1 --out "$work/12-mem.pfm" \
         --no-progress 2>/dev/null | sed -n "s/.*field: \([0-9]*\) cells.* records, \([0-9.]*\) MB/| $b | \1 | \2 |/p"
     done; } > "$d/memory.md"
   done_fig "$d/memory.md"

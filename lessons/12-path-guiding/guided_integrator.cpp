@@ -9,6 +9,10 @@
 //
 //   iteration i   belongs to pass k = floor(log2(i + 1)) (2^k iterations each); the first
 //                 iteration of a pass ends the one before first (GuideField::endPass);
+//   the last pass learns nothing (Müller et al. 2017, section 5.3): what it would learn no
+//                 iteration would sample. With --spp it is the pass the render ends in (the image
+//                 is the same as if it learnt); with --time, the pass after which the time left
+//                 could not hold a pass twice as long: it samples its field to the deadline;
 //   a pixel       one camera ray, its tree of paths depth first, all from the pixel's own generator
 //                 (taskRng(seed, iteration, pixel)); its records go to its task's list;
 //   after         the lists are added to the field in task order: the field, and every image after
@@ -100,6 +104,7 @@ struct GuidedSampler : DirectionSampler {
         const float alpha = alphaOf();
         if (!sampleGuided(scene.materials[size_t(v.sp.material)], v.sp.n, v.wo, guideOf(g, alpha), alpha, rng, s))
             return false;
+        if (!tree) return true;  // a pass that learns nothing keeps no tree
         GuideVertex x;
         x.from = tree->at(v.bounces);
         x.cell = int(lastCell);
@@ -136,13 +141,13 @@ int passOf(uint32_t iteration) {
 
 // One camera ray's estimate (lesson 3's MIS visitor on the guided walk) and its records; with
 // adrrs, the field's roulette and splitting as the walk's continuation rule.
-Color guidedLi(const Scene& scene, const GuideField& field, bool adrrs, const Ray& ray, Rng& rng, SampleTree& tree,
-               std::vector<RadianceRecord>& records, DecisionCounts& counts) {
+Color guidedLi(const Scene& scene, const GuideField& field, bool adrrs, bool learn, const Ray& ray, Rng& rng,
+               SampleTree& tree, std::vector<RadianceRecord>& records, DecisionCounts& counts) {
     const int maxDepth = scene.settings.maxDepth;
     tree.clear();
     GuidedSampler sampler;
     sampler.field = &field;
-    sampler.tree = &tree;
+    sampler.tree = learn ? &tree : nullptr;
     WalkOptions opt(maxDepth);
     opt.sampler = &sampler;
     float I = -1.0f;
@@ -163,6 +168,10 @@ Color guidedLi(const Scene& scene, const GuideField& field, bool adrrs, const Ra
         };
     Color L(0.0f);
     cameraWalk(scene, ray, rng, opt, [&](const WalkVertex& v) {
+        if (!learn) {
+            L += misEmission(scene, v) + misLightSample(scene, v, rng, maxDepth);
+            return true;
+        }
         GuideVertex& g = tree.reach(v);
         g.emitted = misEmission(scene, v);
         g.added = g.emitted + misLightSample(scene, v, rng, maxDepth);
@@ -173,7 +182,7 @@ Color guidedLi(const Scene& scene, const GuideField& field, bool adrrs, const Ra
         L += g.added;
         return true;
     });
-    radianceRecords(tree.vertices, records);
+    if (learn) radianceRecords(tree.vertices, records);
     return L;
 }
 
@@ -186,15 +195,29 @@ void GuidedPathTracer::renderIteration(const Scene& scene, uint32_t iteration, u
         if (budget_ > 0) settings.budget = budget_;
         field_ = GuideField(scene.bounds, settings);
         decisions_ = roulette_ = splits_ = 0;
+        learning_ = true;
+        lastPass_ = -1;
+        passStart_ = secondsLeft();
     }
     const int pass = passOf(iteration);
-    if (iteration > 0 && passOf(iteration - 1) != pass) field_.endPass(pass - 1);
+    if (learning_ && (iteration == 0 || passOf(iteration - 1) != pass)) {
+        if (iteration > 0) field_.endPass(pass - 1);
+        const double left = secondsLeft(), before = passStart_ - left;  // the pass before took `before`
+        passStart_ = left;
+        const bool endsRender = iterationsLeft() >= 0 && uint64_t(iterationsLeft()) <= (uint64_t(1) << pass);
+        const bool noTime = iteration > 0 && std::isfinite(left) && left < kLastPassRatio * before;
+        if (endsRender || noTime) {
+            learning_ = false;
+            lastPass_ = pass;
+            lastFrom_ = iteration;
+        }
+    }
     std::vector<std::vector<RadianceRecord>> lists(size_t(taskCount(out.width * out.height)));
     std::vector<DecisionCounts> counts(lists.size());
     std::vector<SampleTree> trees(lists.size());
     renderPixelTasks(seed, iteration, out, stats, false, [&](int pixel, Rng& rng, Task& task) {
         const Vec2 raster = jitteredRaster(pixel, out.width, rng);
-        return guidedLi(scene, field_, adrrs_, cameraRay(scene.camera, raster, rng), rng, trees[task.index],
+        return guidedLi(scene, field_, adrrs_, learning_, cameraRay(scene.camera, raster, rng), rng, trees[task.index],
                         lists[task.index], counts[task.index]);
     });
     for (size_t t = 0; t < lists.size(); ++t) {  // in task order
@@ -211,6 +234,12 @@ std::vector<std::string> GuidedPathTracer::report() const {
     s << "field: " << field_.cells() << " cells after " << field_.passes() << " passes of " << field_.records()
       << " records, " << double(field_.bytes()) / double(1 << 20) << " MB";
     std::vector<std::string> lines = {s.str()};
+    if (lastPass_ >= 0) {
+        std::ostringstream l;
+        l << "the last pass (" << lastPass_ << ", from iteration " << lastFrom_
+          << " on) sampled the field without learning";
+        lines.push_back(l.str());
+    }
     if (adrrs_) {
         std::ostringstream d;
         d.precision(3);

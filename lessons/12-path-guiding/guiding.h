@@ -297,6 +297,12 @@ Decision particleDecision(const AdjointCache& importance, const Scene& scene, co
 // The integrators (plumbing). "pt-guided" and "pt-guided-adrrs" (guided_integrator.cpp): lesson
 // 3's path tracer on the guided mixture, learning its field pass after pass; with ADRRS on the
 // field as the walk's continuation rule.
+//
+// The schedule's last pass (Müller et al. 2017, section 5.3): a render of T seconds stops
+// learning once the time left is below kLastPassRatio times the pass just ended (the next pass
+// would take about twice it and the one after four times: the one after could not finish), and
+// samples that field to the end, at least half of the render.
+constexpr double kLastPassRatio = 6.0;
 class GuidedPathTracer : public Integrator {
 public:
     // adrrs: "pt-guided-adrrs"; budget: the field's memory cap in bytes (--guide-budget), 0: the
@@ -312,6 +318,10 @@ private:
     bool adrrs_;
     size_t budget_;
     GuideField field_;
+    bool learning_ = true;    // whether this pass records (false from the last pass on)
+    int lastPass_ = -1;       // the last pass, once known
+    uint32_t lastFrom_ = 0;   // its first iteration
+    double passStart_ = 0.0;  // secondsLeft() as the current pass began
     uint64_t decisions_ = 0, roulette_ = 0, splits_ = 0;
 };
 
