@@ -105,8 +105,8 @@ private:
         uint32_t left = 0;            // inner node: its children left and left + 1; leaf: 0
     };
     void buildBinary(uint32_t node, std::vector<BinaryNode>& bin, std::vector<AABB>& boxes,
-                     std::vector<Vec3>& centroids, uint32_t begin, uint32_t end, int depth, const AABB& box,
-                     const AABB& cbox);
+                     std::vector<Vec3>& centroids, std::vector<uint32_t>& itemBins, uint32_t begin, uint32_t end,
+                     int depth, const AABB& box, const AABB& cbox);
     uint32_t collapse(const std::vector<BinaryNode>& bin, uint32_t node, int depth);
     static void setChild(WideNode& w, int k, const AABB& box, uint32_t child, uint32_t count);
     WideNodes nodes_;
