@@ -156,8 +156,8 @@ void BVH::buildBinary(uint32_t self, std::vector<BinaryNode>& bin, std::vector<A
     // What the children bound, with no pass of their own over the items: their boxes are the
     // unions of their bins, their centroids' boxes are gathered while partitioning. The
     // partition reads each item's bin as the binning stored it (itemBins: a byte per axis)
-    // instead of computing it again: the same tree, bunny 25.3 -> 23.5 ms, motorbike 121 -> 114 ms
-    // CPU (bench/README.md).
+    // instead of computing it again: the same tree, built in 0.94 (bunny) and 0.98 (motorbike) of
+    // the CPU time (medians of alternated runs; 0.9-1.0 each; bench/README.md, issue 30).
     AABB leftBox, leftCbox, rightBox, rightCbox;
     if (bestAxis >= 0 && (bestCost < leafCost || count > kMaxLeafSize)) {
         for (int b = 0; b < kBins; ++b) (b < bestSplit ? leftBox : rightBox).expand(binBox[bestAxis][b]);
