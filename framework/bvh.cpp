@@ -5,7 +5,8 @@ namespace ps {
 
 namespace {
 constexpr uint32_t kSplitSamples = 64;  // a larger node picks its split from a sample of its items
-}
+static_assert(BVH::kBins <= 256, "itemBins keeps an item's bin along each axis in one byte");
+}  // namespace
 
 void BVH::build(const std::vector<AABB>& primBoxes) {
     nodes_.clear();
