@@ -96,7 +96,23 @@ public:
     // one item (primitive order()[item]) and, on a closer hit, shortens ray.tMax and returns
     // true. With anyHit the traversal stops at the first hit.
     template <class HitItem>
-    bool traverse(Ray& ray, bool anyHit, HitItem&& hitItem) const;
+    bool traverse(Ray& ray, bool anyHit, HitItem&& hitItem) const {
+        return traverseLeaves(ray, anyHit, [&](uint32_t first, uint32_t count, Ray& r) {
+            bool hit = false;
+            for (uint32_t i = first; i < first + count; ++i) {
+                if (hitItem(i, r)) {
+                    hit = true;
+                    if (anyHit) return true;
+                }
+            }
+            return hit;
+        });
+    }
+    // The same, a leaf at a time: hitLeaf(first, count, ray) tests items [first, first + count)
+    // (in that order, so that equal distances keep the same item) and says whether one was hit,
+    // with anyHit as soon as one is (Scene rules out most of a leaf's triangles at once).
+    template <class HitLeaf>
+    bool traverseLeaves(Ray& ray, bool anyHit, HitLeaf&& hitLeaf) const;
 
 private:
     struct BinaryNode {
@@ -147,8 +163,8 @@ inline BoxHits intersectBoxes(const WideNode& n, const BoxRay& r, float tMax) {
     return h;
 }
 
-template <class HitItem>
-bool BVH::traverse(Ray& ray, bool anyHit, HitItem&& hitItem) const {
+template <class HitLeaf>
+bool BVH::traverseLeaves(Ray& ray, bool anyHit, HitLeaf&& hitLeaf) const {
     if (nodes_.empty()) return false;
     const BoxRay boxRay(ray);
     struct Entry {
@@ -168,11 +184,9 @@ bool BVH::traverse(Ray& ray, bool anyHit, HitItem&& hitItem) const {
         // (Read field by field: a copy of the whole entry went through memory, 6 % of the time.)
         const uint32_t child = stack[top].slot.child, count = stack[top].slot.count;
         if (count != WideNode::kInner) {
-            for (uint32_t i = child; i < child + count; ++i) {
-                if (hitItem(i, ray)) {
-                    hit = true;
-                    if (anyHit) return true;
-                }
+            if (hitLeaf(child, count, ray)) {
+                hit = true;
+                if (anyHit) return true;
             }
             continue;
         }
