@@ -57,8 +57,7 @@ void Scene::finalize() {
         items_[i].prim = p;
         items_[i].material = pr.material;
         items_[i].light = pr.light;
-        if (pr.shape == ShapeKind::Triangle) items_[i].tri = triangles[pr.index];
-        else items_[i].sphere = pr.index;
+        if (pr.shape == ShapeKind::Sphere) items_[i].sphere = pr.index;
     }
     // leafCoords_ (scene.h): every leaf of the tree in chunks of at most kLeafLanes items; a
     // chunk's lanes past its items read the next ones (padded at the end), and are not used.
@@ -69,11 +68,13 @@ void Scene::finalize() {
             for (uint32_t f = slot.child; f < slot.child + slot.count; f += kLeafLanes) {
                 const uint32_t n = std::min(kLeafLanes, slot.child + slot.count - f);
                 for (uint32_t j = 0; j < n; ++j) {
-                    const Item& it = items_[f + j];
-                    const Vec3 v[3] = {it.tri.p0, it.tri.p1, it.tri.p2};
+                    const Primitive& pr = prims[items_[f + j].prim];
+                    const Triangle t = pr.shape == ShapeKind::Triangle ? triangles[pr.index] : Triangle();
+                    const Vec3 v[3] = {t.p0, t.p1, t.p2};
                     for (uint32_t k = 0; k < 9; ++k)
-                        leafCoords_[9 * f + k * n + j] =
-                            it.sphere == kNoPrimitive ? v[k / 3][int(k % 3)] : std::numeric_limits<float>::quiet_NaN();
+                        leafCoords_[9 * f + k * n + j] = pr.shape == ShapeKind::Triangle
+                                                             ? v[k / 3][int(k % 3)]
+                                                             : std::numeric_limits<float>::quiet_NaN();
                 }
             }
         }
@@ -397,6 +398,15 @@ struct EdgeRay {
 // and under 2^-15 M N when N > 1 (then M > 1). So wherever these signs are apart by m, the
 // test's are apart. Nothing is rejected where M >= 2^60 (no overflow below), nor where a value
 // is NaN (a sphere's lanes, NaN coordinates or direction: NaN compares false).
+// Triangle j of a chunk of n (Scene::leafCoords_).
+Triangle leafTriangle(const float* coords, uint32_t n, uint32_t j) {
+    Triangle t;
+    t.p0 = Vec3(coords[j], coords[n + j], coords[2 * n + j]);
+    t.p1 = Vec3(coords[3 * n + j], coords[4 * n + j], coords[5 * n + j]);
+    t.p2 = Vec3(coords[6 * n + j], coords[7 * n + j], coords[8 * n + j]);
+    return t;
+}
+
 void leafCandidates(const float* coords, uint32_t n, const EdgeRay& r, int keep[]) {
     const float *x[3], *y[3], *z[3];  // the vertices' coordinates along kx, ky, kz
     for (int i = 0; i < 3; ++i) {
@@ -425,7 +435,7 @@ void leafCandidates(const float* coords, uint32_t n, const EdgeRay& r, int keep[
 
 bool Scene::closestHit(Ray& ray, SurfacePoint& sp) const {
     std::optional<WatertightRay> wr;  // built at the first triangle the ray reaches (many reach none)
-    uint32_t hitItem = kNoPrimitive;
+    uint32_t hitItem = kNoPrimitive, hitChunk = 0, hitN = 0;  // the item, its leaf chunk's first and size
     float hb1 = 0.0f, hb2 = 0.0f;
     const EdgeRay er(ray);
     bvh.traverseLeaves(ray, false, [&](uint32_t first, uint32_t count, Ray& r) {
@@ -441,12 +451,14 @@ bool Scene::closestHit(Ray& ray, SurfacePoint& sp) const {
                 if (it.prim == r.ignorePrim) continue;
                 if (it.sphere == kNoPrimitive) {
                     if (!wr) wr.emplace(r);
-                    if (!intersectTriangle(r, *wr, it.tri, t, b1, b2)) continue;
+                    if (!intersectTriangle(r, *wr, leafTriangle(&leafCoords_[9 * f], n, j), t, b1, b2)) continue;
                 } else if (!intersectSphere(r, spheres[it.sphere], t)) {
                     continue;
                 }
                 r.tMax = t;
                 hitItem = f + j;
+                hitChunk = f;
+                hitN = n;
                 hb1 = b1;
                 hb2 = b2;
                 hit = true;
@@ -462,8 +474,9 @@ bool Scene::closestHit(Ray& ray, SurfacePoint& sp) const {
         return true;
     }
     // The point by barycentric interpolation: more accurate than o + t d far from the origin.
-    const Vec3 p = (1.0f - hb1 - hb2) * it.tri.p0 + hb1 * it.tri.p1 + hb2 * it.tri.p2;
-    sp = trianglePoint(it.tri, p, it.prim, it.material, it.light);
+    const Triangle tri = leafTriangle(&leafCoords_[9 * hitChunk], hitN, hitItem - hitChunk);
+    const Vec3 p = (1.0f - hb1 - hb2) * tri.p0 + hb1 * tri.p1 + hb2 * tri.p2;
+    sp = trianglePoint(tri, p, it.prim, it.material, it.light);
     return true;
 }
 
@@ -486,7 +499,7 @@ bool Scene::anyHit(const Ray& ray) const {
                     continue;
                 }
                 if (!wr) wr.emplace(rr);
-                if (intersectTriangle(rr, *wr, it.tri, t, b1, b2)) return true;
+                if (intersectTriangle(rr, *wr, leafTriangle(&leafCoords_[9 * f], n, j), t, b1, b2)) return true;
             }
         }
         return false;
