@@ -366,7 +366,7 @@ namespace {
 // What leafCandidates needs of a ray, once per ray: the watertight test's shear (Eq. 0.3,
 // without the swap of kx and ky, which flips the sign of all three edge functions at once).
 struct EdgeRay {
-    float o[3], Sx, Sy;
+    float o[3], Sx, Sy, sz, dz;  // sz: the sign of d_kz, dz = |d_kz| grown by 2^-18
     int kx, ky, kz;
     explicit EdgeRay(const Ray& r) {
         const Vec3 a = glm::abs(r.d);
@@ -377,6 +377,8 @@ struct EdgeRay {
         const float* d = &r.d.x;
         Sx = d[kx] / d[kz];
         Sy = d[ky] / d[kz];
+        sz = d[kz] < 0.0f ? -1.0f : 1.0f;
+        dz = std::abs(d[kz]) * (1.0f + 0x1p-18f);
     }
 };
 
@@ -407,17 +409,20 @@ Triangle leafTriangle(const float* coords, uint32_t n, uint32_t j) {
     return t;
 }
 
-void leafCandidates(const float* coords, uint32_t n, const EdgeRay& r, int keep[]) {
+void leafCandidates(const float* coords, uint32_t n, const EdgeRay& r, float tMax, int keep[]) {
     const float *x[3], *y[3], *z[3];  // the vertices' coordinates along kx, ky, kz
     for (int i = 0; i < 3; ++i) {
         x[i] = coords + (3 * i + r.kx) * n;
         y[i] = coords + (3 * i + r.ky) * n;
         z[i] = coords + (3 * i + r.kz) * n;
     }
+    const float zFar = tMax * r.dz;
     for (uint32_t j = 0; j < Scene::kLeafLanes; ++j) {
-        float X[3], Y[3], N = 0.0f, Z = 0.0f;
+        float X[3], Y[3], N = 0.0f, Z = 0.0f, zMin = kInf, zMax = -kInf;
         for (int i = 0; i < 3; ++i) {
-            const float pz = z[i][j] - r.o[r.kz];
+            const float pz = z[i][j] - r.o[r.kz], sz = r.sz * pz;
+            zMin = sz < zMin ? sz : zMin;
+            zMax = sz > zMax ? sz : zMax;
             X[i] = (x[i][j] - r.o[r.kx]) - r.Sx * pz;
             Y[i] = (y[i][j] - r.o[r.ky]) - r.Sy * pz;
             const float ax = std::abs(X[i]), ay = std::abs(Y[i]), az = std::abs(pz);
@@ -428,7 +433,8 @@ void leafCandidates(const float* coords, uint32_t n, const EdgeRay& r, int keep[
         const float U = X[2] * Y[1] - Y[2] * X[1], V = X[0] * Y[2] - Y[0] * X[2], W = X[1] * Y[0] - Y[1] * X[0];
         const float M = N + Z, m = 0x1p-15f * M * N + 0x1p-32f * M * M + 0x1p-140f;
         const int neg = (U < -m) | (V < -m) | (W < -m), pos = (U > m) | (V > m) | (W > m);
-        keep[j] = !(neg & pos & (M < 0x1p60f));
+        const int behind = zMax < -0x1p-20f * Z, beyond = zMin > zFar;
+        keep[j] = !((neg & pos & (M < 0x1p60f)) | behind | beyond);
     }
 }
 }  // namespace
@@ -443,7 +449,7 @@ bool Scene::closestHit(Ray& ray, SurfacePoint& sp) const {
         for (uint32_t f = first; f < first + count; f += kLeafLanes) {
             const uint32_t n = std::min(kLeafLanes, first + count - f);
             int keep[kLeafLanes];
-            leafCandidates(&leafCoords_[9 * f], n, er, keep);
+            leafCandidates(&leafCoords_[9 * f], n, er, r.tMax, keep);
             for (uint32_t j = 0; j < n; ++j) {
                 if (!keep[j]) continue;
                 const Item& it = items_[f + j];
@@ -488,7 +494,7 @@ bool Scene::anyHit(const Ray& ray) const {
         for (uint32_t f = first; f < first + count; f += kLeafLanes) {
             const uint32_t n = std::min(kLeafLanes, first + count - f);
             int keep[kLeafLanes];
-            leafCandidates(&leafCoords_[9 * f], n, er, keep);
+            leafCandidates(&leafCoords_[9 * f], n, er, rr.tMax, keep);
             for (uint32_t j = 0; j < n; ++j) {
                 if (!keep[j]) continue;
                 const Item& it = items_[f + j];
