@@ -382,6 +382,15 @@ struct EdgeRay {
     }
 };
 
+// Triangle j of a chunk of n (Scene::leafCoords_).
+Triangle leafTriangle(const float* coords, uint32_t n, uint32_t j) {
+    Triangle t;
+    t.p0 = Vec3(coords[j], coords[n + j], coords[2 * n + j]);
+    t.p1 = Vec3(coords[3 * n + j], coords[4 * n + j], coords[5 * n + j]);
+    t.p2 = Vec3(coords[6 * n + j], coords[7 * n + j], coords[8 * n + j]);
+    return t;
+}
+
 // Which of a chunk of a leaf's triangles (n <= kLeafLanes of them, coordinates as
 // Scene::leafCoords_ keeps them) the ray may hit: keep[j] = 0 only where lesson 0's watertight
 // test is sure to say no, so that the student's test still decides every hit, bit for bit, but
@@ -400,15 +409,11 @@ struct EdgeRay {
 // and under 2^-15 M N when N > 1 (then M > 1). So wherever these signs are apart by m, the
 // test's are apart. Nothing is rejected where M >= 2^60 (no overflow below), nor where a value
 // is NaN (a sphere's lanes, NaN coordinates or direction: NaN compares false).
-// Triangle j of a chunk of n (Scene::leafCoords_).
-Triangle leafTriangle(const float* coords, uint32_t n, uint32_t j) {
-    Triangle t;
-    t.p0 = Vec3(coords[j], coords[n + j], coords[2 * n + j]);
-    t.p1 = Vec3(coords[3 * n + j], coords[4 * n + j], coords[5 * n + j]);
-    t.p2 = Vec3(coords[6 * n + j], coords[7 * n + j], coords[8 * n + j]);
-    return t;
-}
-
+// It also rejects a triangle whose three vertices lie behind the origin along the ray (their z
+// times the sign of d_kz below -2^-20 of the largest |z|) or all beyond tMax (z above
+// tMax |d_kz| (1 + 2^-18)): where the test accepts, U, V, W have one sign and its scaled
+// distance T = U Az + V Bz + W Cz (Eq. 0.6) lies, to 3 u, within det times the range of Az, Bz,
+// Cz (each within 3 u of z / d_kz), and it compares T with 0 and tMax det (to 3 u).
 void leafCandidates(const float* coords, uint32_t n, const EdgeRay& r, float tMax, int keep[]) {
     const float *x[3], *y[3], *z[3];  // the vertices' coordinates along kx, ky, kz
     for (int i = 0; i < 3; ++i) {
@@ -418,7 +423,7 @@ void leafCandidates(const float* coords, uint32_t n, const EdgeRay& r, float tMa
     }
     const float zFar = tMax * r.dz;
     for (uint32_t j = 0; j < Scene::kLeafLanes; ++j) {
-        float X[3], Y[3], N = 0.0f, Z = 0.0f, zMin = kInf, zMax = -kInf;
+        float X[3], Y[3], N = 0.0f, Z = 0.0f, zMin = r.sz * (z[0][j] - r.o[r.kz]), zMax = zMin;  // (NaN stays)
         for (int i = 0; i < 3; ++i) {
             const float pz = z[i][j] - r.o[r.kz], sz = r.sz * pz;
             zMin = sz < zMin ? sz : zMin;
