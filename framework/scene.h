@@ -157,20 +157,23 @@ public:
     SurfacePoint surfacePoint(uint32_t prim, const Vec3& p) const;
 
 private:
-    // What a hit needs, in the BVH's item order (a leaf's primitives are adjacent), so that no
-    // ray looks up prims (reading prims[] for the material cost a cache miss per hit, 8-13 % of
-    // the speed of incoherent rays, bench/README.md).
+    // What the primitive test reads, in the BVH's item order (a leaf's primitives are adjacent):
+    // the triangle itself, no lookup through prims and triangles; and what the surface point of
+    // a hit needs, so that no ray looks up prims (52 bytes: reading prims[] for the material cost
+    // a cache miss per hit, 8-13 % of the speed of incoherent rays, bench/README.md).
     struct Item {
+        Triangle tri;                    // the triangle (unused for a sphere)
         uint32_t prim = kNoPrimitive;    // index into prims
         uint32_t sphere = kNoPrimitive;  // index into spheres, kNoPrimitive for a triangle
         int material = -1, light = -1;   // prims[prim]'s, for the surface point of a hit
     };
     std::vector<Item, LargePageAllocator<Item>> items_;
-    // The triangles in the same order, what the triangle test reads (no lookup through prims
-    // and triangles), a leaf's (up to kLeafLanes) side by side as structure of arrays, so that
-    // one SIMD filter rules out at once those of a leaf the ray misses (scene.cpp,
+    // The same triangles again, a leaf's (up to kLeafLanes) side by side as structure of arrays,
+    // for the SIMD filter that rules out at once those of a leaf the ray misses (scene.cpp,
     // leafCandidates): the chunk of items [f, f + n) of a leaf keeps coordinate k (p0.x, p0.y,
     // p0.z, p1.x, ..., p2.z) of item f + j at leafCoords_[9 f + k n + j]; NaN for a sphere.
+    // (Reading the triangle the test is called with from here instead of Item costs 45
+    // instructions a call, more than what Item's smaller size gives back: bench/README.md.)
     std::vector<float, LargePageAllocator<float>> leafCoords_;
     // intersect() and occluded() run one of two copies of the same code: for AVX2, when the CPU
     // has it, or for the x86-64 baseline (scene.cpp; useAvx2Tracing).
