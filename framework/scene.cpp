@@ -428,7 +428,7 @@ void leafCandidates(const float* coords, uint32_t n, const EdgeRay& r, float tMa
         const float U = X[2] * Y[1] - Y[2] * X[1], V = X[0] * Y[2] - Y[0] * X[2], W = X[1] * Y[0] - Y[1] * X[0];
         const float M = N + Z, m = 0x1p-15f * M * N + 0x1p-32f * M * M + 0x1p-140f;
         const int neg = (U < -m) | (V < -m) | (W < -m), pos = (U > m) | (V > m) | (W > m);
-        const int behind = zMax < -0x1p-20f * Z, beyond = zMin > zFar;
+        const int behind = zMax<-0x1p-20f * Z, beyond = zMin> zFar;
         keep[j] = !((neg & pos & (M < 0x1p60f)) | behind | beyond);
     }
 }

@@ -98,7 +98,7 @@ struct Quad {
 class Scene {
 public:
     static constexpr uint32_t kLeafLanes = 8;  // triangles of a leaf ruled out at once (leafCoords_)
-    std::string path;  // the scene file, for messages
+    std::string path;                          // the scene file, for messages
     // The files it was read from: the scene file (loadScene), then its meshes and their material
     // libraries, in the order named. The program's commands never write over any of them.
     std::vector<std::string> inputFiles;

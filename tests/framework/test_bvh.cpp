@@ -419,6 +419,47 @@ TEST_CASE("bvh: huge and tiny scales, and far from the origin") {
     }
 }
 
+// Scene rules out a leaf's triangles the ray misses before it calls the triangle test
+// (leafCandidates, scene.cpp): it must never rule out one the test accepts. Rays aimed exactly
+// at the vertices and edges of a bumpy grid, and a float step beside them, from near and far,
+// at tiny and huge scales and far from the origin, where its margin is smallest.
+TEST_CASE("bvh: rays through the vertices and edges of a mesh equal brute force, near and far") {
+    Rng rng(808);
+    const int n = 24;  // n x n quads, two triangles each
+    std::vector<Vec3> v;
+    for (int j = 0; j <= n; ++j)
+        for (int i = 0; i <= n; ++i) v.push_back(Vec3(float(i) / n, float(j) / n, 0.02f * rng.uniform()));
+    std::vector<Triangle> grid;
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            const Vec3 &a = v[size_t(j * (n + 1) + i)], &b = v[size_t(j * (n + 1) + i + 1)];
+            const Vec3 &c = v[size_t((j + 1) * (n + 1) + i)], &d = v[size_t((j + 1) * (n + 1) + i + 1)];
+            grid.push_back({a, b, d});
+            grid.push_back({a, d, c});
+        }
+    for (const std::pair<float, float>& scaleShift :
+         {std::pair{1.0f, 0.0f}, std::pair{1e-18f, 0.0f}, std::pair{1e15f, 0.0f}, std::pair{1.0f, 1e3f}}) {
+        const float scale = scaleShift.first, shift = scaleShift.second;
+        std::vector<Triangle> tris = grid;
+        for (Triangle& t : tris)
+            for (Vec3* p : {&t.p0, &t.p1, &t.p2}) *p = *p * scale + Vec3(shift);
+        const Scene s = makeScene(tris, {});
+        std::vector<Ray> rays;
+        for (int k = 0; k < 2000; ++k) {
+            const Triangle& t = tris[rng.nextU32() % tris.size()];
+            const Vec3 a = k % 3 == 0 ? t.p0 : k % 3 == 1 ? t.p1 : t.p2, b = k % 3 == 0 ? t.p1 : t.p2;
+            Vec3 target = k % 4 == 0 ? a : a + (k % 4 == 1 ? 0.5f : rng.uniform()) * (b - a);
+            if (k % 5 == 0) target.x = std::nextafter(target.x, k % 2 ? kInf : -kInf);
+            const float dist = (k % 2 ? 3.0f : 3e3f) * scale;  // near, and far: a grid a few pixels wide
+            const Vec3 o = target + dist * Vec3(rng.uniform() - 0.5f, rng.uniform() - 0.5f, 1.0f);
+            rays.push_back(Ray(o, glm::normalize(target - o), k % 7 == 0 ? 1.5f * dist : kInf));
+        }
+        INFO("scale " << scale << ", moved by " << shift);
+        const int bad = compareAll(s, rays);
+        CHECK_MESSAGE(bad == 0, "expected 0 disagreements with brute force, got " << bad);
+    }
+}
+
 TEST_CASE("bvh: traverse visits each leaf item at most once, nearest box first") {
     // A row of 64 unit squares along +x, a ray along the row: the items come in order of
     // distance, each once, and the first hit ends an any-hit traversal.
