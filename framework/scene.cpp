@@ -434,6 +434,15 @@ void leafCandidates(const float* coords, uint32_t n, const EdgeRay& r, float tMa
 }
 }  // namespace
 
+bool leafFilterKeeps(const Ray& ray, const Triangle& tri) {
+    float coords[9 + Scene::kLeafLanes] = {};  // a chunk of one, and the lanes past it
+    const Vec3 v[3] = {tri.p0, tri.p1, tri.p2};
+    for (int k = 0; k < 9; ++k) coords[k] = v[k / 3][k % 3];
+    int keep[Scene::kLeafLanes];
+    leafCandidates(coords, 1, EdgeRay(ray), ray.tMax, keep);
+    return keep[0] != 0;
+}
+
 bool Scene::closestHit(Ray& ray, SurfacePoint& sp) const {
     std::optional<WatertightRay> wr;  // built at the first triangle the ray reaches (many reach none)
     uint32_t hitItem = kNoPrimitive;

@@ -186,6 +186,10 @@ private:
     void findSurfacePointLights();
 };
 
+// Whether Scene::intersect's leaf filter (scene.cpp, leafCandidates) passes triangle tri on to
+// intersectTriangle for this ray: it must whenever intersectTriangle accepts it (test_bvh.cpp).
+bool leafFilterKeeps(const Ray& ray, const Triangle& tri);
+
 // Rays traced by this thread since the last call (for rays/s in render summaries).
 uint64_t takeRayCount();
 
