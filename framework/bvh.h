@@ -31,6 +31,7 @@
 // the closest hit found since it was pushed is dropped without being looked at.
 #pragma once
 #include <cstdint>
+#include <cstring>
 #include <vector>
 #include "geometry.h"
 #include "large_pages.h"
@@ -40,17 +41,29 @@ namespace ps {
 struct alignas(64) WideNode {
     static constexpr int kWidth = 8;
     static constexpr uint32_t kInner = 0xffffffffu;  // count of an inner child
-    float corner[2][3][kWidth];
+    float origin[3];        // the lower corner of the node's box (its children's union)
+    uint8_t stepBits[3];    // the grid step along each axis, 2^e: the float's exponent bits, e + 127
+    uint8_t q[2][3][kWidth];  // each child's planes in grid steps from origin: q[side][axis][child]
     struct Slot {
         uint32_t child, count;
     } slot[kWidth];
+    float step(int a) const {  // 2^e, from its exponent bits (no call, no table)
+        const uint32_t bits = uint32_t(stepBits[a]) << 23;
+        float s;
+        std::memcpy(&s, &bits, sizeof s);
+        return s;
+    }
+    // A plane of child c: origin + q * 2^e, one rounding (q * 2^e is exact); the build checked
+    // this very float against the child's own box.
+    float plane(int side, int a, int c) const { return origin[a] + float(q[side][a][c]) * step(a); }
     AABB box(int c) const {
         AABB b;
-        b.lo = Vec3(corner[0][0][c], corner[0][1][c], corner[0][2][c]);
-        b.hi = Vec3(corner[1][0][c], corner[1][1][c], corner[1][2][c]);
+        b.lo = Vec3(plane(0, 0, c), plane(0, 1, c), plane(0, 2, c));
+        b.hi = Vec3(plane(1, 0, c), plane(1, 1, c), plane(1, 2, c));
         return b;
     }
 };
+static_assert(sizeof(WideNode) == 128, "a wide node fills two cache lines: the boxes, then the slots");
 
 // What the slab test needs of a ray, computed once per ray: the origin, 1/d (+-inf along an
 // axis-parallel direction; d + 0 turns a -0 into +0, so such an axis always gives +inf), 1/d
@@ -108,7 +121,8 @@ private:
                      std::vector<Vec3>& centroids, std::vector<uint32_t>& itemBins, uint32_t begin, uint32_t end,
                      int depth, const AABB& box, const AABB& cbox);
     uint32_t collapse(const std::vector<BinaryNode>& bin, uint32_t node, int depth);
-    static void setChild(WideNode& w, int k, const AABB& box, uint32_t child, uint32_t count);
+    static void setChild(WideNode& w, int k, uint32_t child, uint32_t count);
+    static void setBoxes(WideNode& w, const AABB (&boxes)[WideNode::kWidth]);
     WideNodes nodes_;
     std::vector<uint32_t> order_;
     AABB bounds_;
@@ -127,17 +141,23 @@ private:
 // plane leaves t0 or t1 as it was (the ray is in the slab). t0 only grows and t1 only shrinks:
 // one test at the end.
 inline BoxHits intersectBoxes(const WideNode& n, const BoxRay& r, float tMax) {
-    const float *near[3], *far[3];
+    int32_t q[2][3][WideNode::kWidth];  // widened first: one loop of 48 the compiler vectorises
+    for (int i = 0; i < 2 * 3 * WideNode::kWidth; ++i) (&q[0][0][0])[i] = (&n.q[0][0][0])[i];
+    const int32_t *near[3], *far[3];
+    float step[3];
     for (int a = 0; a < 3; ++a) {
-        near[a] = n.corner[r.nearSide[a]][a];  // (an index, not a branch, per node)
-        far[a] = n.corner[1 - r.nearSide[a]][a];
+        near[a] = q[r.nearSide[a]][a];  // (an index, not a branch, per node)
+        far[a] = q[1 - r.nearSide[a]][a];
+        step[a] = n.step(a);
     }
     BoxHits h;
     for (int c = 0; c < WideNode::kWidth; ++c) {
         float t0 = 0.0f, t1 = tMax;
         for (int a = 0; a < 3; ++a) {
-            const float tNear = (near[a][c] - r.org[a]) * r.inv[a];
-            const float tFar = (far[a][c] - r.org[a]) * r.invFar[a];
+            const float pNear = n.origin[a] + float(near[a][c]) * step[a];  // = n.plane(): see there
+            const float pFar = n.origin[a] + float(far[a][c]) * step[a];
+            const float tNear = (pNear - r.org[a]) * r.inv[a];
+            const float tFar = (pFar - r.org[a]) * r.invFar[a];
             t0 = tNear > t0 ? tNear : t0;
             t1 = tFar < t1 ? tFar : t1;
         }
