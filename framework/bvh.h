@@ -41,8 +41,8 @@ namespace ps {
 struct alignas(64) WideNode {
     static constexpr int kWidth = 8;
     static constexpr uint32_t kInner = 0xffffffffu;  // count of an inner child
-    float origin[3];        // the lower corner of the node's box (its children's union)
-    uint8_t stepBits[3];    // the grid step along each axis, 2^e: the float's exponent bits, e + 127
+    float origin[3];                                 // the lower corner of the node's box (its children's union)
+    uint8_t stepBits[3];      // the grid step along each axis, 2^e: the float's exponent bits, e + 127
     uint8_t q[2][3][kWidth];  // each child's planes in grid steps from origin: q[side][axis][child]
     struct Slot {
         uint32_t child, count;
@@ -141,23 +141,28 @@ private:
 // plane leaves t0 or t1 as it was (the ray is in the slab). t0 only grows and t1 only shrinks:
 // one test at the end.
 inline BoxHits intersectBoxes(const WideNode& n, const BoxRay& r, float tMax) {
-    int32_t q[2][3][WideNode::kWidth];  // widened first: one loop of 48 the compiler vectorises
-    for (int i = 0; i < 2 * 3 * WideNode::kWidth; ++i) (&q[0][0][0])[i] = (&n.q[0][0][0])[i];
-    const int32_t *near[3], *far[3];
-    float step[3];
+    // The near and far planes of each child along each axis (WideNode::plane), the grid steps
+    // first widened to int, 8 at a time (so that GCC loads and widens 8 bytes in one instruction).
+    float near[3][WideNode::kWidth], far[3][WideNode::kWidth];
     for (int a = 0; a < 3; ++a) {
-        near[a] = q[r.nearSide[a]][a];  // (an index, not a branch, per node)
-        far[a] = q[1 - r.nearSide[a]][a];
-        step[a] = n.step(a);
+        const uint8_t *qNear = n.q[r.nearSide[a]][a], *qFar = n.q[1 - r.nearSide[a]][a];  // (an index, not a branch)
+        int32_t iNear[WideNode::kWidth], iFar[WideNode::kWidth];
+        for (int c = 0; c < WideNode::kWidth; ++c) {
+            iNear[c] = qNear[c];
+            iFar[c] = qFar[c];
+        }
+        const float step = n.step(a);
+        for (int c = 0; c < WideNode::kWidth; ++c) {
+            near[a][c] = n.origin[a] + float(iNear[c]) * step;
+            far[a][c] = n.origin[a] + float(iFar[c]) * step;
+        }
     }
     BoxHits h;
     for (int c = 0; c < WideNode::kWidth; ++c) {
         float t0 = 0.0f, t1 = tMax;
         for (int a = 0; a < 3; ++a) {
-            const float pNear = n.origin[a] + float(near[a][c]) * step[a];  // = n.plane(): see there
-            const float pFar = n.origin[a] + float(far[a][c]) * step[a];
-            const float tNear = (pNear - r.org[a]) * r.inv[a];
-            const float tFar = (pFar - r.org[a]) * r.invFar[a];
+            const float tNear = (near[a][c] - r.org[a]) * r.inv[a];
+            const float tFar = (far[a][c] - r.org[a]) * r.invFar[a];
             t0 = tNear > t0 ? tNear : t0;
             t1 = tFar < t1 ? tFar : t1;
         }
