@@ -1,5 +1,4 @@
 #include "bvh.h"
-#include <cmath>
 #include <numeric>
 
 namespace ps {
@@ -38,64 +37,21 @@ void BVH::build(const std::vector<AABB>& primBoxes) {
         collapse(bin, 0, 1);
     } else {
         nodes_.resize(1);
-        AABB boxes[WideNode::kWidth];  // all empty but the first
-        boxes[0] = bin[0].box;
-        setChild(nodes_[0], 0, 0, n);
-        for (int k = 1; k < WideNode::kWidth; ++k) setChild(nodes_[0], k, 0, 0);
-        setBoxes(nodes_[0], boxes);
+        setChild(nodes_[0], 0, bin[0].box, 0, n);
+        for (int k = 1; k < WideNode::kWidth; ++k) setChild(nodes_[0], k, AABB(), 0, 0);
         depth_ = 1;
     }
 }
 
 // Slot k of a wide node: an inner child (count = kInner, child = its index in nodes_), a leaf
-// (child = its first item) or nothing: a leaf of no items (its box: see setBoxes).
-void BVH::setChild(WideNode& w, int k, uint32_t child, uint32_t count) { w.slot[k] = {child, count}; }
-
-// The boxes of a wide node's children, once all of them are known (an unused slot's is empty),
-// quantised: along each axis a grid of 256 planes, origin + q 2^e (q = 0..255), from the lower
-// corner of their union, with the least e whose last plane reaches the union's upper corner;
-// each child's lower plane is the highest grid plane at or below its box and its upper plane the
-// lowest at or above it, each checked as the float the traversal computes (WideNode::plane):
-// so the box the traversal tests contains the child's box, whatever the rounding. 2^e is a
-// power of two, so q 2^e is exact and the plane takes one rounding, the same in every copy of the
-// traversal (a fused multiply-add, where a compiler makes one, rounds it the same). An empty box
-// gets q = 255 below and 0 above: upside down along every axis, no ray enters it (but along an
-// axis where the node's extent is below a float's resolution: then a ray may reach that empty
-// leaf, which costs a pop).
-void BVH::setBoxes(WideNode& w, const AABB (&boxes)[WideNode::kWidth]) {
-    constexpr int kMinExp = -126, kMaxExp = 127;  // 2^e a normal float
-    AABB all;
-    for (const AABB& b : boxes)
-        if (!b.empty()) all.expand(b);
+// (child = its first item) or nothing: a leaf of no items whose box (lo = hi = +inf; also used
+// for an empty box) no ray reaches.
+void BVH::setChild(WideNode& w, int k, const AABB& box, uint32_t child, uint32_t count) {
     for (int a = 0; a < 3; ++a) {
-        const float lo = all.empty() ? 0.0f : all.lo[a], hi = all.empty() ? 0.0f : all.hi[a];
-        int e = 0;
-        std::frexp((double(hi) - double(lo)) / 255.0, &e);  // 2^e >= (hi - lo) / 255 (about; checked below)
-        e = std::max(e, kMinExp);
-        float s = std::ldexp(1.0f, e);
-        auto plane = [&](int q) { return lo + float(q) * s; };  // as WideNode::plane
-        while (e < kMaxExp && !(plane(255) >= hi)) s = std::ldexp(1.0f, ++e);
-        w.origin[a] = lo;
-        w.stepBits[a] = static_cast<uint8_t>(e + 127);
-        const float inv = std::ldexp(1.0f, -e);
-        for (int k = 0; k < WideNode::kWidth; ++k) {
-            if (boxes[k].empty()) {
-                w.q[0][a][k] = 255;
-                w.q[1][a][k] = 0;
-                continue;
-            }
-            // An estimate in float, then the float planes themselves decide.
-            auto clamp = [](float x, int from) { return static_cast<int>(std::min(255.0f, std::max(float(from), x))); };
-            int qLo = clamp((boxes[k].lo[a] - lo) * inv, 0);
-            while (qLo > 0 && plane(qLo) > boxes[k].lo[a]) --qLo;
-            while (qLo < 255 && plane(qLo + 1) <= boxes[k].lo[a]) ++qLo;
-            int qHi = clamp(std::ceil((boxes[k].hi[a] - lo) * inv), qLo);
-            while (qHi < 255 && plane(qHi) < boxes[k].hi[a]) ++qHi;
-            while (qHi > qLo && plane(qHi - 1) >= boxes[k].hi[a]) --qHi;
-            w.q[0][a][k] = static_cast<uint8_t>(qLo);
-            w.q[1][a][k] = static_cast<uint8_t>(qHi);
-        }
+        w.corner[0][a][k] = box.empty() ? kInf : box.lo[a];
+        w.corner[1][a][k] = box.empty() ? kInf : box.hi[a];
     }
+    w.slot[k] = {child, count};
 }
 
 // Builds the binary subtree over items [begin, end) into bin[self], which the caller allocated;
@@ -271,16 +227,16 @@ uint32_t BVH::collapse(const std::vector<BinaryNode>& bin, uint32_t self, int de
     }
     const uint32_t index = static_cast<uint32_t>(nodes_.size());
     nodes_.emplace_back();
-    AABB boxes[WideNode::kWidth];  // unused slots: empty
-    for (int k = 0; k < n; ++k) {
+    for (int k = 0; k < WideNode::kWidth; ++k) {
+        if (k >= n) {
+            setChild(nodes_[index], k, AABB(), 0, 0);
+            continue;
+        }
         const BinaryNode& c = bin[kids[k]];
         const uint32_t count = c.end - c.begin;
-        boxes[k] = c.box;
-        if (c.left == 0 || count <= kMaxWideLeafSize) setChild(nodes_[index], k, c.begin, count);
-        else setChild(nodes_[index], k, collapse(bin, kids[k], depth + 1), WideNode::kInner);
+        if (c.left == 0 || count <= kMaxWideLeafSize) setChild(nodes_[index], k, c.box, c.begin, count);
+        else setChild(nodes_[index], k, c.box, collapse(bin, kids[k], depth + 1), WideNode::kInner);
     }
-    for (int k = n; k < WideNode::kWidth; ++k) setChild(nodes_[index], k, 0, 0);
-    setBoxes(nodes_[index], boxes);
     return index;
 }
 

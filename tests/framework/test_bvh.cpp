@@ -5,7 +5,6 @@
 #include <cstdlib>
 #include <cstring>
 #include <algorithm>
-#include <functional>
 #include <numeric>
 #include <string>
 #include <vector>
@@ -147,35 +146,13 @@ std::vector<Triangle> randomSoup(int n, float size, Rng& rng) {
 }
 
 // Every wide node's child box holds that child's boxes (inner) or its primitives' boxes (leaf);
-// unused slots are empty leaves with an upside-down box; every node but the root is the child
+// unused slots are empty leaves with a box no ray reaches; every node but the root is the child
 // of exactly one slot; every primitive is in exactly one leaf (order() is a permutation).
 void checkStructure(const Scene& s) {
     const BVH& bvh = s.bvh;
     std::vector<uint32_t> seen(s.prims.size(), 0), parents(bvh.nodes().size(), 0);
     auto contains = [](const AABB& outer, const AABB& inner) {
         return glm::all(glm::lessThanEqual(outer.lo, inner.lo)) && glm::all(glm::greaterThanEqual(outer.hi, inner.hi));
-    };
-    auto primBox = [&](uint32_t p) {
-        const Primitive& pr = s.prims[p];
-        return pr.shape == ShapeKind::Triangle ? s.triangles[pr.index].bounds() : s.spheres[pr.index].bounds();
-    };
-    // What a node's subtree holds: the union of its primitives' boxes. (A slot's box holds that,
-    // not its child node's slot boxes: each node quantises its boxes on a grid of its own.)
-    std::vector<AABB> held(bvh.nodes().size());
-    std::vector<int> state(bvh.nodes().size(), 0);  // 0 not yet, 1 under way (a cycle: stop), 2 done
-    std::function<AABB(uint32_t)> contents = [&](uint32_t node) {
-        if (state[node] == 0) {
-            state[node] = 1;
-            for (const WideNode::Slot& slot : bvh.nodes()[node].slot) {
-                if (slot.count == WideNode::kInner && slot.child > 0 && slot.child < bvh.nodes().size())
-                    held[node].expand(contents(slot.child));
-                else if (slot.count != WideNode::kInner)
-                    for (uint32_t i = slot.child; i < slot.child + slot.count && i < bvh.order().size(); ++i)
-                        held[node].expand(primBox(bvh.order()[i]));
-            }
-            state[node] = 2;
-        }
-        return held[node];
     };
     int badBoxes = 0, badSlots = 0;
     for (const WideNode& n : bvh.nodes()) {
@@ -187,14 +164,18 @@ void checkStructure(const Scene& s) {
                     continue;
                 }
                 ++parents[n.slot[k].child];
-                badBoxes += !contains(box, contents(n.slot[k].child));
+                const WideNode& c = bvh.nodes()[n.slot[k].child];
+                for (int j = 0; j < WideNode::kWidth; ++j)
+                    if (!(c.slot[j].count == 0 && c.corner[0][0][j] == kInf)) badBoxes += !contains(box, c.box(j));
             } else if (n.slot[k].count == 0) {
-                badSlots += !glm::all(glm::greaterThanEqual(box.lo, box.hi));  // upside down (see BVH::setBoxes)
+                badSlots += !(box.lo == Vec3(kInf) && box.hi == Vec3(kInf));
             } else {
                 for (uint32_t i = n.slot[k].child; i < n.slot[k].child + n.slot[k].count; ++i) {
                     const uint32_t p = bvh.order()[i];
                     ++seen[p];
-                    badBoxes += !contains(box, primBox(p));
+                    const Primitive& pr = s.prims[p];
+                    badBoxes += !contains(box, pr.shape == ShapeKind::Triangle ? s.triangles[pr.index].bounds()
+                                                                               : s.spheres[pr.index].bounds());
                 }
             }
         }
