@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
-#include <limits>
 #include <optional>
 #include <cstdio>
 #include <sstream>
@@ -60,23 +59,6 @@ void Scene::finalize() {
         if (pr.shape == ShapeKind::Triangle) items_[i].tri = triangles[pr.index];
         else items_[i].sphere = pr.index;
     }
-    // leafCoords_ (scene.h): every leaf of the tree in chunks of at most kLeafLanes items; a
-    // chunk's lanes past its items read the next ones (padded at the end), and are not used.
-    leafCoords_.assign(9 * items_.size() + kLeafLanes, 0.0f);
-    for (const WideNode& node : bvh.nodes())
-        for (const WideNode::Slot& slot : node.slot) {
-            if (slot.count == WideNode::kInner) continue;
-            for (uint32_t f = slot.child; f < slot.child + slot.count; f += kLeafLanes) {
-                const uint32_t n = std::min(kLeafLanes, slot.child + slot.count - f);
-                for (uint32_t j = 0; j < n; ++j) {
-                    const Item& it = items_[f + j];
-                    const Vec3 v[3] = {it.tri.p0, it.tri.p1, it.tri.p2};
-                    for (uint32_t k = 0; k < 9; ++k)
-                        leafCoords_[9 * f + k * n + j] =
-                            it.sphere == kNoPrimitive ? v[k / 3][int(k % 3)] : std::numeric_limits<float>::quiet_NaN();
-                }
-            }
-        }
 
     // Bounding sphere of geometry and camera (background emission, light power).
     AABB all = bounds;
@@ -361,118 +343,25 @@ std::string renderParameterProblem(const RenderParameter& p, const std::vector<f
     return p.check ? p.check(values) : std::string();
 }
 
-namespace {
-// What leafCandidates needs of a ray, once per ray: the watertight test's shear (Eq. 0.3,
-// without the swap of kx and ky, which flips the sign of all three edge functions at once).
-struct EdgeRay {
-    float o[3], Sx, Sy, sz, dz;  // sz: the sign of d_kz, dz = |d_kz| grown by 2^-18
-    int kx, ky, kz;
-    explicit EdgeRay(const Ray& r) {
-        const Vec3 a = glm::abs(r.d);
-        kz = a.x > a.y ? (a.x > a.z ? 0 : 2) : (a.y > a.z ? 1 : 2);
-        kx = (kz + 1) % 3;
-        ky = (kx + 1) % 3;
-        for (int i = 0; i < 3; ++i) o[i] = r.o[i];
-        const float* d = &r.d.x;
-        Sx = d[kx] / d[kz];
-        Sy = d[ky] / d[kz];
-        sz = d[kz] < 0.0f ? -1.0f : 1.0f;
-        dz = std::abs(d[kz]) * (1.0f + 0x1p-18f);
-    }
-};
-
-// Which of a chunk of a leaf's triangles (n <= kLeafLanes of them, coordinates as
-// Scene::leafCoords_ keeps them) the ray may hit: keep[j] = 0 only where lesson 0's watertight
-// test is sure to say no, so that the student's test still decides every hit, bit for bit, but
-// is not called for the triangles the ray misses by more than rounding. One plain loop over the
-// lanes, which the compiler turns into SIMD instructions, as intersectBoxes.
-//
-// Why it never rules out a triangle the test accepts: it computes the test's sheared vertices
-// and edge functions U, V, W (Eq. 0.3, 0.4) and rejects only when one is below -m and another
-// above m (the test rejects when two have opposite signs, Eq. 0.5), with m = 2^-15 M N +
-// 2^-32 M^2 + 2^-140, N the largest |sheared x, y| of the three vertices and M = N + the
-// largest |z| (>= every |coordinate| relative to the origin, to rounding). To first order in
-// u = 2^-24 and whatever the order of the operations, a sheared coordinate lies within 6.1 u M
-// of its exact value and an edge function within 33 u M N + 80 u^2 M^2 (in double after a 0:
-// less), the test's as these: together less than 2^-17.9 M N + 2^-38 M^2, under m by a factor
-// 3.7 or more; subnormal results add at most 2^-145 (N + 1) to each, under 2^-140 when N <= 1
-// and under 2^-15 M N when N > 1 (then M > 1). So wherever these signs are apart by m, the
-// test's are apart. Nothing is rejected where M >= 2^60 (no overflow below), nor where a value
-// is NaN (a sphere's lanes, NaN coordinates or direction: NaN compares false).
-// It also rejects a triangle whose three vertices lie behind the origin along the ray (their z
-// times the sign of d_kz below -2^-20 of the largest |z|) or all beyond tMax (z above
-// tMax |d_kz| (1 + 2^-18)): where the test accepts, U, V, W have one sign and its scaled
-// distance T = U Az + V Bz + W Cz (Eq. 0.6) lies, to 3 u, within det times the range of Az, Bz,
-// Cz (each within 3 u of z / d_kz), and it compares T with 0 and tMax det (to 3 u).
-void leafCandidates(const float* coords, uint32_t n, const EdgeRay& r, float tMax, int keep[]) {
-    const float *x[3], *y[3], *z[3];  // the vertices' coordinates along kx, ky, kz
-    for (int i = 0; i < 3; ++i) {
-        x[i] = coords + (3 * i + r.kx) * n;
-        y[i] = coords + (3 * i + r.ky) * n;
-        z[i] = coords + (3 * i + r.kz) * n;
-    }
-    const float zFar = tMax * r.dz;
-    for (uint32_t j = 0; j < Scene::kLeafLanes; ++j) {
-        float X[3], Y[3], N = 0.0f, Z = 0.0f, zMin = r.sz * (z[0][j] - r.o[r.kz]), zMax = zMin;  // (NaN stays)
-        for (int i = 0; i < 3; ++i) {
-            const float pz = z[i][j] - r.o[r.kz], sz = r.sz * pz;
-            zMin = sz < zMin ? sz : zMin;
-            zMax = sz > zMax ? sz : zMax;
-            X[i] = (x[i][j] - r.o[r.kx]) - r.Sx * pz;
-            Y[i] = (y[i][j] - r.o[r.ky]) - r.Sy * pz;
-            const float ax = std::abs(X[i]), ay = std::abs(Y[i]), az = std::abs(pz);
-            N = ax > N ? ax : N;
-            N = ay > N ? ay : N;
-            Z = az > Z ? az : Z;
-        }
-        const float U = X[2] * Y[1] - Y[2] * X[1], V = X[0] * Y[2] - Y[0] * X[2], W = X[1] * Y[0] - Y[1] * X[0];
-        const float M = N + Z, m = 0x1p-15f * M * N + 0x1p-32f * M * M + 0x1p-140f;
-        const int neg = (U < -m) | (V < -m) | (W < -m), pos = (U > m) | (V > m) | (W > m);
-        const int behind = zMax<-0x1p-20f * Z, beyond = zMin> zFar;
-        keep[j] = !((neg & pos & (M < 0x1p60f)) | behind | beyond);
-    }
-}
-}  // namespace
-
-bool leafFilterKeeps(const Ray& ray, const Triangle& tri) {
-    float coords[9 + Scene::kLeafLanes] = {};  // a chunk of one, and the lanes past it
-    const Vec3 v[3] = {tri.p0, tri.p1, tri.p2};
-    for (int k = 0; k < 9; ++k) coords[k] = v[k / 3][k % 3];
-    int keep[Scene::kLeafLanes];
-    leafCandidates(coords, 1, EdgeRay(ray), ray.tMax, keep);
-    return keep[0] != 0;
-}
-
 bool Scene::closestHit(Ray& ray, SurfacePoint& sp) const {
     std::optional<WatertightRay> wr;  // built at the first triangle the ray reaches (many reach none)
     uint32_t hitItem = kNoPrimitive;
     float hb1 = 0.0f, hb2 = 0.0f;
-    const EdgeRay er(ray);
-    bvh.traverseLeaves(ray, false, [&](uint32_t first, uint32_t count, Ray& r) {
-        bool hit = false;
-        for (uint32_t f = first; f < first + count; f += kLeafLanes) {
-            const uint32_t n = std::min(kLeafLanes, first + count - f);
-            int keep[kLeafLanes];
-            leafCandidates(&leafCoords_[9 * f], n, er, r.tMax, keep);
-            for (uint32_t j = 0; j < n; ++j) {
-                if (!keep[j]) continue;
-                const Item& it = items_[f + j];
-                float t, b1 = 0.0f, b2 = 0.0f;
-                if (it.prim == r.ignorePrim) continue;
-                if (it.sphere == kNoPrimitive) {
-                    if (!wr) wr.emplace(r);
-                    if (!intersectTriangle(r, *wr, it.tri, t, b1, b2)) continue;
-                } else if (!intersectSphere(r, spheres[it.sphere], t)) {
-                    continue;
-                }
-                r.tMax = t;
-                hitItem = f + j;
-                hb1 = b1;
-                hb2 = b2;
-                hit = true;
-            }
+    bvh.traverse(ray, false, [&](uint32_t i, Ray& r) {
+        const Item& it = items_[i];
+        float t, b1 = 0.0f, b2 = 0.0f;
+        if (it.prim == r.ignorePrim) return false;
+        if (it.sphere == kNoPrimitive) {
+            if (!wr) wr.emplace(r);
+            if (!intersectTriangle(r, *wr, it.tri, t, b1, b2)) return false;
+        } else if (!intersectSphere(r, spheres[it.sphere], t)) {
+            return false;
         }
-        return hit;
+        r.tMax = t;
+        hitItem = i;
+        hb1 = b1;
+        hb2 = b2;
+        return true;
     });
     if (hitItem == kNoPrimitive) return false;
     // Only now the surface point, once, for the closest hit.
@@ -488,7 +377,6 @@ bool Scene::closestHit(Ray& ray, SurfacePoint& sp) const {
 }
 
 bool Scene::anyHit(const Ray& ray) const {
-    // (No leafCandidates here: for shadow rays it cost 10 % more instructions than it saved.)
     std::optional<WatertightRay> wr;
     Ray r = ray;
     return bvh.traverse(r, true, [&](uint32_t i, Ray& rr) {  // stops at the first hit

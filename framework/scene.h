@@ -97,8 +97,7 @@ struct Quad {
 
 class Scene {
 public:
-    static constexpr uint32_t kLeafLanes = 8;  // triangles of a leaf ruled out at once (leafCoords_)
-    std::string path;                          // the scene file, for messages
+    std::string path;  // the scene file, for messages
     // The files it was read from: the scene file (loadScene), then its meshes and their material
     // libraries, in the order named. The program's commands never write over any of them.
     std::vector<std::string> inputFiles;
@@ -168,13 +167,6 @@ private:
         int material = -1, light = -1;   // prims[prim]'s, for the surface point of a hit
     };
     std::vector<Item, LargePageAllocator<Item>> items_;
-    // The same triangles again, a leaf's (up to kLeafLanes) side by side as structure of arrays,
-    // for the SIMD filter that rules out at once those of a leaf the ray misses (scene.cpp,
-    // leafCandidates): the chunk of items [f, f + n) of a leaf keeps coordinate k (p0.x, p0.y,
-    // p0.z, p1.x, ..., p2.z) of item f + j at leafCoords_[9 f + k n + j]; NaN for a sphere.
-    // (Reading the triangle the test is called with from here instead of Item costs 45
-    // instructions a call, more than what Item's smaller size gives back: bench/README.md.)
-    std::vector<float, LargePageAllocator<float>> leafCoords_;
     // intersect() and occluded() run one of two copies of the same code: for AVX2, when the CPU
     // has it, or for the x86-64 baseline (scene.cpp; useAvx2Tracing).
     bool closestHit(Ray& ray, SurfacePoint& sp) const;
@@ -185,10 +177,6 @@ private:
     const Light* surfaceLight(const SurfacePoint& sp) const;
     void findSurfacePointLights();
 };
-
-// Whether Scene::intersect's leaf filter (scene.cpp, leafCandidates) passes triangle tri on to
-// intersectTriangle for this ray: it must whenever intersectTriangle accepts it (test_bvh.cpp).
-bool leafFilterKeeps(const Ray& ray, const Triangle& tri);
 
 // Rays traced by this thread since the last call (for rays/s in render summaries).
 uint64_t takeRayCount();

@@ -419,62 +419,6 @@ TEST_CASE("bvh: huge and tiny scales, and far from the origin") {
     }
 }
 
-// Scene::intersect rules out a leaf's triangles the ray misses before it calls the triangle
-// test (leafCandidates, scene.cpp): it must never rule out one the test accepts. Rays aimed
-// exactly at the vertices and edges of a bumpy grid, and a float step beside them, from near and
-// far (where the margin matters), at scales 1e-9 and 1e9 and far from the origin; every triangle
-// against every ray.
-TEST_CASE("bvh: the leaf filter passes on every triangle the triangle test accepts") {
-    Rng rng(808);
-    const int n = 12;  // n x n quads, two triangles each
-    std::vector<Vec3> v;
-    for (int j = 0; j <= n; ++j)
-        for (int i = 0; i <= n; ++i) v.push_back(Vec3(float(i) / n, float(j) / n, 0.02f * rng.uniform()));
-    std::vector<Triangle> grid;
-    for (int j = 0; j < n; ++j)
-        for (int i = 0; i < n; ++i) {
-            const Vec3 &a = v[size_t(j * (n + 1) + i)], &b = v[size_t(j * (n + 1) + i + 1)];
-            const Vec3 &c = v[size_t((j + 1) * (n + 1) + i)], &d = v[size_t((j + 1) * (n + 1) + i + 1)];
-            grid.push_back({a, b, d});
-            grid.push_back({a, d, c});
-        }
-    for (const std::pair<float, float>& scaleShift :
-         {std::pair{1.0f, 0.0f}, std::pair{1e-9f, 0.0f}, std::pair{1e9f, 0.0f}, std::pair{1.0f, 1e3f}}) {
-        const float scale = scaleShift.first, shift = scaleShift.second;
-        std::vector<Triangle> tris = grid;
-        for (Triangle& t : tris)
-            for (Vec3* p : {&t.p0, &t.p1, &t.p2}) *p = *p * scale + Vec3(shift);
-        int accepted = 0, dropped = 0, missed = 0, ruledOut = 0;
-        for (int k = 0; k < 3000; ++k) {
-            const Triangle& t = tris[rng.nextU32() % tris.size()];
-            const Vec3 a = k % 3 == 0 ? t.p0 : k % 3 == 1 ? t.p1 : t.p2, b = k % 3 == 0 ? t.p1 : t.p2;
-            Vec3 target = k % 4 == 0 ? a : a + (k % 4 == 1 ? 0.5f : rng.uniform()) * (b - a);
-            if (k % 5 == 0) target.x = std::nextafter(target.x, k % 2 ? kInf : -kInf);
-            const float dist = (k % 2 ? 3.0f : 3e3f) * scale;  // near, and far: the grid a few pixels wide
-            const Vec3 o = target + dist * Vec3(rng.uniform() - 0.5f, rng.uniform() - 0.5f, k % 6 ? 1.0f : -1.0f);
-            const Ray ray(o, glm::normalize(target - o), k % 7 == 0 ? dist * (1.0f - 0x1p-20f) : kInf);
-            const WatertightRay wr(ray);
-            for (const Triangle& tri : tris) {
-                float th, b1, b2;
-                const bool hit = intersectTriangle(ray, wr, tri, th, b1, b2), kept = leafFilterKeeps(ray, tri);
-                accepted += hit;
-                if (hit && !kept && dropped++ < 5)
-                    FAIL_CHECK("ray o = (" << o.x << ", " << o.y << ", " << o.z << ") d = (" << ray.d.x << ", "
-                                           << ray.d.y << ", " << ray.d.z
-                                           << "): a triangle the test accepts at t = " << th << " was ruled out");
-                missed += !hit;
-                ruledOut += !kept;
-            }
-        }
-        INFO("scale " << scale << ", moved by " << shift << ": " << accepted << " hits, " << missed << " misses, "
-                      << ruledOut << " ruled out");
-        CHECK_MESSAGE(accepted > 1000, "expected the rays to hit the grid, got " << accepted << " hits");
-        CHECK_MESSAGE(dropped == 0, "expected no accepted triangle ruled out, got " << dropped);
-        // Not a correctness matter, but a filter that rules out nothing is no filter.
-        CHECK_MESSAGE(ruledOut > missed / 2, "expected the filter to rule out most misses");
-    }
-}
-
 TEST_CASE("bvh: traverse visits each leaf item at most once, nearest box first") {
     // A row of 64 unit squares along +x, a ray along the row: the items come in order of
     // distance, each once, and the first hit ends an any-hit traversal.
@@ -498,10 +442,11 @@ TEST_CASE("bvh: traverse visits each leaf item at most once, nearest box first")
     std::sort(sorted.begin(), sorted.end());
     CHECK_MESSAGE(std::unique(sorted.begin(), sorted.end()) == sorted.end(), "an item was visited twice");
     CHECK(visited.size() == 64);
-    // A binary leaf holds up to kMaxLeafSize (4) items in any order (a leaf of the wide tree is
-    // one or more binary leaves, in order), but leaf by leaf the row is walked from x = 0 on.
+    // A leaf holds up to kMaxWideLeafSize items in any order, but leaf by leaf the row is walked
+    // from x = 0 on: items that far apart in the visit are in different leaves.
+    const size_t gap = BVH::kMaxWideLeafSize;
     int outOfOrder = 0;
-    for (size_t i = 4; i < visited.size(); ++i) outOfOrder += 63 - int(visited[i]) < 63 - int(visited[i - 4]);
+    for (size_t i = gap; i < visited.size(); ++i) outOfOrder += 63 - int(visited[i]) < 63 - int(visited[i - gap]);
     CHECK_MESSAGE(outOfOrder == 0, "expected the nearest boxes first, got " << outOfOrder << " items out of order");
     int calls = 0;
     CHECK(bvh.traverse(ray, true, [&](uint32_t, Ray&) { return ++calls > 0; }));
