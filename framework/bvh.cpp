@@ -6,7 +6,25 @@ namespace ps {
 namespace {
 constexpr uint32_t kSplitSamples = 64;  // a larger node picks its split from a sample of its items
 static_assert(BVH::kBins <= 256, "itemBins keeps an item's bin along each axis in one byte");
+constexpr uint32_t kNoNode = 0xffffffffu;  // buildNode's answer for a range that stays a leaf
 }  // namespace
+
+// The build's working copy of the items: their boxes, centroids and bins, moved by the
+// partitions together with order_ (item -> primitive).
+struct BVH::Items {
+    std::vector<AABB> boxes;
+    std::vector<Vec3> centroids;
+    std::vector<uint32_t> bins;  // each item's bin along each axis, a byte each (see split)
+};
+
+// Items [begin, end): box bounds their boxes and cbox their centroids; depth is the range's
+// depth in the binary tree of splits (the root 1); leaf: split was asked and kept it whole.
+struct BVH::Range {
+    AABB box, cbox;
+    uint32_t begin = 0, end = 0;
+    int depth = 1;
+    bool leaf = false;
+};
 
 void BVH::build(const std::vector<AABB>& primBoxes) {
     nodes_.clear();
@@ -16,31 +34,22 @@ void BVH::build(const std::vector<AABB>& primBoxes) {
     order_.resize(n);
     std::iota(order_.begin(), order_.end(), 0u);
     if (n == 0) return;
-    // Stage 1: the binary tree.
-    std::vector<AABB> boxes = primBoxes;
-    std::vector<Vec3> centroids(n);
-    for (uint32_t i = 0; i < n; ++i) centroids[i] = boxes[i].center();
-    std::vector<BinaryNode> bin;
-    bin.reserve(2 * n);
-    std::vector<uint32_t> itemBins(n);  // each item's bin along each axis, a byte each (see below)
-    bin.emplace_back();
-    AABB box, cbox;
+    Items items{primBoxes, std::vector<Vec3>(n), std::vector<uint32_t>(n)};
+    Range root;
+    root.end = n;
     for (uint32_t i = 0; i < n; ++i) {
-        box.expand(boxes[i]);
-        cbox.expand(centroids[i]);
+        items.centroids[i] = items.boxes[i].center();
+        root.box.expand(items.boxes[i]);
+        root.cbox.expand(items.centroids[i]);
     }
-    buildBinary(0, bin, boxes, centroids, itemBins, 0, n, 1, box, cbox);
-    bounds_ = bin[0].box;
-    // Stage 2: the wide nodes. A binary tree that is a single leaf becomes a root with one child.
-    if (bin[0].left != 0) {
-        nodes_.reserve(bin.size() / 2);
-        collapse(bin, 0, 1);
-    } else {
-        nodes_.resize(1);
-        setChild(nodes_[0], 0, bin[0].box, 0, n);
-        for (int k = 1; k < WideNode::kWidth; ++k) setChild(nodes_[0], k, AABB(), 0, 0);
-        depth_ = 1;
-    }
+    bounds_ = root.box;
+    nodes_.reserve(n / 4 + 1);
+    if (buildNode(items, root, 1) != kNoNode) return;
+    // Items the root's split kept whole: a root with one leaf child.
+    nodes_.resize(1);
+    setChild(nodes_[0], 0, root.box, 0, n);
+    for (int k = 1; k < WideNode::kWidth; ++k) setChild(nodes_[0], k, AABB(), 0, 0);
+    depth_ = 1;
 }
 
 // Slot k of a wide node: an inner child (count = kInner, child = its index in nodes_), a leaf
@@ -54,14 +63,16 @@ void BVH::setChild(WideNode& w, int k, const AABB& box, uint32_t child, uint32_t
     w.slot[k] = {child, count};
 }
 
-// Builds the binary subtree over items [begin, end) into bin[self], which the caller allocated;
-// box bounds the items' boxes and cbox their centroids (the caller gathered both: see below).
-void BVH::buildBinary(uint32_t self, std::vector<BinaryNode>& bin, std::vector<AABB>& boxes,
-                      std::vector<Vec3>& centroids, std::vector<uint32_t>& itemBins, uint32_t begin, uint32_t end,
-                      int depth, const AABB& box, const AABB& cbox) {
-    bin[self] = {box, begin, end, 0};  // a leaf unless split below
-    const uint32_t count = end - begin;
-    if (count <= 1 || depth >= kMaxDepth) return;
+// Splits range into left and right by binned SAH and returns true, or returns false when the
+// range stays a leaf (one item, the depth limit, or a leaf that the SAH prefers). The children's
+// boxes and centroid boxes are gathered on the way (see below): no pass over their items.
+bool BVH::split(Items& items, const Range& range, Range& leftRange, Range& rightRange) {
+    const uint32_t begin = range.begin, end = range.end, count = end - begin;
+    if (count <= 1 || range.depth >= kMaxDepth) return false;
+    const AABB &box = range.box, &cbox = range.cbox;
+    std::vector<AABB>& boxes = items.boxes;
+    std::vector<Vec3>& centroids = items.centroids;
+    std::vector<uint32_t>& itemBins = items.bins;
 
     // Binned SAH (Wald 2007): kBins bins along each axis of the centroid box; the cost of a
     // split is A + A_left * N_left + A_right * N_right, of a leaf A * N (traversal and
@@ -181,7 +192,7 @@ void BVH::buildBinary(uint32_t self, std::vector<BinaryNode>& bin, std::vector<A
         }
         mid = i;
     } else if (count <= kMaxLeafSize) {
-        return;
+        return false;
     } else {
         mid = begin + count / 2;  // all centroids coincide: split the list in half (any split is as good)
         for (uint32_t i = begin; i < end; ++i) {
@@ -189,41 +200,39 @@ void BVH::buildBinary(uint32_t self, std::vector<BinaryNode>& bin, std::vector<A
             (i < mid ? leftCbox : rightCbox).expand(centroids[i]);
         }
     }
-    const uint32_t left = static_cast<uint32_t>(bin.size());
-    bin.emplace_back();
-    bin.emplace_back();
-    bin[self].left = left;
-    // The children are adjacent (right = left + 1): allocate both, then build each.
-    buildBinary(left, bin, boxes, centroids, itemBins, begin, mid, depth + 1, leftBox, leftCbox);
-    buildBinary(left + 1, bin, boxes, centroids, itemBins, mid, end, depth + 1, rightBox, rightCbox);
+    leftRange = {leftBox, leftCbox, begin, mid, range.depth + 1, false};
+    rightRange = {rightBox, rightCbox, mid, end, range.depth + 1, false};
+    return true;
 }
 
-// Stage 2: the wide node of the binary inner node bin[self]. It starts with that node's two
-// children and opens the inner child of largest surface area (replacing it by its own two
-// children) until it has kWidth children or only leaves. Then each inner child becomes a wide
-// node in turn, but for one of at most kMaxWideLeafSize items, which becomes a leaf: a wide node
-// of its own would cost a visit (four cache lines) to test two or three boxes (measured with
-// bench/bvh_bench: up to 4 items, half as many nodes and incoherent and shadow rays 8-10 %
+// The index of range's wide node in nodes_, or kNoNode when range stays a leaf. It
+// splits range in two, then splits the child of largest surface area (of those not known to be
+// leaves) into two, until it has kWidth children or only leaves: the binary tree's top levels
+// below range, built as they are needed. Then each child that is not a leaf becomes a wide node
+// in turn, but for one of at most kMaxWideLeafSize items, which becomes a leaf unsplit: a wide
+// node of its own would cost a visit (four cache lines) to test two or three boxes (measured
+// with bench/bvh_bench: up to 4 items, half as many nodes and incoherent and shadow rays 8-10 %
 // faster than none; up to 6, about 4 % more; up to 8, more for those and 2 % less for primary
-// rays). Leaves keep their items, so the items' leaf order stays the binary tree's.
-uint32_t BVH::collapse(const std::vector<BinaryNode>& bin, uint32_t self, int depth) {
+// rays).
+uint32_t BVH::buildNode(Items& items, const Range& range, int depth) {
+    Range kids[WideNode::kWidth];
+    if (!split(items, range, kids[0], kids[1])) return kNoNode;
     depth_ = std::max(depth_, depth);
-    uint32_t kids[WideNode::kWidth] = {bin[self].left, bin[self].left + 1};
     int n = 2;
     while (n < WideNode::kWidth) {
         int open = -1;
         float openArea = -1.0f;
         for (int k = 0; k < n; ++k) {
-            const BinaryNode& c = bin[kids[k]];
-            if (c.left != 0 && c.box.surfaceArea() > openArea) {
-                openArea = c.box.surfaceArea();
+            const float a = kids[k].box.surfaceArea();
+            if (!kids[k].leaf && a > openArea) {
+                openArea = a;
                 open = k;
             }
         }
         if (open < 0) break;
-        const uint32_t left = bin[kids[open]].left;
-        kids[open] = left;
-        kids[n++] = left + 1;
+        const Range parent = kids[open];
+        if (split(items, parent, kids[open], kids[n])) ++n;
+        else kids[open].leaf = true;
     }
     const uint32_t index = static_cast<uint32_t>(nodes_.size());
     nodes_.emplace_back();
@@ -232,10 +241,11 @@ uint32_t BVH::collapse(const std::vector<BinaryNode>& bin, uint32_t self, int de
             setChild(nodes_[index], k, AABB(), 0, 0);
             continue;
         }
-        const BinaryNode& c = bin[kids[k]];
+        const Range& c = kids[k];
         const uint32_t count = c.end - c.begin;
-        if (c.left == 0 || count <= kMaxWideLeafSize) setChild(nodes_[index], k, c.box, c.begin, count);
-        else setChild(nodes_[index], k, c.box, collapse(bin, kids[k], depth + 1), WideNode::kInner);
+        const uint32_t child = c.leaf || count <= kMaxWideLeafSize ? kNoNode : buildNode(items, c, depth + 1);
+        if (child == kNoNode) setChild(nodes_[index], k, c.box, c.begin, count);
+        else setChild(nodes_[index], k, c.box, child, WideNode::kInner);
     }
     return index;
 }

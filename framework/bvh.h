@@ -99,15 +99,10 @@ public:
     bool traverse(Ray& ray, bool anyHit, HitItem&& hitItem) const;
 
 private:
-    struct BinaryNode {
-        AABB box;
-        uint32_t begin = 0, end = 0;  // its items: [begin, end)
-        uint32_t left = 0;            // inner node: its children left and left + 1; leaf: 0
-    };
-    void buildBinary(uint32_t node, std::vector<BinaryNode>& bin, std::vector<AABB>& boxes,
-                     std::vector<Vec3>& centroids, std::vector<uint32_t>& itemBins, uint32_t begin, uint32_t end,
-                     int depth, const AABB& box, const AABB& cbox);
-    uint32_t collapse(const std::vector<BinaryNode>& bin, uint32_t node, int depth);
+    struct Items;  // the build's working copy of the items (bvh.cpp)
+    struct Range;  // a run of items the build may split (bvh.cpp)
+    bool split(Items& items, const Range& range, Range& left, Range& right);
+    uint32_t buildNode(Items& items, const Range& range, int depth);
     static void setChild(WideNode& w, int k, const AABB& box, uint32_t child, uint32_t count);
     WideNodes nodes_;
     std::vector<uint32_t> order_;
