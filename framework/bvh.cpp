@@ -205,15 +205,18 @@ bool BVH::split(Items& items, const Range& range, Range& leftRange, Range& right
     return true;
 }
 
-// The index of range's wide node in nodes_, or kNoNode when range stays a leaf. It
-// splits range in two, then splits the child of largest surface area (of those not known to be
-// leaves) into two, until it has kWidth children or only leaves: the binary tree's top levels
-// below range, built as they are needed. Then each child that is not a leaf becomes a wide node
-// in turn, but for one of at most kMaxWideLeafSize items, which becomes a leaf unsplit: a wide
-// node of its own would cost a visit (four cache lines) to test two or three boxes (measured
-// with bench/bvh_bench: up to 4 items, half as many nodes and incoherent and shadow rays 8-10 %
-// faster than none; up to 6, about 4 % more; up to 8, more for those and 2 % less for primary
-// rays).
+// The index of range's wide node in nodes_, or kNoNode when range stays a leaf. It splits range
+// in two, then splits the child of largest surface area (of those not known to be leaves) in
+// two, until it has kWidth children or only leaves: the top levels of range's binary subtree,
+// built as they are needed (Embree's BVHN builder). Then each child that is not a leaf becomes a
+// wide node in turn, but for one of at most kMaxWideLeafSize items, which becomes a leaf as it
+// is: a wide node of its own would cost a visit (four cache lines) to test two or three boxes
+// (measured with bench/bvh_bench: up to 4 items, half as many nodes and incoherent and shadow
+// rays 8-10 % faster than none; up to 6, about 4 % more; up to 8, more for those and 2 % less
+// for primary rays). The nodes are those of the whole binary tree collapsed (the build before
+// issue 30), to the bit; only a leaf's items keep the order of the split that made it, where
+// the binary tree split them further (a third of its nodes, in no wide node). The build takes
+// 0.81 (bunny) and 0.84 (motorbike) of that one's CPU time (bench/README.md).
 uint32_t BVH::buildNode(Items& items, const Range& range, int depth) {
     Range kids[WideNode::kWidth];
     if (!split(items, range, kids[0], kids[1])) return kNoNode;

@@ -442,10 +442,11 @@ TEST_CASE("bvh: traverse visits each leaf item at most once, nearest box first")
     std::sort(sorted.begin(), sorted.end());
     CHECK_MESSAGE(std::unique(sorted.begin(), sorted.end()) == sorted.end(), "an item was visited twice");
     CHECK(visited.size() == 64);
-    // A binary leaf holds up to kMaxLeafSize (4) items in any order (a leaf of the wide tree is
-    // one or more binary leaves, in order), but leaf by leaf the row is walked from x = 0 on.
+    // A leaf holds up to kMaxWideLeafSize items in any order, but leaf by leaf the row is walked
+    // from x = 0 on: items that far apart in the visit are in different leaves.
+    const size_t gap = BVH::kMaxWideLeafSize;
     int outOfOrder = 0;
-    for (size_t i = 4; i < visited.size(); ++i) outOfOrder += 63 - int(visited[i]) < 63 - int(visited[i - 4]);
+    for (size_t i = gap; i < visited.size(); ++i) outOfOrder += 63 - int(visited[i]) < 63 - int(visited[i - gap]);
     CHECK_MESSAGE(outOfOrder == 0, "expected the nearest boxes first, got " << outOfOrder << " items out of order");
     int calls = 0;
     CHECK(bvh.traverse(ray, true, [&](uint32_t, Ray&) { return ++calls > 0; }));
