@@ -5,6 +5,7 @@ namespace ps {
 
 namespace {
 constexpr uint32_t kSplitSamples = 64;  // a larger node picks its split from a sample of its items
+constexpr int kMinBins = 6;             // a range of N items gets min(kBins, kMinBins + N / 20) bins
 static_assert(BVH::kBins <= 256, "itemBins keeps an item's bin along each axis in one byte");
 constexpr uint32_t kNoNode = 0xffffffffu;  // buildNode's answer for a range that stays a leaf
 }  // namespace
@@ -74,7 +75,7 @@ bool BVH::split(Items& items, const Range& range, Range& leftRange, Range& right
     std::vector<Vec3>& centroids = items.centroids;
     std::vector<uint32_t>& itemBins = items.bins;
 
-    // Binned SAH (Wald 2007): kBins bins along each axis of the centroid box; the cost of a
+    // Binned SAH (Wald 2007): bins along each axis of the centroid box; the cost of a
     // split is A + A_left * N_left + A_right * N_right, of a leaf A * N (traversal and
     // intersection cost 1 each; A is this node's area). Measured with bench/bvh_bench: a
     // traversal cost of 2 with leaves of up to 8 (fewer, larger leaves for the wide nodes) made
@@ -83,10 +84,16 @@ bool BVH::split(Items& items, const Range& range, Range& leftRange, Range& right
     // axis); an axis along which all centroids coincide gets scale 0 (all its items in bin 0)
     // and is not evaluated. With the skipped empty bins and the children's bounds below: the
     // same tree to the bit, built in 0.75 of the time (bunny 34 -> 25 ms; bench/README.md).
+    // A range of N items gets min(kBins, 6 + N / 20) bins (Embree's rule, 4 + N / 20, with 6 for
+    // 4): a small range's sweeps over mostly empty bins cost more than its items. The build takes
+    // 0.81-0.84 of the time with 16 bins everywhere, the wide tree's SAH cost is 0.1 % lower and
+    // callgrind counts of the traversal within 0.15 % (bunny, motorbike; 4 + N / 20: 0.78, but
+    // SAH +0.2 %; bench/README.md).
+    const int bins = std::min(kBins, kMinBins + static_cast<int>(count / 20));
     const float area = box.surfaceArea();
     const Vec3 ext = cbox.extent();
     float scale[3];
-    for (int a = 0; a < 3; ++a) scale[a] = ext[a] > 0.0f ? kBins / ext[a] : 0.0f;
+    for (int a = 0; a < 3; ++a) scale[a] = ext[a] > 0.0f ? bins / ext[a] : 0.0f;
     // A node of at least 2 * kSplitSamples items bins only every stride-th item (kSplitSamples
     // to 2 * kSplitSamples of them) along the three axes, to pick the axis; then it bins all its
     // items along that axis alone and picks the split from those bins (as exact there as
@@ -99,7 +106,7 @@ bool BVH::split(Items& items, const Range& range, Range& leftRange, Range& right
     AABB binBox[3][kBins];
     uint32_t binCount[3][kBins] = {};
     auto binItem = [&](uint32_t i, int a) {
-        const int b = std::min(kBins - 1, static_cast<int>((centroids[i][a] - cbox.lo[a]) * scale[a]));
+        const int b = std::min(bins - 1, static_cast<int>((centroids[i][a] - cbox.lo[a]) * scale[a]));
         binBox[a][b].expand(boxes[i]);
         ++binCount[a][b];
         return static_cast<uint32_t>(b) << (8 * a);
@@ -120,7 +127,7 @@ bool BVH::split(Items& items, const Range& range, Range& leftRange, Range& right
         AABB acc;
         uint32_t cnt = 0;
         float accArea = 0.0f;
-        for (int b = kBins - 1; b > 0; --b) {
+        for (int b = bins - 1; b > 0; --b) {
             if (binCount[axis][b] != 0) {
                 acc.expand(binBox[axis][b]);
                 cnt += binCount[axis][b];
@@ -131,7 +138,7 @@ bool BVH::split(Items& items, const Range& range, Range& leftRange, Range& right
         }
         acc = AABB();
         cnt = 0;
-        for (int s = 1; s < kBins; ++s) {  // split between bin s-1 and s
+        for (int s = 1; s < bins; ++s) {  // split between bin s-1 and s
             if (binCount[axis][s - 1] == 0) continue;
             acc.expand(binBox[axis][s - 1]);
             cnt += binCount[axis][s - 1];
@@ -149,7 +156,7 @@ bool BVH::split(Items& items, const Range& range, Range& leftRange, Range& right
     if (stride > 1) {  // all items binned along the sample's axis (all three if it found no split)
         const int a0 = bestAxis >= 0 ? bestAxis : 0, a1 = bestAxis >= 0 ? bestAxis + 1 : 3;
         for (int a = a0; a < a1; ++a)
-            for (int b = 0; b < kBins; ++b) {
+            for (int b = 0; b < bins; ++b) {
                 binBox[a][b] = AABB();
                 binCount[a][b] = 0;
             }
@@ -172,7 +179,7 @@ bool BVH::split(Items& items, const Range& range, Range& leftRange, Range& right
     // the CPU time (medians of alternated runs; 0.9-1.0 each; bench/README.md, issue 30).
     AABB leftBox, leftCbox, rightBox, rightCbox;
     if (bestAxis >= 0 && (bestCost < leafCost || count > kMaxLeafSize)) {
-        for (int b = 0; b < kBins; ++b) (b < bestSplit ? leftBox : rightBox).expand(binBox[bestAxis][b]);
+        for (int b = 0; b < bins; ++b) (b < bestSplit ? leftBox : rightBox).expand(binBox[bestAxis][b]);
         const int shift = 8 * bestAxis;
         const uint32_t split = static_cast<uint32_t>(bestSplit);
         uint32_t i = begin, j = end;
