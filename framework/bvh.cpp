@@ -220,10 +220,11 @@ bool BVH::split(Items& items, const Range& range, Range& leftRange, Range& right
 // is: a wide node of its own would cost a visit (four cache lines) to test two or three boxes
 // (measured with bench/bvh_bench: up to 4 items, half as many nodes and incoherent and shadow
 // rays 8-10 % faster than none; up to 6, about 4 % more; up to 8, more for those and 2 % less
-// for primary rays). The nodes are those of the whole binary tree collapsed (the build before
-// issue 30), to the bit; only a leaf's items keep the order of the split that made it, where
-// the binary tree split them further (a third of its nodes, in no wide node). The build takes
-// 0.81 (bunny) and 0.84 (motorbike) of that one's CPU time (bench/README.md).
+// for primary rays). With the same splits, the nodes are those that building the whole binary
+// tree and collapsing it gave (the earlier build), to the bit; only a leaf's items keep the
+// order of the split that made it, where that tree split them further (a quarter of its
+// splits, in no wide node). The build took 0.81 (bunny) and 0.84 (motorbike) of that one's CPU
+// time (bench/README.md, issue 30).
 uint32_t BVH::buildNode(Items& items, const Range& range, int depth) {
     Range kids[WideNode::kWidth];
     if (!split(items, range, kids[0], kids[1])) return kNoNode;
