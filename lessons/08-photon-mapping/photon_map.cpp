@@ -77,13 +77,14 @@ std::vector<uint32_t> spatialOrder(const std::vector<Photon>& photons) {
     const Vec3 extent = hi - lo;
     const Vec3 scale(extent.x > 0.0f ? cells / extent.x : 0.0f, extent.y > 0.0f ? cells / extent.y : 0.0f,
                      extent.z > 0.0f ? cells / extent.z : 0.0f);
-    const uint32_t last = (1u << kOrderBits) - 1u;
+    // A coordinate's cell: 0 below the first cell's top and for NaN (a position that is not
+    // finite makes no error here: the order only has to be some order), the last cell at the top.
+    const auto cell = [cells](float c) { return !(c >= 1.0f) ? 0u : uint32_t(std::min(c, cells - 1.0f)); };
     std::vector<uint32_t> code(photons.size());
     std::vector<uint32_t> start(size_t(1) << (3 * kOrderBits), 0u);
     for (size_t i = 0; i < photons.size(); ++i) {
         const Vec3 c = (photons[i].p - lo) * scale;  // in [0, cells]; the top edge goes to the last cell
-        code[i] =
-            mortonCode(std::min(uint32_t(c.x), last), std::min(uint32_t(c.y), last), std::min(uint32_t(c.z), last));
+        code[i] = mortonCode(cell(c.x), cell(c.y), cell(c.z));
         ++start[code[i]];
     }
     uint32_t sum = 0;

@@ -102,8 +102,9 @@ struct PhotonMap {
     size_t size() const { return tree.size(); }
 };
 
-// The photons' kd-tree (buildKdTree of their positions) and the photons in its node order; map.emitted
-// is left as it is.
+// The photons' kd-tree (buildKdTree of their positions, handed to it in a spatial order: sorted by
+// cell of a coarse grid, which makes the build's partitions cheaper) and the photons in its node
+// order; map.emitted is left as it is.
 void buildPhotonMap(std::vector<Photon> photons, PhotonMap& map);
 // The k nearest photons (nearestPoints on the map's tree: NearPhoton::node indexes map.nodes).
 int nearestPhotons(const PhotonMap& map, const Vec3& x, int k, float maxD2, std::vector<NearPhoton>& found);
