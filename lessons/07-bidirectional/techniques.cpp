@@ -24,14 +24,22 @@ Connection connect(const Scene& scene, const Subpath& light, const Subpath& came
     return c;
 }
 
+// Where f is not 0, cur is a non-specular surface (a delta BSDF's f is 0), so both densities are
+// pdfScatter's BSDF case: pdfBSDF in the walk's order, converted to area (Eq. 7.3). They are
+// evaluated here from the two directions f already needed, the same calls with the same numbers
+// as pdfScatter's (so the same bits), without normalising the directions again: a connection
+// took 4 % of a `bpt` iteration's instructions in pdfScatter's own work (bench/README.md, issue
+// 30). Your pdfScatter still gives every subpath vertex's pdfFwd and pdfRev and the densities
+// of connectionPdfs.
 Scattering scatteringAt(const Scene& scene, const PathVertex& lightSide, const PathVertex& cur,
                         const PathVertex& cameraSide) {
     Scattering e;
-    e.f = evalBSDF(scene.materials[size_t(cur.sp.material)], cur.sp.n, direction(cur, cameraSide),
-                   direction(cur, lightSide));
+    const Material& m = scene.materials[size_t(cur.sp.material)];
+    const Vec3 wCamera = direction(cur, cameraSide), wLight = direction(cur, lightSide);
+    e.f = evalBSDF(m, cur.sp.n, wCamera, wLight);
     if (isBlack(e.f)) return e;  // no contribution, nothing to weigh (a Phong lobe's back, a delta BSDF)
-    e.pdfTowardsCamera = pdfScatter(scene, &lightSide, cur, cameraSide, Transport::Importance);
-    e.pdfTowardsLight = pdfScatter(scene, &cameraSide, cur, lightSide, Transport::Radiance);
+    e.pdfTowardsCamera = pdfSolidAngleToArea(pdfBSDF(m, cur.sp.n, wLight, wCamera), cur, cameraSide);
+    e.pdfTowardsLight = pdfSolidAngleToArea(pdfBSDF(m, cur.sp.n, wCamera, wLight), cur, lightSide);
     return e;
 }
 

@@ -102,8 +102,9 @@ struct PhotonMap {
     size_t size() const { return tree.size(); }
 };
 
-// The photons' kd-tree (buildKdTree of their positions) and the photons in its node order; map.emitted
-// is left as it is.
+// The photons' kd-tree (buildKdTree of their positions, handed to it in a spatial order: sorted by
+// cell of a coarse grid, which makes the build's partitions cheaper) and the photons in its node
+// order; map.emitted is left as it is.
 void buildPhotonMap(std::vector<Photon> photons, PhotonMap& map);
 // The k nearest photons (nearestPoints on the map's tree: NearPhoton::node indexes map.nodes).
 int nearestPhotons(const PhotonMap& map, const Vec3& x, int k, float maxD2, std::vector<NearPhoton>& found);
@@ -332,9 +333,10 @@ double ppmRadius2(double r1sq, int pass, double alpha = kPpmAlpha);
 void renderPpmPass(const Scene& scene, uint32_t iteration, uint64_t seed, Image& out, SampleStats& stats,
                    const PhotonRules& rules = {});
 
-// One pass's estimate of the radiance along a camera ray (Eq. 8.14): lesson 3's cameraWalk;
-// emission where the walk sees it directly or through specular bounces alone; specular surfaces
-// followed; at the first non-specular surface x, if v.bounces < maxDepth, the fixed-radius
+// One pass's estimate of the radiance along a camera ray (Eq. 8.14): lesson 3's cameraWalk,
+// without Russian roulette (its specular bounces are cheap and end at x: a roulette there only
+// adds noise); emission where the walk sees it directly or through specular bounces alone;
+// specular surfaces followed; at the first non-specular surface x, if v.bounces < maxDepth, the fixed-radius
 // density estimate of the map there (radianceEstimate with the box filter, k = 0, radius
 // sqrt(r2)) stands for all the light x reflects, direct light included; the walk ends at x.
 Color LiProgressive(const Scene& scene, const Ray& ray, Rng& rng, const PhotonMap& map, float r2, int maxDepth);

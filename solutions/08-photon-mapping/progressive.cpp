@@ -27,7 +27,7 @@ Color LiProgressive(const Scene& scene, const Ray& ray, Rng& rng, const PhotonMa
     opt.k = 0;
     opt.maxRadius = std::sqrt(r2);
     Color L(0.0f);
-    cameraWalk(scene, ray, rng, {maxDepth}, [&](const WalkVertex& v) {
+    cameraWalk(scene, ray, rng, {maxDepth, alwaysSurvive}, [&](const WalkVertex& v) {
         if (!v.hit) {
             if (v.specular) L += v.beta * scene.backgroundRadiance();
             return false;
