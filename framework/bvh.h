@@ -87,6 +87,9 @@ public:
     static constexpr int kMaxLeafSize = 4;      // the SAH may keep a range of at most this many whole
     static constexpr int kMaxWideLeafSize = 6;  // a subtree of at most this many becomes one leaf
     static constexpr int kMaxDepth = 100;       // deeper subtrees become leaves; bounds the stack
+    // Boxes entered up to tMax * kCullGrow are visited (see traverse): 2^-16 covers the box
+    // entry's rounding (gamma(3)) and the triangle test's t (a few gamma) with room to spare.
+    static constexpr float kCullGrow = 1.0f + 0x1p-16f;
 
     // Builds over the primitives' boxes; primitive i of the caller is reported as i.
     void build(const std::vector<AABB>& primBoxes);
@@ -163,8 +166,13 @@ bool BVH::traverse(Ray& ray, bool anyHit, HitItem&& hitItem) const {
     while (top > 0) {
         --top;
         // Beyond the closest hit found since it was pushed (any hit: tMax never changes, and the
-        // box test has already left out boxes beyond it).
-        if (!anyHit && stack[top].enter > ray.tMax) continue;
+        // box test has already left out boxes beyond it). Both tests compare with tMax grown by
+        // kCullGrow: where a ray meets triangles of two leaves at one point (a shared vertex or
+        // edge), the triangle test's t of the nearer can lie below the other's by a float step
+        // while the nearer leaf's box entry, rounded up, lies above it; left out, that leaf would
+        // lose the closer hit (tests/framework/test_bvh.cpp, rays through a mesh's vertices).
+        const float tCull = ray.tMax * kCullGrow;
+        if (!anyHit && stack[top].enter > tCull) continue;
         // (Read field by field: a copy of the whole entry went through memory, 6 % of the time.)
         const uint32_t child = stack[top].slot.child, count = stack[top].slot.count;
         if (count != WideNode::kInner) {
@@ -177,7 +185,7 @@ bool BVH::traverse(Ray& ray, bool anyHit, HitItem&& hitItem) const {
             continue;
         }
         const WideNode& n = nodes_[child];
-        const BoxHits h = intersectBoxes(n, boxRay, ray.tMax);
+        const BoxHits h = intersectBoxes(n, boxRay, tCull);
         // Push the children the ray enters. Any hit: in any order, each child written and kept
         // only if hit (no branch per child, which incoherent rays would mispredict). Closest
         // hit: sorted by entry distance, the nearest on top, so that it is visited next; the

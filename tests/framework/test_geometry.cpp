@@ -6,6 +6,7 @@
 #include <vector>
 #include "geometry.h"
 #include "rng.h"
+#include "seed.h"
 
 using namespace ps;
 
@@ -86,7 +87,7 @@ TEST_CASE("geometry: triangle hit distance and barycentrics equal their exact va
     // Oblique rays to known points of a general triangle: t = |p - o| and (b1, b2) as chosen,
     // to 1e-5 (relative for t). The float origin and direction are off by ~2^-24 relative,
     // which moves the hit point by ~|p - o| 2^-24 / |cos|; |cos| >= 0.2 keeps that < 3e-6.
-    Rng rng(11);
+    Rng rng(testseed::seed(11));
     const Triangle g{Vec3(0.3f, -1.2f, 0.7f), Vec3(2.1f, 0.4f, -0.3f), Vec3(-0.5f, 1.9f, 1.1f)};
     for (int i = 0; i < 1000; ++i) {
         const double e1 = 0.02 + 0.96 * rng.uniform(), e2 = (1.0 - e1) * (0.02 + 0.96 * rng.uniform());
@@ -125,7 +126,7 @@ TEST_CASE("geometry: rays through shared edges and vertices of a closed mesh nev
     // A closed convex octahedron (random size, rotation, position): every ray from outside
     // aimed at a point on an edge or at a vertex enters and leaves, so it must hit >= 1
     // triangle at entry and >= 1 at exit; a ray through an interior face point hits exactly 2.
-    Rng rng(7);
+    Rng rng(testseed::seed(7));
     for (int mesh = 0; mesh < 20; ++mesh) {
         const Vec3 a{0.5f + rng.uniform(), 0.5f + rng.uniform(), 0.5f + rng.uniform()};
         const float scale = std::pow(10.0f, -3.0f + 6.0f * rng.uniform());
@@ -164,7 +165,7 @@ TEST_CASE("geometry: rays through shared edges and vertices of a closed mesh nev
 }
 
 TEST_CASE("geometry: rays at the vertices and edges of a grid and of a thin fan hit >= 1 triangle") {
-    Rng rng(3);
+    Rng rng(testseed::seed(3));
     // A 16x16 grid at an awkward offset and spacing: aim at every interior vertex and at a point
     // of every interior edge, from random directions above and below.
     const Mesh g = grid(16, -0.37f, 1.13f, 0.0713f, 0.29f);
@@ -213,7 +214,7 @@ TEST_CASE("geometry: rays at the vertices and edges of a grid and of a thin fan 
 TEST_CASE("geometry: rays just outside a triangle's edges miss, just inside hit") {
     // Points moved out of (into) the triangle across an edge by 1e-4 of the edge's length:
     // far more than float rounding (~1e-7 relative), so the answer is unambiguous.
-    Rng rng(5);
+    Rng rng(testseed::seed(5));
     const Triangle tri{Vec3(0.3f, -1.2f, 0.7f), Vec3(2.1f, 0.4f, -0.3f), Vec3(-0.5f, 1.9f, 1.1f)};
     const Vec3 n = tri.normal(), v[3] = {tri.p0, tri.p1, tri.p2};
     for (int i = 0; i < 3000; ++i) {
@@ -245,7 +246,7 @@ TEST_CASE("geometry: a ray offset off a triangle never re-hits it, at scales 1e-
                               {1e4f, Vec3(0)},
                               {1.0f, Vec3(1e5f, -1e5f, 1e5f)},
                               {1e-4f, Vec3(0.5f, 0.25f, -1.0f)}};
-    Rng rng(17);
+    Rng rng(testseed::seed(17));
     for (const Config& cfg : configs) {
         int rehits = 0, trials = 0;
         for (int tri = 0; tri < 50; ++tri) {
@@ -290,7 +291,7 @@ TEST_CASE("geometry: a ray offset off a sphere never re-hits it outward and stay
         Vec3 shift;
     };
     const Config configs[] = {{1e-4f, Vec3(0)}, {1.0f, Vec3(0)}, {1e4f, Vec3(0)}, {1.0f, Vec3(1e5f, -1e5f, 1e5f)}};
-    Rng rng(23);
+    Rng rng(testseed::seed(23));
     for (const Config& cfg : configs) {
         int failures = 0, trials = 0;
         for (int s = 0; s < 50; ++s) {
@@ -325,7 +326,7 @@ TEST_CASE("geometry: two parallel surfaces 4e-5 apart do not leak") {
     const Mesh lower = grid(8, -1.0f, -1.0f, 0.25f, 0.0f);
     Mesh upper = grid(8, -1.0f, -1.0f, 0.25f, gap);
     for (size_t i = 0; i < upper.size(); i += 2) std::swap(upper[i].p1, upper[i].p2);  // mixed windings
-    Rng rng(31);
+    Rng rng(testseed::seed(31));
     int leaks = 0, selfHits = 0, trials = 0;
     for (int k = 0; k < 20000; ++k) {
         const bool up = k % 2 == 0;
@@ -388,7 +389,7 @@ TEST_CASE("geometry: sphere intersection from outside, inside, tangent and far a
         // Hearn-Baker form computes the closest approach directly. Rays passing at 0.5 r must
         // hit, at 1.5 r must miss (the closest approach is computed to ~ulp(1e3) = 6e-5 = 0.06 r).
         // t must be within 8 ulp(distance) of the double-precision value.
-        Rng rng(41);
+        Rng rng(testseed::seed(41));
         for (float dist : {1e3f, 1e5f}) {
             const float r = dist == 1e3f ? 1e-3f : 0.5f;  // at 1e5, ulp = 0.0078: r = 0.5 keeps 0.06 r margins
             for (int k = 0; k < 500; ++k) {
